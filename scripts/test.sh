@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Install what is missing, build, and run the whole test suite.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$ROOT/scripts/setup.sh"
+JOBS="$(nproc 2>/dev/null || echo 2)"
+cd "$ROOT/build"
+ctest --output-on-failure -j "$JOBS" "$@"

@@ -1,0 +1,140 @@
+#include "geometry/hull.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <stdexcept>
+
+#include "geometry/frame.h"
+#include "geometry/qhull_session.h"
+#include "tolerances.h"
+
+namespace pd {
+
+QhullSession::QhullSession(int dim, std::vector<double> coords, const char* options)
+    : coords_(std::move(coords)) {
+  char* buffer = nullptr;
+  size_t size = 0;
+  FILE* err = open_memstream(&buffer, &size);  // qhull reports errors as text
+  qh_zero(&qh_, err);
+  const int n = static_cast<int>(coords_.size()) / dim;
+  exit_code_ = qh_new_qhull(&qh_, dim, n, coords_.data(), False, const_cast<char*>(options),
+                            nullptr, err);
+  fclose(err);
+  if (buffer) {
+    if (exit_code_ != 0) error_.assign(buffer, size);
+    free(buffer);
+  }
+}
+
+QhullSession::~QhullSession() {
+  int curlong = 0, totlong = 0;
+  qh_freeqhull(&qh_, !qh_ALL);
+  qh_memfreeshort(&qh_, &curlong, &totlong);
+}
+
+namespace {
+
+std::vector<double> interleave(const Points& p, const Eigen::MatrixXd& basis) {
+  // Project onto the columns of `basis` (3 × d) and store point after point.
+  const Eigen::MatrixXd proj = basis.transpose() * p;
+  return std::vector<double>(proj.data(), proj.data() + proj.size());
+}
+
+std::vector<int> hull_vertex_ids(QhullSession& s) {
+  qhT* qh = s.qh();
+  std::vector<int> ids;
+  vertexT* vertex;
+  FORALLvertices { ids.push_back(qh_pointid(qh, vertex->point)); }
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+Points select(const Points& p, const std::vector<int>& ids) {
+  Points out(3, ids.size());
+  for (size_t k = 0; k < ids.size(); ++k) out.col(k) = p.col(ids[k]);
+  return out;
+}
+
+}  // namespace
+
+Hull convex_hull(const Points& pts) {
+  if (pts.cols() == 0) throw std::invalid_argument("no vertices");
+  if (!pts.allFinite()) throw std::invalid_argument("non-finite (NaN or Inf) coordinates");
+
+  Hull h;
+  // Principal axes of the centred, scaled set decide the dimension robustly.
+  const Frame f = points_frame(pts);
+  const Points local = f.to_local(pts);
+  const Vec3 mean = local.rowwise().mean();
+  const Points c = local.colwise() - mean;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(c * c.transpose());
+  const Eigen::Matrix3d axes = eig.eigenvectors();  // ascending eigenvalues
+  Vec3 extent;
+  for (int k = 0; k < 3; ++k) {
+    const auto proj = axes.col(k).transpose() * c;
+    extent[k] = proj.maxCoeff() - proj.minCoeff();
+  }
+  const double size = std::max(extent[2], 1e-300);
+  int dim = 3;
+  if (extent[2] <= tol::kFlat) dim = 0;
+  else if (extent[1] <= tol::kFlat * size) dim = 1;
+  else if (extent[0] <= tol::kFlat * size) dim = 2;
+
+  if (dim == 3) {
+    QhullSession s(3, interleave(c, Eigen::Matrix3d::Identity()), "qhull");
+    if (s.ok()) {
+      h.vertices = select(pts, hull_vertex_ids(s));
+      h.dimension = 3;
+      if (h.vertices.cols() < 4) dim = 2;  // cannot happen for a solid hull; be safe
+      else return h;
+    } else {
+      // Nearly flat beyond qhull's precision: fall back to the 2-D hull of the
+      // projection, which keeps every extreme point's original coordinates.
+      h.warnings.push_back("nearly flat point set; hulled in its plane");
+      dim = 2;
+    }
+  }
+  h.dimension = dim;
+  if (dim == 2) {
+    QhullSession s(2, interleave(c, axes.rightCols(2)), "qhull");
+    if (!s.ok()) throw std::runtime_error("qhull failed on a flat point set: " + s.error());
+    h.vertices = select(pts, hull_vertex_ids(s));
+    h.warnings.push_back("flat part (zero thickness): its hull is a polygon of " +
+                         std::to_string(h.vertices.cols()) + " vertices");
+  } else if (dim == 1) {
+    const Eigen::RowVectorXd proj = axes.col(2).transpose() * c;
+    Eigen::Index lo = 0, hi = 0;
+    proj.minCoeff(&lo);
+    proj.maxCoeff(&hi);
+    h.vertices = select(pts, {static_cast<int>(lo), static_cast<int>(hi)});
+    h.warnings.push_back("collinear points: the part is a segment");
+  } else if (dim == 0) {
+    h.vertices = pts.col(0);
+    h.warnings.push_back("all vertices coincide: the part is a single point");
+  }
+  return h;
+}
+
+bool hull_facets(const Points& pts, HullFacets& out) {
+  out = HullFacets{};
+  std::vector<double> coords(pts.data(), pts.data() + pts.size());
+  QhullSession s(3, std::move(coords), "qhull Qt");
+  if (!s.ok()) return false;
+  qhT* qh = s.qh();
+  facetT* facet;
+  vertexT *vertex, **vertexp;
+  FORALLfacets {
+    out.normals.emplace_back(facet->normal[0], facet->normal[1], facet->normal[2]);
+    out.offsets.push_back(facet->offset);
+    std::array<int, 3> tri{0, 0, 0};
+    int k = 0;
+    FOREACHvertex_(facet->vertices) {
+      if (k < 3) tri[k] = qh_pointid(qh, vertex->point);
+      ++k;
+    }
+    out.triangles.push_back(tri);
+  }
+  return true;
+}
+
+}  // namespace pd

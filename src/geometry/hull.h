@@ -1,0 +1,36 @@
+// Convex hulls with qhull's reentrant library (libqhull_r).
+#pragma once
+
+#include <string>
+#include <array>
+#include <vector>
+
+#include "geometry/types.h"
+
+namespace pd {
+
+/// The extreme points of a point set. Degenerate input is not an error: a flat
+/// set keeps its 2-D hull polygon, a collinear one its two end points, a single
+/// point itself. Every case keeps original input coordinates.
+struct Hull {
+  Points vertices;    ///< the extreme points, in input coordinates
+  int dimension = 3;  ///< 3 solid, 2 flat, 1 collinear, 0 a single point
+  std::vector<std::string> warnings;
+};
+
+/// Throws std::invalid_argument for an empty set or non-finite coordinates.
+Hull convex_hull(const Points& pts);
+
+/// A triangulated 3-D hull with outward unit normals: each facet satisfies
+/// normal·x + offset <= 0 for every point of the hull.
+struct HullFacets {
+  std::vector<Vec3> normals;
+  std::vector<double> offsets;
+  std::vector<std::array<int, 3>> triangles;  ///< indices into the input points
+};
+
+/// Facets of the hull of a full-dimensional point set; returns false (and leaves
+/// `out` empty) when qhull finds the set flat.
+bool hull_facets(const Points& pts, HullFacets& out);
+
+}  // namespace pd

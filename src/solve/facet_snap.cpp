@@ -1,0 +1,42 @@
+#include "solve/facet_snap.h"
+
+#include <Eigen/SVD>
+#include <vector>
+
+#include "tolerances.h"
+
+namespace pd {
+
+namespace {
+
+std::vector<int> active(const Eigen::RowVectorXd& s, double extreme, double tol, bool top) {
+  std::vector<int> ids;
+  for (Eigen::Index k = 0; k < s.size(); ++k)
+    if (top ? s[k] >= extreme - tol : s[k] <= extreme + tol) ids.push_back(static_cast<int>(k));
+  return ids;
+}
+
+}  // namespace
+
+std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& v) {
+  const Eigen::RowVectorXd sp = v.transpose() * p, sq = v.transpose() * q;
+  const double hp = sp.maxCoeff(), hq = sq.minCoeff();
+  for (double t : {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight}) {
+    const std::vector<int> a = active(sp, hp, t, true), b = active(sq, hq, t, false);
+    if (a.size() + b.size() < 3) return std::nullopt;  // a vertex or an edge: no facet
+    Eigen::MatrixXd edges(a.size() + b.size() - 2, 3);
+    Eigen::Index r = 0;
+    for (size_t k = 1; k < a.size(); ++k) edges.row(r++) = (p.col(a[k]) - p.col(a[0])).transpose();
+    for (size_t k = 1; k < b.size(); ++k) edges.row(r++) = (q.col(b[k]) - q.col(b[0])).transpose();
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(edges, Eigen::ComputeFullV);
+    const Eigen::VectorXd s = svd.singularValues();
+    if (s.size() < 2 || s[1] <= tol::kSnapResidual) return std::nullopt;  // rank < 2
+    if (s.size() == 3 && s[2] > tol::kSnapResidual) continue;  // too many active: tighten
+    Vec3 n = svd.matrixV().col(2);
+    if (n.dot(v) < 0) n = -n;
+    return n.normalized();
+  }
+  return std::nullopt;
+}
+
+}  // namespace pd

@@ -1,0 +1,33 @@
+#include "solve/objective.h"
+
+#include <algorithm>
+
+namespace pd {
+
+PairProblem::PairProblem(const Points& a_world, const Points& b_world)
+    : frame_(pair_frame(a_world, b_world)),
+      p_(frame_.to_local(a_world)),
+      q_(frame_.to_local(b_world)) {}
+
+double PairProblem::gap(const Vec3& v) const {
+  ++evaluations_;
+  return (v.transpose() * p_).maxCoeff() - (v.transpose() * q_).minCoeff();
+}
+
+void angles_from_direction(const Vec3& v, double& theta, double& phi) {
+  const double rho = std::hypot(v.x(), v.y());
+  phi = std::atan2(v.z(), rho);
+  if (rho == 0.0) {
+    theta = M_PI / 2;  // the pole: θ is arbitrary, so always the same value
+    return;
+  }
+  theta = std::atan2(v.y(), v.x());
+  if (theta < 0) theta += 2 * M_PI;
+  if (theta >= 2 * M_PI) theta = 0.0;  // wrap-around of −0 rounding
+}
+
+double angle_between(const Vec3& a, const Vec3& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+}  // namespace pd

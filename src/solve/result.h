@@ -1,0 +1,33 @@
+// What a depth solve returns, in the pair's unit frame.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "geometry/types.h"
+
+namespace pd {
+
+/// Work counters, reported per pair.
+struct SolveStats {
+  long alpha_evaluations = 0;
+  int local_solves = 0;      ///< local searches started
+  int distinct_optima = 0;   ///< distinct local optima found
+  int ipopt_iterations = 0;  ///< summed over every Ipopt call
+  int ipopt_calls = 0;
+  int ipopt_failures = 0;  ///< Ipopt calls that did not converge
+  int mlsl_iterations = 0;
+};
+
+/// depth >= 0; direction is a unit vector: moving b by depth·direction separates
+/// the pair. When depth is 0 the direction is a separating-plane normal pointing
+/// from a to b. `distance` is the separation distance when it was computed.
+struct DepthSolution {
+  double depth = 0.0;
+  Vec3 direction = Vec3::UnitZ();
+  std::optional<double> distance;
+  SolveStats stats;
+  std::string fallback;  ///< empty, or what was done instead of the method and why
+};
+
+}  // namespace pd

@@ -1,0 +1,87 @@
+#include "solve/smooth_descent.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace pd {
+
+namespace {
+
+struct Smoothed {
+  double value = 0.0;
+  Vec3 grad = Vec3::Zero();
+  Eigen::Matrix3d hess = Eigen::Matrix3d::Zero();
+};
+
+// μ·log Σ exp(s·x_k·v/μ) for s = ±1, with its gradient and Hessian in v.
+Smoothed log_sum_exp(const Points& x, const Vec3& v, double s, double mu, bool derivatives) {
+  const Eigen::RowVectorXd t = s * (v.transpose() * x);
+  const double top = t.maxCoeff();
+  const Eigen::RowVectorXd w = ((t.array() - top) / mu).exp();
+  const double z = w.sum();
+  Smoothed r;
+  r.value = top + mu * std::log(z);
+  if (derivatives) {
+    const Eigen::RowVectorXd wn = w / z;
+    r.grad = s * (x * wn.transpose());
+    const Points xw = x * wn.asDiagonal();
+    r.hess = (xw * x.transpose() - r.grad * r.grad.transpose()) / mu;
+  }
+  return r;
+}
+
+Smoothed smoothed_gap(const Points& p, const Points& q, const Vec3& v, double mu, bool d) {
+  Smoothed a = log_sum_exp(p, v, 1.0, mu, d), b = log_sum_exp(q, v, -1.0, mu, d);
+  return {a.value + b.value, a.grad + b.grad, a.hess + b.hess};
+}
+
+// An orthonormal basis of the tangent plane at v.
+Eigen::Matrix<double, 3, 2> tangent_basis(const Vec3& v) {
+  const Vec3 helper = std::abs(v.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 e1 = v.cross(helper).normalized();
+  Eigen::Matrix<double, 3, 2> b;
+  b.col(0) = e1;
+  b.col(1) = v.cross(e1);
+  return b;
+}
+
+}  // namespace
+
+DescentOutcome smooth_descent(const Points& p, const Points& q, const Vec3& start) {
+  DescentOutcome out{start.normalized(), 0};
+  Vec3& v = out.v;
+  // The unit frame puts both parts in the unit ball, so μ is an absolute length.
+  for (double mu : {3e-3, 6e-4, 1.2e-4}) {
+    for (int it = 0; it < 20; ++it) {
+      const Smoothed f = smoothed_gap(p, q, v, mu, true);
+      ++out.evaluations;
+      const auto b = tangent_basis(v);
+      const Eigen::Vector2d g = b.transpose() * f.grad;
+      if (g.norm() < 1e-3 * mu) break;
+      // Riemannian Hessian on the sphere: projected Hessian minus (v·∇f)·I.
+      Eigen::Matrix2d h = b.transpose() * f.hess * b - v.dot(f.grad) * Eigen::Matrix2d::Identity();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(h);
+      Eigen::Vector2d d;
+      if (eig.eigenvalues().minCoeff() > 1e-12) d = -h.ldlt().solve(g);
+      else d = -g / std::max(eig.eigenvalues().cwiseAbs().maxCoeff(), 1.0);
+      if (d.norm() > 0.5) d *= 0.5 / d.norm();  // stay within a chart of the sphere
+      // Backtracking (Armijo) along the retraction v ← normalise(v + B d).
+      double step = 1.0;
+      bool moved = false;
+      for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+        const Vec3 trial = (v + b * (step * d)).normalized();
+        ++out.evaluations;
+        if (smoothed_gap(p, q, trial, mu, false).value <= f.value + 1e-4 * step * g.dot(d)) {
+          v = trial;
+          moved = true;
+          break;
+        }
+      }
+      if (!moved) break;
+    }
+  }
+  return out;
+}
+
+}  // namespace pd

@@ -1,0 +1,48 @@
+// Every numerical tolerance of pdcheck, in one place. docs/numerics.md explains each.
+//
+// Unless stated otherwise a tolerance is *relative*: it is multiplied by the size
+// of the object it applies to (a pair's frame scale, see geometry/frame.h). Each
+// pair is solved in a frame where both parts lie in the unit ball, so inside the
+// solvers these numbers are used as they are.
+#pragma once
+
+namespace pd::tol {
+
+/// A point set whose smallest principal extent is below this fraction of its size
+/// is flat (or collinear, or a point): it gets a lower-dimensional hull. At 1e-12
+/// only truly flat input qualifies; a 1e-6 thin plate stays a solid.
+inline constexpr double kFlat = 1e-12;
+
+/// Overlap at or below this fraction of the pair size is contact, not
+/// interference: it is the resolution of double-precision Minkowski differences
+/// and facet offsets (a few hundred ulps), well below any tessellation tolerance.
+inline constexpr double kTouch = 1e-11;
+
+/// Depths closer to the user's tolerance than this fraction of the pair size are
+/// on the boundary: they are always classified as false positives (depth <= tol),
+/// so a status cannot flip with rounding noise. The report gives the margin.
+inline constexpr double kClassifyBand = 1e-11;
+
+/// Ipopt's convergence tolerance (its option "tol") in the unit frame.
+inline constexpr double kIpoptTol = 1e-10;
+/// Ipopt's cap on iterations for one local solve.
+inline constexpr int kIpoptMaxIter = 200;
+
+/// Two local optima are the same when their directions are closer than this
+/// angle (radians) on the unit sphere.
+inline constexpr double kSameOptimumAngle = 1e-6;
+
+/// A descent that ends closer than this angle to a known optimum, and no lower,
+/// is in that optimum's basin: Ipopt is not called again for it.
+inline constexpr double kSameBasinAngle = 1e-2;
+
+/// A vertex counts as active at a direction v when its support value is within
+/// this of the extreme value; used to read the optimal facet off a local solve.
+inline constexpr double kActiveLoose = 1e-7;
+inline constexpr double kActiveTight = 1e-10;
+
+/// The facet snap accepts a plane when its normal fits the active vertices to
+/// this residual (smallest singular value of the active edge matrix).
+inline constexpr double kSnapResidual = 1e-9;
+
+}  // namespace pd::tol
