@@ -1,0 +1,40 @@
+#include "batch/broad_phase.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace pd {
+
+std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxes, double margin) {
+  const int n = static_cast<int>(boxes.size());
+  std::vector<std::pair<int, int>> out;
+  if (n < 2) return out;
+  // Sweep along the axis where the box centres spread most: fewest false candidates.
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const auto& b : boxes) {
+    const Vec3 c = 0.5 * (b.lo + b.hi);
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return boxes[a].lo[axis] < boxes[b].lo[axis] || (boxes[a].lo[axis] == boxes[b].lo[axis] && a < b);
+  });
+  std::vector<int> active;  // boxes whose interval may still reach the sweep line
+  for (int i : order) {
+    const Aabb bi = boxes[i].inflated(margin);
+    active.erase(std::remove_if(active.begin(), active.end(),
+                                [&](int j) { return boxes[j].hi[axis] + margin < bi.lo[axis]; }),
+                 active.end());
+    for (int j : active)
+      if (bi.overlaps(boxes[j])) out.emplace_back(std::min(i, j), std::max(i, j));
+    active.push_back(i);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace pd

@@ -1,0 +1,16 @@
+// Broad phase: which part pairs can touch at all.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "geometry/aabb.h"
+
+namespace pd {
+
+/// Pairs (i < j) whose boxes, inflated by `margin`, overlap (touching counts).
+/// Sort and sweep along the axis of largest spread: O(n log n + k) for k
+/// overlapping pairs on x, never a loop over all n² pairs. Sorted by (i, j).
+std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxes, double margin);
+
+}  // namespace pd

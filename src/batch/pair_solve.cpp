@@ -1,0 +1,83 @@
+#include "batch/pair_solve.h"
+
+#include <chrono>
+
+#include "solve/methods.h"
+#include "tolerances.h"
+
+namespace pd {
+
+const char* status_name(Status s) {
+  switch (s) {
+    case Status::kSeparated: return "separated";
+    case Status::kFalsePositive: return "false_positive";
+    case Status::kInterference: return "interference";
+    case Status::kError: return "error";
+  }
+  return "error";
+}
+
+Status classify(double depth, double tolerance, double pair_size) {
+  if (depth <= tol::kTouch * pair_size) return Status::kSeparated;
+  if (depth <= tolerance + tol::kClassifyBand * pair_size) return Status::kFalsePositive;
+  return Status::kInterference;
+}
+
+namespace {
+
+void add(SolveStats& t, const SolveStats& s) {
+  t.alpha_evaluations += s.alpha_evaluations;
+  t.local_solves += s.local_solves;
+  t.distinct_optima += s.distinct_optima;
+  t.ipopt_iterations += s.ipopt_iterations;
+  t.ipopt_calls += s.ipopt_calls;
+  t.ipopt_failures += s.ipopt_failures;
+  t.mlsl_iterations += s.mlsl_iterations;
+}
+
+}  // namespace
+
+PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
+                           double tolerance, IpoptLocalSolver& ipopt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PairResult r;
+  r.a = ia;
+  r.b = ib;
+  r.method = method_name(s.method);
+  if (a.error || b.error) {
+    r.status = Status::kError;
+    r.error = "part \"" + (a.error ? a.id : b.id) + "\" could not be loaded: " + (a.error ? *a.error : *b.error);
+    return r;
+  }
+  try {
+    bool first = true;
+    for (const Hull& pa : a.pieces) {
+      for (const Hull& pb : b.pieces) {
+        if (a.pieces.size() * b.pieces.size() > 1 &&
+            !Aabb::of(pa.vertices).overlaps(Aabb::of(pb.vertices)))
+          continue;  // pieces whose boxes are apart cannot overlap
+        const DepthSolution d = solve_convex_pair(pa.vertices, pb.vertices, s, ipopt);
+        add(r.stats, d.stats);
+        if (!d.fallback.empty()) r.fallback = d.fallback;
+        if (first || d.depth > r.depth) {
+          r.depth = d.depth;
+          r.direction = d.direction;
+          r.distance = d.distance;
+          first = false;
+        }
+      }
+    }
+    const double size = a.box.merged(b.box).hi.cwiseAbs().maxCoeff() +
+                        (a.box.merged(b.box).hi - a.box.merged(b.box).lo).norm();
+    r.status = classify(r.depth, tolerance, size);
+    r.margin = tolerance - r.depth;
+    if (r.status != Status::kSeparated) r.distance.reset();
+  } catch (const std::exception& e) {
+    r.status = Status::kError;
+    r.error = e.what();
+  }
+  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace pd

@@ -1,0 +1,133 @@
+#include "batch/run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "batch/broad_phase.h"
+#include "batch/pair_solve.h"
+#include "batch/progress.h"
+#include "batch/work_queue.h"
+
+namespace pd {
+
+using nlohmann::json;
+
+std::string encode_pair_result(const PairResult& r) {
+  json j = {{"a", r.a},
+            {"b", r.b},
+            {"s", int(r.status)},
+            {"d", r.depth},
+            {"v", {r.direction.x(), r.direction.y(), r.direction.z()}},
+            {"g", r.margin},
+            {"m", r.method},
+            {"t", r.time_ms},
+            {"f", r.fallback},
+            {"e", r.error},
+            {"st",
+             {r.stats.alpha_evaluations, r.stats.local_solves, r.stats.distinct_optima,
+              r.stats.ipopt_iterations, r.stats.ipopt_calls, r.stats.ipopt_failures,
+              r.stats.mlsl_iterations}}};
+  if (r.distance) j["x"] = *r.distance;
+  return j.dump();
+}
+
+PairResult decode_pair_result(const std::string& s) {
+  const json j = json::parse(s);
+  PairResult r;
+  r.a = j["a"];
+  r.b = j["b"];
+  r.status = static_cast<Status>(j["s"].get<int>());
+  r.depth = j["d"];
+  r.direction = Vec3(j["v"][0], j["v"][1], j["v"][2]);
+  r.margin = j["g"];
+  r.method = j["m"];
+  r.time_ms = j["t"];
+  r.fallback = j["f"];
+  r.error = j["e"];
+  const auto& st = j["st"];
+  r.stats = {st[0], st[1], st[2], st[3], st[4], st[5], st[6]};
+  if (j.contains("x")) r.distance = j["x"].get<double>();
+  return r;
+}
+
+RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RunResult out;
+  out.parts = build_parts(scene);
+  const std::vector<Part>& parts = out.parts;
+  const int n = static_cast<int>(parts.size());
+
+  std::vector<std::pair<int, int>> pairs;
+  if (scene.pairs) {
+    std::map<std::string, int> index;
+    for (int k = 0; k < n; ++k) index[parts[k].id] = k;
+    for (const auto& [a, b] : *scene.pairs) {
+      const int ia = index.at(a), ib = index.at(b);
+      pairs.emplace_back(std::min(ia, ib), std::max(ia, ib));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    out.all_pairs = static_cast<long>(pairs.size());
+  } else {
+    out.all_pairs = static_cast<long>(n) * (n - 1) / 2;
+    std::vector<Aabb> boxes;
+    std::vector<int> usable;
+    for (int k = 0; k < n; ++k) {
+      if (parts[k].error) continue;
+      usable.push_back(k);
+      boxes.push_back(parts[k].box);
+    }
+    // A part that failed to load is reported with its reason in the part list
+    // (and the exit code); its pairs cannot be formed without geometry.
+    for (const auto& [i, j] : overlapping_boxes(boxes, 0.0)) pairs.emplace_back(usable[i], usable[j]);
+    out.culled = out.all_pairs - static_cast<long>(pairs.size());
+  }
+
+  out.pairs.resize(pairs.size());
+  // Largest pairs first (by the work of one support evaluation): no worker
+  // idles at the end on a long tail.
+  std::vector<size_t> order(pairs.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  auto cost = [&](size_t k) {
+    return parts[pairs[k].first].hull_vertex_count() * parts[pairs[k].second].hull_vertex_count();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return cost(x) > cost(y); });
+
+  Progress progress(pairs.size(), options.quiet);
+  std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
+  // Fault injection for the crash-isolation test: the worker that takes the
+  // named pair dies as a solver crash would.
+  const char* crash = std::getenv("PDCHECK_TEST_CRASH_PAIR");
+  auto task = [&](size_t k) {
+    if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
+    const auto [a, b] = pairs[k];
+    if (crash && parts[a].id + ":" + parts[b].id == crash) std::abort();
+    return encode_pair_result(
+        solve_part_pair(a, parts[a], b, parts[b], options.solver, options.tolerance, *ipopt));
+  };
+  auto done = [&](size_t k, bool ok, const std::string& payload) {
+    PairResult r;
+    if (ok) {
+      r = decode_pair_result(payload);
+    } else {
+      r.a = pairs[k].first;
+      r.b = pairs[k].second;
+      r.status = Status::kError;
+      r.method = method_name(options.solver.method);
+      r.error = payload;
+    }
+    out.pairs[k] = r;
+    if (options.on_pair) options.on_pair(r, parts);
+    progress.tick();
+  };
+  run_work_queue(order, {options.jobs, options.pair_timeout}, task, done);
+  progress.finish();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace pd

@@ -1,0 +1,39 @@
+// The pipeline: scene → parts → hulls → candidate pairs → solves → results.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "batch/pair_result.h"
+#include "scene/parts.h"
+#include "scene/scene.h"
+#include "solve/settings.h"
+
+namespace pd {
+
+struct RunOptions {
+  SolverSettings solver;
+  double tolerance = 0.0;  ///< scene units, > 0
+  int jobs = 1;
+  double pair_timeout = 0.0;  ///< seconds, 0 = none
+  bool quiet = false;         ///< no progress on stderr
+  /// Called in the parent as each pair ends (completion order), e.g. for JSON Lines.
+  std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;
+};
+
+struct RunResult {
+  std::vector<Part> parts;
+  std::vector<PairResult> pairs;  ///< in (a, b) order: deterministic whatever the jobs
+  long all_pairs = 0;             ///< n(n − 1)/2, or the listed pairs
+  long culled = 0;                ///< removed by the broad phase
+  double seconds = 0.0;
+};
+
+RunResult run_scene(const SceneSpec& scene, const RunOptions& options);
+
+/// Encoding of a PairResult between worker and parent (lossless for doubles).
+std::string encode_pair_result(const PairResult& r);
+PairResult decode_pair_result(const std::string& s);
+
+}  // namespace pd

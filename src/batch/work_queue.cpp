@@ -1,0 +1,187 @@
+#include "batch/work_queue.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
+namespace pd {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool write_all(int fd, const void* data, size_t n) {
+  const char* p = static_cast<const char*>(data);
+  while (n > 0) {
+    const ssize_t w = ::write(fd, p, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    p += w;
+    n -= static_cast<size_t>(w);
+  }
+  return true;
+}
+
+bool read_all(int fd, void* data, size_t n) {
+  char* p = static_cast<char*>(data);
+  while (n > 0) {
+    const ssize_t r = ::read(fd, p, n);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    p += r;
+    n -= static_cast<size_t>(r);
+  }
+  return true;
+}
+
+[[noreturn]] void worker_loop(int in, int out, const TaskFn& task) {
+  std::uint64_t index = 0;
+  while (read_all(in, &index, sizeof index)) {
+    const std::string payload = task(static_cast<size_t>(index));
+    const std::uint64_t len = payload.size();
+    if (!write_all(out, &index, sizeof index) || !write_all(out, &len, sizeof len) ||
+        !write_all(out, payload.data(), payload.size()))
+      break;
+  }
+  _exit(0);
+}
+
+struct Worker {
+  pid_t pid = -1;
+  int to = -1, from = -1;
+  bool busy = false;
+  size_t task = 0;
+  Clock::time_point started;
+};
+
+Worker spawn(const TaskFn& task, const std::vector<Worker>& others) {
+  int down[2], up[2];
+  if (pipe(down) != 0 || pipe(up) != 0) throw std::runtime_error("pipe() failed");
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork() failed");
+  if (pid == 0) {
+    close(down[1]);
+    close(up[0]);
+    for (const Worker& w : others) {  // a worker holds only its own pipes
+      if (w.to >= 0) close(w.to);
+      if (w.from >= 0) close(w.from);
+    }
+    worker_loop(down[0], up[1], task);
+  }
+  close(down[0]);
+  close(up[1]);
+  Worker w;
+  w.pid = pid;
+  w.to = down[1];
+  w.from = up[0];
+  return w;
+}
+
+std::string reap(Worker& w, bool kill_it) {
+  if (kill_it) kill(w.pid, SIGKILL);
+  close(w.to);
+  close(w.from);
+  int status = 0;
+  std::string why = "worker exited";
+  if (waitpid(w.pid, &status, 0) == w.pid) {
+    if (WIFSIGNALED(status)) why = std::string("worker crashed (") + strsignal(WTERMSIG(status)) + ")";
+    else if (WIFEXITED(status)) why = "worker exited with code " + std::to_string(WEXITSTATUS(status));
+  }
+  w = Worker{};
+  return why;
+}
+
+}  // namespace
+
+void run_work_queue(const std::vector<size_t>& order, const QueueOptions& options,
+                    const TaskFn& task, const DoneFn& done) {
+  if (order.empty()) return;
+  // A worker that dies must not kill the parent with SIGPIPE on the next write.
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  struct sigaction previous {};
+  sigaction(SIGPIPE, &ignore, &previous);
+
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(order.size())));
+  std::vector<Worker> workers;
+  for (int k = 0; k < jobs; ++k) workers.push_back(spawn(task, workers));
+  size_t next = 0, finished = 0;
+
+  auto dispatch = [&](Worker& w) {
+    while (next < order.size()) {
+      const std::uint64_t index = order[next++];
+      if (w.pid < 0) w = spawn(task, workers);
+      if (write_all(w.to, &index, sizeof index)) {
+        w.busy = true;
+        w.task = index;
+        w.started = Clock::now();
+        return;
+      }
+      // The worker died before it took the task: replace it and try again.
+      reap(w, true);
+      --next;
+    }
+  };
+  for (Worker& w : workers) dispatch(w);
+
+  while (finished < order.size()) {
+    std::vector<pollfd> fds;
+    std::vector<size_t> who;
+    int wait_ms = -1;
+    const auto now = Clock::now();
+    for (size_t k = 0; k < workers.size(); ++k) {
+      if (!workers[k].busy) continue;
+      fds.push_back({workers[k].from, POLLIN, 0});
+      who.push_back(k);
+      if (options.task_timeout > 0) {
+        const double left = options.task_timeout -
+                            std::chrono::duration<double>(now - workers[k].started).count();
+        const int ms = std::max(0, static_cast<int>(left * 1000.0) + 1);
+        wait_ms = wait_ms < 0 ? ms : std::min(wait_ms, ms);
+      }
+    }
+    const int ready = poll(fds.data(), fds.size(), wait_ms);
+    if (ready < 0 && errno != EINTR) throw std::runtime_error("poll() failed");
+    for (size_t f = 0; f < fds.size(); ++f) {
+      Worker& w = workers[who[f]];
+      const size_t task_index = w.task;
+      if (fds[f].revents & (POLLIN | POLLHUP | POLLERR)) {
+        std::uint64_t index = 0, len = 0;
+        std::string payload;
+        bool ok = read_all(w.from, &index, sizeof index) && read_all(w.from, &len, sizeof len);
+        if (ok) {
+          payload.resize(len);
+          ok = read_all(w.from, payload.data(), len) && index == task_index;
+        }
+        w.busy = false;
+        ++finished;
+        if (ok) {
+          done(task_index, true, payload);
+        } else {
+          done(task_index, false, reap(w, true));
+        }
+        dispatch(w);
+      } else if (options.task_timeout > 0 &&
+                 std::chrono::duration<double>(Clock::now() - w.started).count() >
+                     options.task_timeout) {
+        reap(w, true);
+        ++finished;
+        done(task_index, false,
+             "timed out after " + std::to_string(options.task_timeout) + " s (worker killed)");
+        dispatch(w);
+      }
+    }
+  }
+  for (Worker& w : workers)
+    if (w.pid >= 0) reap(w, false);  // closing its input ends the worker's loop
+  sigaction(SIGPIPE, &previous, nullptr);
+}
+
+}  // namespace pd

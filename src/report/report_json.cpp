@@ -1,0 +1,117 @@
+#include "report/report_json.h"
+
+#include <cstdio>
+
+namespace pd {
+
+using json = nlohmann::ordered_json;
+
+int Summary::exit_code() const {
+  if (error > 0 || part_errors > 0) return 3;
+  return interference > 0 ? 1 : 0;
+}
+
+Summary summarize(const RunResult& r) {
+  Summary s;
+  s.parts = static_cast<long>(r.parts.size());
+  for (const Part& p : r.parts) s.part_errors += p.error ? 1 : 0;
+  s.all_pairs = r.all_pairs;
+  s.culled = r.culled;
+  s.candidates = static_cast<long>(r.pairs.size());
+  for (const PairResult& p : r.pairs) {
+    switch (p.status) {
+      case Status::kSeparated: ++s.separated; break;
+      case Status::kFalsePositive: ++s.false_positive; break;
+      case Status::kInterference: ++s.interference; break;
+      case Status::kError: ++s.error; break;
+    }
+  }
+  return s;
+}
+
+json pair_json(const PairResult& r, const std::vector<Part>& parts) {
+  json j = {{"a", parts[r.a].id},  {"b", parts[r.b].id},
+            {"status", status_name(r.status)}};
+  if (r.status == Status::kError) {
+    j["error"] = r.error;
+  } else {
+    j["depth"] = r.depth;
+    j["direction"] = {r.direction.x(), r.direction.y(), r.direction.z()};
+    j["margin"] = r.margin;
+    if (r.distance) j["distance"] = *r.distance;
+  }
+  j["method"] = r.method;
+  if (!r.fallback.empty()) j["fallback"] = r.fallback;
+  j["stats"] = {{"local_solves", r.stats.local_solves},
+                {"distinct_optima", r.stats.distinct_optima},
+                {"alpha_evaluations", r.stats.alpha_evaluations},
+                {"ipopt_calls", r.stats.ipopt_calls},
+                {"ipopt_iterations", r.stats.ipopt_iterations},
+                {"ipopt_failures", r.stats.ipopt_failures}};
+  j["time_ms"] = r.time_ms;
+  return j;
+}
+
+json summary_json(const Summary& s) {
+  return {{"parts", s.parts},
+          {"part_errors", s.part_errors},
+          {"pairs", s.all_pairs},
+          {"culled", s.culled},
+          {"candidate_pairs", s.candidates},
+          {"separated", s.separated},
+          {"false_positive", s.false_positive},
+          {"interference", s.interference},
+          {"error", s.error},
+          {"exit_code", s.exit_code()}};
+}
+
+json report_json(const ReportContext& ctx, const RunResult& r) {
+  json parts = json::array();
+  for (const Part& p : r.parts) {
+    json j = {{"id", p.id},
+              {"source", p.source},
+              {"vertices", p.vertex_count},
+              {"hull_vertices", p.hull_vertex_count()},
+              {"pieces", p.pieces.size()},
+              {"warnings", p.warnings}};
+    if (p.error) j["error"] = *p.error;
+    parts.push_back(j);
+  }
+  json pairs = json::array();
+  for (const PairResult& p : r.pairs) pairs.push_back(pair_json(p, r.parts));
+  const SolverSettings& s = ctx.solver;
+  json method = {{"name", method_name(s.method)}, {"seed", s.seed}};
+  if (s.method == Method::kMlsl)
+    method.update({{"samples", s.samples}, {"reduced", s.reduced}, {"sigma", s.sigma},
+                   {"tau", s.tau}, {"link_scale", s.link_scale}});
+  if (s.method == Method::kMlslPaper)
+    method.update({{"N", s.paper_n}, {"M", s.paper_m}, {"sigma", s.sigma}, {"tau", s.tau}});
+  if (s.method == Method::kGrid) method["grid"] = s.grid;
+  if (s.method == Method::kGsLocal) method["gs_local"] = s.gs_local;
+  return {{"tool", {{"name", "pdcheck"}, {"version", PDCHECK_VERSION}}},
+          {"report_version", 1},
+          {"scene", ctx.scene_path},
+          {"units", ctx.units},
+          {"tolerance", ctx.tolerance},
+          {"method", method},
+          {"direction_convention",
+           "moving part b by depth * direction separates the pair; for separated pairs "
+           "direction is a separating-plane normal pointing from a to b"},
+          {"summary", summary_json(summarize(r))},
+          {"seconds", r.seconds},
+          {"parts", parts},
+          {"pairs", pairs}};
+}
+
+std::string summary_line(const Summary& s, double seconds) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "pdcheck: %ld parts, %ld candidate pairs (%ld culled): %ld interference, %ld "
+                "false_positive, %ld separated, %ld error%s in %.2f s",
+                s.parts, s.candidates, s.culled, s.interference, s.false_positive, s.separated,
+                s.error, s.part_errors ? (", " + std::to_string(s.part_errors) + " part(s) unusable").c_str() : "",
+                seconds);
+  return buf;
+}
+
+}  // namespace pd

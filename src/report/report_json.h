@@ -1,0 +1,32 @@
+// The report: JSON (default) and JSON Lines. Format: docs/report-format.md.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "batch/run.h"
+
+namespace pd {
+
+struct ReportContext {
+  std::string scene_path;
+  std::string units;
+  double tolerance = 0.0;
+  SolverSettings solver;
+};
+
+/// Counts per status, parts that failed, and the exit code they imply.
+struct Summary {
+  long parts = 0, part_errors = 0, all_pairs = 0, culled = 0, candidates = 0;
+  long separated = 0, false_positive = 0, interference = 0, error = 0;
+  int exit_code() const;  ///< 3 if anything was unchecked, else 1 on interference, else 0
+};
+Summary summarize(const RunResult& r);
+
+nlohmann::ordered_json pair_json(const PairResult& r, const std::vector<Part>& parts);
+nlohmann::ordered_json report_json(const ReportContext& ctx, const RunResult& r);
+nlohmann::ordered_json summary_json(const Summary& s);
+/// One line for stderr: "pdcheck: 12 parts, 7 pairs checked: 1 interference, ...".
+std::string summary_line(const Summary& s, double seconds);
+
+}  // namespace pd

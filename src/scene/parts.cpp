@@ -1,0 +1,79 @@
+#include "scene/parts.h"
+
+#include <map>
+#include <sstream>
+
+#include "scene/mesh_loader.h"
+
+namespace pd {
+
+long Part::hull_vertex_count() const {
+  long n = 0;
+  for (const auto& h : pieces) n += h.vertices.cols();
+  return n;
+}
+
+namespace {
+
+Points place(const Points& p, const PartSpec& spec) {
+  // Units first (the mesh's own unit to the scene's), then the part transform.
+  const Points scaled = p * spec.to_scene_units;
+  return (spec.transform.topLeftCorner<3, 3>() * scaled).colwise() +
+         Vec3(spec.transform.topRightCorner<3, 1>());
+}
+
+std::string cache_key(const PartSpec& s) {
+  std::ostringstream k;
+  k.precision(17);
+  k << *s.mesh << '|' << s.to_scene_units << '|' << int(s.pieces);
+  for (int i = 0; i < 16; ++i) k << '|' << s.transform(i / 4, i % 4);
+  return k.str();
+}
+
+Part build_part(const PartSpec& spec) {
+  Part part;
+  part.id = spec.id;
+  part.source = spec.mesh ? *spec.mesh : "inline";
+  try {
+    std::vector<Points> sets;
+    if (spec.mesh) sets = load_mesh_vertices(*spec.mesh, spec.pieces == Pieces::kMeshes);
+    else sets.push_back(*spec.vertices);
+    bool first = true;
+    for (size_t k = 0; k < sets.size(); ++k) {
+      part.vertex_count += sets[k].cols();
+      Hull h = convex_hull(place(sets[k], spec));
+      for (auto& w : h.warnings)
+        part.warnings.push_back(sets.size() > 1 ? "piece " + std::to_string(k) + ": " + w : w);
+      const Aabb b = Aabb::of(h.vertices);
+      part.box = first ? b : part.box.merged(b);
+      first = false;
+      part.pieces.push_back(std::move(h));
+    }
+  } catch (const std::exception& e) {
+    part.pieces.clear();
+    part.error = e.what();
+  }
+  return part;
+}
+
+}  // namespace
+
+std::vector<Part> build_parts(const SceneSpec& scene) {
+  std::vector<Part> parts;
+  std::map<std::string, Part> cache;
+  for (const PartSpec& spec : scene.parts) {
+    if (!spec.mesh) {
+      parts.push_back(build_part(spec));
+      continue;
+    }
+    const std::string key = cache_key(spec);
+    auto it = cache.find(key);
+    if (it == cache.end()) it = cache.emplace(key, build_part(spec)).first;
+    Part p = it->second;
+    p.id = spec.id;
+    parts.push_back(std::move(p));
+  }
+  return parts;
+}
+
+}  // namespace pd

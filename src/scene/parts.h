@@ -1,0 +1,31 @@
+// Parts: a scene's part specs turned into convex pieces in scene units.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/aabb.h"
+#include "geometry/hull.h"
+#include "scene/scene.h"
+
+namespace pd {
+
+struct Part {
+  std::string id;
+  std::string source;  ///< the mesh path, or "inline"
+  long vertex_count = 0;
+  std::vector<Hull> pieces;  ///< convex pieces (one unless pieces = "meshes")
+  Aabb box;
+  std::vector<std::string> warnings;
+  std::optional<std::string> error;  ///< the part could not be used: its pairs are errors
+
+  long hull_vertex_count() const;
+};
+
+/// Loads, transforms and hulls every part. A part that fails gets `error` set
+/// and the rest go on. The same mesh file under the same units, transform and
+/// pieces is loaded and hulled once.
+std::vector<Part> build_parts(const SceneSpec& scene);
+
+}  // namespace pd

@@ -1,0 +1,78 @@
+// The scene: what to check, as read from a scene file or a part list.
+// Format: docs/scene-format.md (schema: docs/scene.schema.json).
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geometry/types.h"
+#include "solve/settings.h"
+
+namespace pd {
+
+/// An unusable scene or bad usage (exit code 2). The message names the file and
+/// the JSON path of the offending field.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Pieces { kHull, kMeshes };
+
+struct PartSpec {
+  std::string id;
+  std::string where;                 ///< "scene.json: parts[3]", for messages
+  std::optional<std::string> mesh;   ///< a path usable from the working directory
+  std::optional<Points> vertices;    ///< inline vertices, in the part's units
+  double to_scene_units = 1.0;       ///< part unit / scene unit
+  Mat4 transform = Mat4::Identity();
+  Pieces pieces = Pieces::kHull;
+};
+
+/// Solver fields given by the scene; each overrides the default, and the
+/// command line overrides the scene.
+struct SolverOverrides {
+  std::optional<Method> method;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> tau;
+  std::optional<int> samples;
+  std::optional<int> grid;
+  std::optional<int> gs_local;
+  void apply(SolverSettings& s) const;
+};
+
+struct SceneSpec {
+  std::string path;  ///< the scene file, or "-" for standard input
+  std::optional<std::string> units;
+  std::optional<double> tolerance;
+  std::vector<PartSpec> parts;
+  std::optional<std::vector<std::pair<std::string, std::string>>> pairs;
+  SolverOverrides solver;
+};
+
+/// Parses a scene document. `path` names it in messages; mesh paths are taken
+/// relative to `base_dir`. Throws SceneError.
+/// `units` (the command line's --units), when given, replaces the scene's unit.
+SceneSpec parse_scene_json(const std::string& text, const std::string& path,
+                           const std::string& base_dir,
+                           const std::optional<std::string>& units = std::nullopt);
+
+/// Reads a scene file from disk (throws SceneError when unreadable).
+SceneSpec load_scene_file(const std::string& path,
+                          const std::optional<std::string>& units = std::nullopt);
+
+/// A plain part list: one mesh path per line, or "id<TAB>path"; blank lines and
+/// lines starting with '#' are skipped. Paths are relative to the working directory.
+SceneSpec parse_part_list(const std::string& text, const std::string& path);
+
+/// Standard input: a scene JSON when it starts with '{', a part list otherwise.
+SceneSpec parse_stdin_scene(const std::string& text,
+                            const std::optional<std::string>& units = std::nullopt);
+
+/// Checks that ids are unique and pairs name known parts (throws SceneError).
+void validate_scene(const SceneSpec& s);
+
+}  // namespace pd

@@ -1,0 +1,250 @@
+#include <Eigen/LU>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "scene/scene.h"
+#include "scene/units.h"
+
+namespace pd {
+
+using nlohmann::json;
+
+namespace {
+
+// Every error names the file and the JSON path of the field.
+struct Ctx {
+  const std::string& file;
+  [[noreturn]] void fail(const std::string& at, const std::string& what) const {
+    throw SceneError(file + ": " + (at.empty() ? "" : at + ": ") + what);
+  }
+};
+
+const char* type_name(const json& j) { return j.type_name(); }
+
+void only_keys(const Ctx& c, const json& obj, const std::string& at,
+               const std::set<std::string>& allowed) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    if (!allowed.count(it.key())) {
+      std::string list;
+      for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+      c.fail(at.empty() ? it.key() : at + "." + it.key(), "unknown key (allowed: " + list + ")");
+    }
+  }
+}
+
+double number(const Ctx& c, const json& j, const std::string& at) {
+  if (!j.is_number()) c.fail(at, std::string("expected a number, got ") + type_name(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) c.fail(at, "not a finite number");
+  return v;
+}
+
+std::string string(const Ctx& c, const json& j, const std::string& at) {
+  if (!j.is_string()) c.fail(at, std::string("expected a string, got ") + type_name(j));
+  return j.get<std::string>();
+}
+
+std::string unit(const Ctx& c, const json& j, const std::string& at) {
+  const std::string u = string(c, j, at);
+  if (!unit_in_mm(u)) c.fail(at, "unknown unit \"" + u + "\" (use " + kUnitNames + ")");
+  return u;
+}
+
+Mat4 transform(const Ctx& c, const json& j, const std::string& at) {
+  std::vector<double> v;
+  if (!j.is_array()) c.fail(at, "expected a 4x4 array or a list of 16 numbers");
+  if (j.size() == 16) {
+    for (size_t k = 0; k < 16; ++k) v.push_back(number(c, j[k], at + "[" + std::to_string(k) + "]"));
+  } else if (j.size() == 4) {
+    for (size_t r = 0; r < 4; ++r) {
+      const std::string ar = at + "[" + std::to_string(r) + "]";
+      if (!j[r].is_array() || j[r].size() != 4) c.fail(ar, "expected a row of 4 numbers");
+      for (size_t k = 0; k < 4; ++k) v.push_back(number(c, j[r][k], ar + "[" + std::to_string(k) + "]"));
+    }
+  } else {
+    c.fail(at, "expected a 4x4 array or a list of 16 numbers, got " + std::to_string(j.size()) +
+                   " entries");
+  }
+  Mat4 m;
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) m(r, k) = v[4 * r + k];  // row-major in the file
+  if (m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1)
+    c.fail(at, "the last row must be [0, 0, 0, 1] (an affine transform)");
+  if (std::abs(m.topLeftCorner<3, 3>().determinant()) < 1e-300)
+    c.fail(at, "singular transform (it flattens the part)");
+  return m;
+}
+
+Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
+  if (!j.is_array()) c.fail(at, std::string("expected a list of [x, y, z], got ") + type_name(j));
+  if (j.empty()) c.fail(at, "empty vertex list");
+  Points p(3, j.size());
+  for (size_t k = 0; k < j.size(); ++k) {
+    const std::string ak = at + "[" + std::to_string(k) + "]";
+    if (!j[k].is_array() || j[k].size() != 3) c.fail(ak, "expected [x, y, z]");
+    for (int d = 0; d < 3; ++d) p(d, k) = number(c, j[k][d], ak + "[" + std::to_string(d) + "]");
+  }
+  return p;
+}
+
+PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
+              const std::string& scene_units) {
+  if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
+  only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces"});
+  PartSpec p;
+  p.where = c.file + ": " + at;
+  if (!j.contains("id")) c.fail(at, "missing \"id\"");
+  p.id = string(c, j["id"], at + ".id");
+  if (p.id.empty()) c.fail(at + ".id", "empty id");
+  p.where += " (\"" + p.id + "\")";
+  const bool has_mesh = j.contains("mesh"), has_vertices = j.contains("vertices");
+  if (has_mesh == has_vertices) c.fail(at, "give exactly one of \"mesh\" and \"vertices\"");
+  if (has_mesh) {
+    const std::filesystem::path m = string(c, j["mesh"], at + ".mesh");
+    p.mesh = (m.is_absolute() || base_dir.empty() ? m : std::filesystem::path(base_dir) / m).string();
+  } else {
+    p.vertices = vertex_list(c, j["vertices"], at + ".vertices");
+  }
+  if (j.contains("units")) {
+    p.to_scene_units = *unit_in_mm(unit(c, j["units"], at + ".units")) / *unit_in_mm(scene_units);
+  }
+  if (j.contains("transform")) p.transform = transform(c, j["transform"], at + ".transform");
+  if (j.contains("pieces")) {
+    const std::string v = string(c, j["pieces"], at + ".pieces");
+    if (v == "hull") p.pieces = Pieces::kHull;
+    else if (v == "meshes") p.pieces = Pieces::kMeshes;
+    else c.fail(at + ".pieces", "expected \"hull\" or \"meshes\", got \"" + v + "\"");
+    if (v == "meshes" && !has_mesh) c.fail(at + ".pieces", "\"meshes\" needs a mesh file");
+  }
+  return p;
+}
+
+SolverOverrides solver(const Ctx& c, const json& j) {
+  const std::string at = "solver";
+  if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
+  only_keys(c, j, at, {"method", "seed", "tau", "samples", "grid", "gs_local"});
+  SolverOverrides o;
+  if (j.contains("method")) {
+    const std::string m = string(c, j["method"], at + ".method");
+    o.method = parse_method(m);
+    if (!o.method) c.fail(at + ".method", "unknown method \"" + m + "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
+  }
+  auto positive_int = [&](const char* key) -> std::optional<int> {
+    if (!j.contains(key)) return std::nullopt;
+    const std::string ak = at + "." + key;
+    if (!j[key].is_number_integer() || j[key].get<long long>() < 1 || j[key].get<long long>() > 100000)
+      c.fail(ak, "expected an integer from 1 to 100000");
+    return j[key].get<int>();
+  };
+  if (j.contains("seed")) {
+    if (!j["seed"].is_number_unsigned()) c.fail(at + ".seed", "expected a non-negative integer");
+    o.seed = j["seed"].get<std::uint64_t>();
+  }
+  if (j.contains("tau")) {
+    o.tau = number(c, j["tau"], at + ".tau");
+    if (!(*o.tau > 0 && *o.tau < 1)) c.fail(at + ".tau", "expected 0 < tau < 1");
+  }
+  o.samples = positive_int("samples");
+  o.grid = positive_int("grid");
+  o.gs_local = positive_int("gs_local");
+  return o;
+}
+
+std::string line_column(const std::string& text, size_t byte) {
+  size_t line = 1, col = 1;
+  for (size_t k = 0; k + 1 < byte && k < text.size(); ++k) {
+    if (text[k] == '\n') ++line, col = 1;
+    else ++col;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+}  // namespace
+
+void SolverOverrides::apply(SolverSettings& s) const {
+  if (method) s.method = *method;
+  if (seed) s.seed = *seed;
+  if (tau) s.tau = *tau;
+  if (samples) s.samples = *samples;
+  if (grid) s.grid = *grid;
+  if (gs_local) s.gs_local = *gs_local;
+}
+
+SceneSpec parse_scene_json(const std::string& text, const std::string& path,
+                           const std::string& base_dir, const std::optional<std::string>& units) {
+  const Ctx c{path};
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string msg = e.what();
+    const auto pos = msg.find("error while parsing");
+    throw SceneError(path + ": invalid JSON at " + line_column(text, e.byte) + ": " +
+                     (pos == std::string::npos ? msg : msg.substr(pos)));
+  }
+  if (!doc.is_object()) c.fail("", "a scene is a JSON object");
+  only_keys(c, doc, "", {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks"});
+  SceneSpec s;
+  s.path = path;
+  if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))
+    c.fail("version", "only version 1 is known");
+  if (doc.contains("units")) s.units = unit(c, doc["units"], "units");
+  if (units) s.units = units;
+  const std::string scene_units = s.units.value_or("mm");
+  if (doc.contains("tolerance")) {
+    s.tolerance = number(c, doc["tolerance"], "tolerance");
+    if (!(*s.tolerance > 0)) c.fail("tolerance", "must be > 0");
+  }
+  if (!doc.contains("parts")) c.fail("", "missing \"parts\"");
+  const json& parts = doc["parts"];
+  if (!parts.is_array()) c.fail("parts", std::string("expected a list, got ") + type_name(parts));
+  for (size_t k = 0; k < parts.size(); ++k)
+    s.parts.push_back(part(c, parts[k], "parts[" + std::to_string(k) + "]", base_dir, scene_units));
+  if (doc.contains("pairs")) {
+    const json& pj = doc["pairs"];
+    if (!pj.is_array()) c.fail("pairs", "expected a list of [id, id]");
+    s.pairs.emplace();
+    for (size_t k = 0; k < pj.size(); ++k) {
+      const std::string at = "pairs[" + std::to_string(k) + "]";
+      if (!pj[k].is_array() || pj[k].size() != 2) c.fail(at, "expected [id, id]");
+      s.pairs->emplace_back(string(c, pj[k][0], at + "[0]"), string(c, pj[k][1], at + "[1]"));
+    }
+  }
+  if (doc.contains("solver")) s.solver = solver(c, doc["solver"]);
+  if (doc.contains("checks")) c.fail("checks", "clearance and motion checks are not available yet");
+  validate_scene(s);
+  return s;
+}
+
+SceneSpec load_scene_file(const std::string& path, const std::optional<std::string>& units) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string base = std::filesystem::path(path).parent_path().string();
+  return parse_scene_json(ss.str(), path, base, units);
+}
+
+void validate_scene(const SceneSpec& s) {
+  std::set<std::string> ids;
+  for (size_t k = 0; k < s.parts.size(); ++k) {
+    if (!ids.insert(s.parts[k].id).second)
+      throw SceneError(s.parts[k].where + ": duplicate part id \"" + s.parts[k].id + "\"");
+  }
+  if (s.pairs) {
+    for (size_t k = 0; k < s.pairs->size(); ++k) {
+      const auto& [a, b] = (*s.pairs)[k];
+      for (const auto& id : {a, b})
+        if (!ids.count(id))
+          throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: unknown part id \"" + id + "\"");
+      if (a == b)
+        throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: a part paired with itself");
+    }
+  }
+}
+
+}  // namespace pd
