@@ -36,7 +36,7 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
     j["error"] = r.error;
   } else {
     j["depth"] = r.depth;
-    j["direction"] = {r.direction.x(), r.direction.y(), r.direction.z()};
+    j["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0, r.direction.z() + 0.0};  // no -0
     j["margin"] = r.margin;
     if (r.distance) j["distance"] = *r.distance;
   }

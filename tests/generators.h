@@ -1,0 +1,69 @@
+// Seeded generators of test polytope pairs (shared by the tests and pdbench).
+#pragma once
+
+#include "geometry/hull.h"
+#include "solve/exact.h"
+#include "solve/mlsl.h"
+#include "solve/objective.h"
+
+namespace pd::testgen {
+
+/// n points uniform in a ball, hulled.
+inline Points ball_polytope(SphereSampler& r, int n, const Vec3& centre, double radius) {
+  Points p(3, n);
+  for (int i = 0; i < n; ++i) p.col(i) = centre + radius * std::cbrt(r.uniform()) * r.direction();
+  return convex_hull(p).vertices;
+}
+
+/// m points on a sphere (a Fibonacci lattice, slightly jittered so no four are coplanar).
+inline Points sphere_polytope(SphereSampler& r, int m, const Vec3& centre, double radius) {
+  Points p(3, m);
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < m; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / m, rho = std::sqrt(1.0 - z * z);
+    const double t = golden * i + 1e-3 * r.uniform();
+    p.col(i) = centre + radius * Vec3(rho * std::cos(t), rho * std::sin(t), z);
+  }
+  return p;
+}
+
+struct PairCase {
+  Points a, b;
+};
+
+/// Draws from `make` until the pair overlaps (the exact reference says so).
+template <class Make>
+PairCase overlapping(SphereSampler& r, Make make) {
+  for (;;) {
+    PairCase c = make(r);
+    const PairProblem pr(c.a, c.b);
+    if (exact_depth(pr.p(), pr.q()).depth > 1e-6) return c;
+  }
+}
+
+/// Like the paper's problems: 5–15 vertices, sizes 10–100 (may be separated).
+inline PairCase paper_like_any(SphereSampler& r) {
+  const double ra = 10 + 40 * r.uniform(), rb = 10 + 40 * r.uniform();
+  const int na = 5 + static_cast<int>(11 * r.uniform()), nb = 5 + static_cast<int>(11 * r.uniform());
+  const Vec3 c = r.direction() * (ra + rb) * 0.5 * r.uniform();
+  return {ball_polytope(r, std::max(na, 5), Vec3::Zero(), ra), ball_polytope(r, std::max(nb, 5), c, rb)};
+}
+inline PairCase paper_like(SphereSampler& r) { return overlapping(r, paper_like_any); }
+
+/// Like the paper's problem 14: ~100 vertices, coordinates in the thousands.
+inline PairCase large_coordinates(SphereSampler& r, int n = 100) {
+  const Vec3 base(3000 + 2000 * r.uniform(), -4000 * r.uniform(), 2000 * r.uniform());
+  const double ra = 20000 + 10000 * r.uniform(), rb = 20000 + 10000 * r.uniform();
+  const Vec3 c = base + r.direction() * (ra + rb) * 0.5 * r.uniform();
+  return {ball_polytope(r, n, base, ra), ball_polytope(r, n, c, rb)};
+}
+
+/// Zhou et al.'s spheres: m points, radius 10, at (0,0,0) and (20,10,30), the
+/// second moved along the line of centres into overlap.
+inline PairCase zhou_spheres(SphereSampler& r, int m) {
+  const Vec3 c2(20, 10, 30);
+  const double d = 2.0 + 16.0 * r.uniform();  // centre distance in (2, 18): overlapping
+  return {sphere_polytope(r, m, Vec3::Zero(), 10), sphere_polytope(r, m, c2.normalized() * d, 10)};
+}
+
+}  // namespace pd::testgen

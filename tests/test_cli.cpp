@@ -1,0 +1,189 @@
+// The pdcheck binary end to end: exit codes, messages, reports.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using nlohmann::json;
+
+namespace {
+
+const std::string kSource = PDCHECK_SOURCE_DIR;
+const std::string kDemo = kSource + "/testdata/demo/scene.json";
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+// Runs pdcheck through the shell; stderr goes to a file so both can be read.
+CliRun pdcheck(const std::string& args, const std::string& stdin_text = "", const std::string& env = "") {
+  const std::string err_file = testing::TempDir() + "pdcheck_err.txt";
+  std::string cmd = env + " " + std::string(PDCHECK_BINARY) + " " + args + " 2>" + err_file;
+  if (!stdin_text.empty()) {
+    const std::string in_file = testing::TempDir() + "pdcheck_in.txt";
+    std::ofstream(in_file) << stdin_text;
+    cmd += " <" + in_file;
+  } else {
+    cmd += " </dev/null";
+  }
+  CliRun r;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_file);
+  std::stringstream ss;
+  ss << e.rdbuf();
+  r.err = ss.str();
+  return r;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::map<std::string, std::string> statuses(const json& report) {
+  std::map<std::string, std::string> s;
+  for (const auto& p : report["pairs"]) s[p["a"].get<std::string>() + ":" + p["b"].get<std::string>()] = p["status"];
+  return s;
+}
+
+json without_timings(json r) {
+  r.erase("seconds");
+  for (auto& p : r["pairs"]) p.erase("time_ms");
+  return r;
+}
+
+}  // namespace
+
+TEST(Cli, DemoSceneStatuses) {
+  const CliRun r = pdcheck(kDemo + " --quiet");
+  ASSERT_EQ(r.code, 1) << r.err;
+  const json rep = json::parse(r.out);
+  const auto s = statuses(rep);
+  EXPECT_EQ(s.at("cover:bracket"), "interference");
+  EXPECT_EQ(s.at("base:cover"), "false_positive");
+  EXPECT_EQ(s.at("slot:pin"), "false_positive");
+  EXPECT_EQ(s.at("base:pin"), "separated");     // face contact
+  EXPECT_EQ(s.at("base:spacer"), "separated");  // face contact, inline part in cm
+  EXPECT_EQ(rep["summary"]["interference"], 1);
+  EXPECT_EQ(rep["summary"]["culled"], 9);
+  for (const auto& p : rep["pairs"]) {
+    ASSERT_TRUE(p.contains("direction"));
+    const double n = std::hypot(p["direction"][0].get<double>(), p["direction"][1].get<double>(),
+                                p["direction"][2].get<double>());
+    EXPECT_NEAR(n, 1.0, 1e-12);
+  }
+}
+
+TEST(Cli, ExactMethodAgreesOnTheDemo) {
+  const json a = json::parse(pdcheck(kDemo + " -q").out), b = json::parse(pdcheck(kDemo + " -q --method exact").out);
+  ASSERT_EQ(a["pairs"].size(), b["pairs"].size());
+  for (size_t k = 0; k < a["pairs"].size(); ++k) {
+    EXPECT_EQ(a["pairs"][k]["status"], b["pairs"][k]["status"]);
+    EXPECT_NEAR(a["pairs"][k]["depth"].get<double>(), b["pairs"][k]["depth"].get<double>(), 1e-9);
+  }
+}
+
+TEST(Cli, JobsDoNotChangeTheReport) {
+  const CliRun one = pdcheck(kDemo + " -q --jobs 1"), two = pdcheck(kDemo + " -q --jobs 2");
+  EXPECT_EQ(without_timings(json::parse(one.out)), without_timings(json::parse(two.out)));
+}
+
+TEST(Cli, CrashedWorkerCostsOnlyItsPair) {
+  const CliRun r = pdcheck(kDemo + " -q --jobs 2", "", "PDCHECK_TEST_CRASH_PAIR=base:cover");
+  EXPECT_EQ(r.code, 3) << r.err;
+  const json rep = json::parse(r.out);
+  const auto s = statuses(rep);
+  EXPECT_EQ(s.at("base:cover"), "error");
+  EXPECT_EQ(s.at("cover:bracket"), "interference");  // the rest of the batch survived
+  EXPECT_EQ(rep["pairs"].size(), 6u);
+  for (const auto& p : rep["pairs"])
+    if (p["status"] == "error") {
+      EXPECT_NE(p["error"].get<std::string>().find("worker crashed"), std::string::npos);
+    }
+}
+
+TEST(Cli, PairTimeoutKillsTheWorker) {
+  const CliRun r = pdcheck(kDemo + " -q --jobs 1 --method mlsl-paper --pair-timeout 0.001");
+  EXPECT_EQ(r.code, 3);
+  const json rep = json::parse(r.out);
+  EXPECT_GT(rep["summary"]["error"].get<int>(), 0);
+  EXPECT_NE(r.out.find("timed out"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(pdcheck("").code, 2);
+  EXPECT_EQ(pdcheck("--no-such-option x.json").code, 2);
+  const CliRun missing = pdcheck("/nonexistent/scene.json");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/scene.json"), std::string::npos);
+  const std::string no_tol = write_temp("no_tol.json", R"({"parts": []})");
+  const CliRun r = pdcheck(no_tol);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no tolerance"), std::string::npos) << r.err;
+  const CliRun typo = pdcheck(write_temp("typo.json", R"({"tolerance": 1, "prats": []})"));
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_NE(typo.err.find("prats: unknown key"), std::string::npos) << typo.err;
+  EXPECT_EQ(pdcheck(kDemo + " --method nope").code, 2);
+  const CliRun help = pdcheck("--help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("Examples:"), std::string::npos);
+  EXPECT_EQ(pdcheck("--version").code, 0);
+}
+
+TEST(Cli, UnreadableMeshesDoNotLoseTheBatch) {
+  const std::string f = kSource + "/testdata/formats/";
+  const std::string scene = write_temp("partial.json", R"({"tolerance": 0.1, "parts": [
+    {"id": "box", "mesh": ")" + f + R"(box_ascii.stl"},
+    {"id": "box2", "mesh": ")" + f + R"(box.obj", "transform": [1,0,0,1.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
+    {"id": "bad", "mesh": ")" + f + R"(garbage.stl"},
+    {"id": "nan", "mesh": ")" + f + R"(nan.obj"},
+    {"id": "gone", "mesh": "no/such/file.stl"}]})");
+  const CliRun r = pdcheck(scene + " -q");
+  EXPECT_EQ(r.code, 3) << r.err;
+  const json rep = json::parse(r.out);
+  EXPECT_EQ(statuses(rep).at("box:box2"), "interference");  // still checked
+  EXPECT_EQ(rep["summary"]["part_errors"], 3);
+  for (const auto& p : rep["parts"])
+    if (p["id"] != "box" && p["id"] != "box2") {
+      EXPECT_TRUE(p.contains("error")) << p.dump();
+    }
+  EXPECT_NE(r.err.find("part \"gone\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no/such/file.stl"), std::string::npos) << r.err;
+}
+
+TEST(Cli, PartListOnStdinWithJsonLines) {
+  const std::string f = kSource + "/testdata/formats/";
+  const CliRun r = pdcheck("- --tolerance 0.5 --units mm --format jsonl -q",
+                        "a\t" + f + "box_binary.stl\nb\t" + f + "box_ascii.ply\n");
+  EXPECT_EQ(r.code, 1) << r.err;
+  std::istringstream lines(r.out);
+  std::string first, last, line;
+  std::getline(lines, first);
+  while (std::getline(lines, line)) last = line;
+  EXPECT_EQ(json::parse(first)["status"], "interference");  // identical boxes
+  EXPECT_EQ(json::parse(last)["summary"]["interference"], 1);
+  EXPECT_EQ(pdcheck("- -q", "a\t" + f + "box.obj\n").code, 2);  // a part list needs --tolerance
+}
+
+TEST(Cli, OutputFileIsWrittenWhole) {
+  const std::string out = testing::TempDir() + "report.json";
+  std::remove(out.c_str());
+  const CliRun r = pdcheck(kDemo + " -q -o " + out);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(r.out.empty());
+  std::ifstream in(out);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_EQ(json::parse(ss.str())["summary"]["interference"], 1);
+  EXPECT_EQ(pdcheck(kDemo + " -q -o /nonexistent-dir/report.json").code, 2);
+}

@@ -1,0 +1,92 @@
+#include <gtest/gtest.h>
+
+#include "batch/broad_phase.h"
+#include "generators.h"
+#include "geometry/frame.h"
+#include "geometry/hull.h"
+
+using namespace pd;
+
+namespace {
+Points cube(double s, const Vec3& c = Vec3::Zero()) {
+  Points p(3, 8);
+  for (int k = 0; k < 8; ++k) p.col(k) = c + s * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  return p;
+}
+}  // namespace
+
+TEST(Hull, CubeWithInteriorAndDuplicatePoints) {
+  Points p(3, 8 + 8 + 5);
+  p << cube(1), cube(1), Points::Random(3, 5) * 0.5;  // every corner twice (unwelded STL)
+  const Hull h = convex_hull(p);
+  EXPECT_EQ(h.dimension, 3);
+  EXPECT_EQ(h.vertices.cols(), 8);
+  EXPECT_TRUE(h.warnings.empty());
+}
+
+TEST(Hull, FlatSetKeepsItsPolygon) {
+  Points p(3, 5);
+  p << 0, 1, 1, 0, 0.5,  //
+      0, 0, 1, 1, 0.5,   //
+      7, 7, 7, 7, 7;
+  const Hull h = convex_hull(p);
+  EXPECT_EQ(h.dimension, 2);
+  EXPECT_EQ(h.vertices.cols(), 4);
+  ASSERT_FALSE(h.warnings.empty());
+  EXPECT_NE(h.warnings[0].find("flat"), std::string::npos);
+}
+
+TEST(Hull, CollinearAndSinglePoint) {
+  Points line(3, 4);
+  line << 0, 1, 2, 3, 0, 2, 4, 6, 0, 0, 0, 0;
+  const Hull h = convex_hull(line);
+  EXPECT_EQ(h.dimension, 1);
+  EXPECT_EQ(h.vertices.cols(), 2);
+  Points one(3, 3);
+  one.colwise() = Vec3(1, 2, 3);
+  const Hull h0 = convex_hull(one);
+  EXPECT_EQ(h0.dimension, 0);
+  EXPECT_EQ(h0.vertices.cols(), 1);
+}
+
+TEST(Hull, ThinPlateStaysSolid) {
+  for (double t : {1.0, 1e-3}) {  // 1000 x 1000 x 1 and a thickness ratio of 1e-6
+    Points p = cube(1);
+    p.row(0) *= 500;
+    p.row(1) *= 500;
+    p.row(2) *= t / 2;
+    const Hull h = convex_hull(p);
+    EXPECT_EQ(h.dimension, 3) << t;
+    EXPECT_EQ(h.vertices.cols(), 8) << t;
+  }
+}
+
+TEST(Hull, RejectsEmptyAndNonFinite) {
+  EXPECT_THROW(convex_hull(Points(3, 0)), std::invalid_argument);
+  Points p = cube(1);
+  p(0, 3) = std::nan("");
+  EXPECT_THROW(convex_hull(p), std::invalid_argument);
+}
+
+TEST(Frame, PairFrameMapsIntoUnitBall) {
+  const Points a = cube(10, Vec3(35000, 0, 0)), b = cube(1, Vec3(35010, 5, 0));
+  const Frame f = pair_frame(a, b);
+  EXPECT_LE(f.to_local(a).colwise().norm().maxCoeff(), 1.0 + 1e-12);
+  EXPECT_LE(f.to_local(b).colwise().norm().maxCoeff(), 1.0 + 1e-12);
+}
+
+TEST(BroadPhase, MatchesBruteForce) {
+  SphereSampler r(7);
+  std::vector<Aabb> boxes;
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 c(100 * r.uniform(), 100 * r.uniform(), 100 * r.uniform());
+    const Vec3 h(5 * r.uniform(), 5 * r.uniform(), 5 * r.uniform());
+    boxes.push_back({c - h, c + h});
+  }
+  boxes.push_back({boxes[0].hi, boxes[0].hi + Vec3::Ones()});  // touching a corner counts
+  std::vector<std::pair<int, int>> brute;
+  for (int i = 0; i < int(boxes.size()); ++i)
+    for (int j = i + 1; j < int(boxes.size()); ++j)
+      if (boxes[i].overlaps(boxes[j])) brute.emplace_back(i, j);
+  EXPECT_EQ(overlapping_boxes(boxes, 0.0), brute);
+}

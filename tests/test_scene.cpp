@@ -1,0 +1,104 @@
+#include <gtest/gtest.h>
+
+#include "scene/mesh_loader.h"
+#include "scene/parts.h"
+#include "scene/scene.h"
+
+using namespace pd;
+
+namespace {
+const std::string kFormats = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_scene_json(text, "s.json", "");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+const std::string kPart = R"({"id": "a", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]})";
+}  // namespace
+
+TEST(SceneJson, ErrorsNameFileAndJsonPath) {
+  EXPECT_EQ(error_of(R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0,0]], "transfrom": []}]})"),
+            "s.json: parts[0].transfrom: unknown key (allowed: id, mesh, pieces, transform, units, vertices)");
+  EXPECT_EQ(error_of(R"({"tolerance": "1", "parts": []})"), "s.json: tolerance: expected a number, got string");
+  EXPECT_EQ(error_of(R"({"tolerance": -1, "parts": []})"), "s.json: tolerance: must be > 0");
+  EXPECT_EQ(error_of(R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0]]}]})"),
+            "s.json: parts[0].vertices[0]: expected [x, y, z]");
+  EXPECT_EQ(error_of(R"({"tolerance": 1, "units": "furlong", "parts": []})"),
+            "s.json: units: unknown unit \"furlong\" (use mm, cm, m, in, ft)");
+  EXPECT_EQ(error_of(R"({"tolerance": 1, "parts": [)" + kPart + "," + kPart + "]}"),
+            "s.json: parts[1] (\"a\"): duplicate part id \"a\"");
+  EXPECT_EQ(error_of(R"({"tolerance": 1, "parts": [)" + kPart + R"(], "pairs": [["a", "b"]]})"),
+            "s.json: pairs[0]: unknown part id \"b\"");
+  EXPECT_NE(error_of(R"({"tolerance": 1, "parts": [{"id": "a", "mesh": "x", "vertices": []}]})")
+                .find("exactly one of"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"tolerance": 1, "parts": [)" + kPart.substr(0, kPart.size() - 1) +
+                     R"(, "transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,1,1]}]})")
+                .find("parts[0].transform: the last row"),
+            std::string::npos);
+}
+
+TEST(SceneJson, BadJsonGivesLineAndColumn) {
+  const std::string e = error_of("{\n  \"tolerance\": 1,\n  \"parts\": [,]\n}");
+  EXPECT_NE(e.find("s.json: invalid JSON at line 3, column 13"), std::string::npos) << e;
+}
+
+TEST(SceneJson, UnitsAndTransformsApply) {
+  const SceneSpec s = parse_scene_json(R"({"units": "mm", "tolerance": 0.1, "parts": [
+      {"id": "a", "units": "cm", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],
+       "transform": [[1,0,0,100],[0,1,0,0],[0,0,1,0],[0,0,0,1]]},
+      {"id": "b", "units": "in", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],
+       "transform": [0,-1,0,0, 1,0,0,0, 0,0,1,0, 0,0,0,1]}]})",
+                                       "s.json", "");
+  const auto parts = build_parts(s);
+  ASSERT_EQ(parts.size(), 2u);
+  // cm to mm, then translate by 100 mm: x spans [100, 110].
+  EXPECT_DOUBLE_EQ(parts[0].box.lo.x(), 100.0);
+  EXPECT_DOUBLE_EQ(parts[0].box.hi.x(), 110.0);
+  // inches to mm, then 90 degrees about z: x spans [-25.4, 0], y [0, 25.4].
+  EXPECT_DOUBLE_EQ(parts[1].box.lo.x(), -25.4);
+  EXPECT_DOUBLE_EQ(parts[1].box.hi.y(), 25.4);
+}
+
+TEST(PartList, TabSeparatedIdsAndComments) {
+  const SceneSpec s = parse_part_list("# parts\nwing\tparts/wing.stl\n\nparts/rib.obj\n", "<stdin>");
+  ASSERT_EQ(s.parts.size(), 2u);
+  EXPECT_EQ(s.parts[0].id, "wing");
+  EXPECT_EQ(*s.parts[0].mesh, "parts/wing.stl");
+  EXPECT_EQ(s.parts[1].id, "parts/rib.obj");
+  EXPECT_THROW(parse_part_list("a\tx.stl\na\ty.stl\n", "<stdin>"), SceneError);
+}
+
+TEST(MeshLoader, EveryFormatGivesTheSameBox) {
+  for (const char* f : {"box_ascii.stl", "box_binary.stl", "box.obj", "box_ascii.ply", "box_binary.ply"}) {
+    const auto sets = load_mesh_vertices(kFormats + f, false);
+    ASSERT_EQ(sets.size(), 1u) << f;
+    EXPECT_EQ(sets[0].rowwise().minCoeff(), Vec3(-1, -2, -3)) << f;
+    EXPECT_EQ(sets[0].rowwise().maxCoeff(), Vec3(1, 2, 3)) << f;
+  }
+}
+
+TEST(MeshLoader, GltfNodeTransformsCompose) {
+  const auto sets = load_mesh_vertices(kFormats + "box_nodes.gltf", true);
+  ASSERT_EQ(sets.size(), 2u);
+  // translated by (10, 0, 0)
+  EXPECT_TRUE(sets[0].rowwise().minCoeff().isApprox(Vec3(9, -2, -3), 1e-6));
+  // scaled by 2, rotated 90 degrees about x ((y, z) -> (-z, y)), then moved by (0, 20, 0)
+  EXPECT_TRUE(sets[1].rowwise().minCoeff().isApprox(Vec3(-2, 14, -4), 1e-6)) << sets[1].rowwise().minCoeff();
+  EXPECT_TRUE(sets[1].rowwise().maxCoeff().isApprox(Vec3(2, 26, 4), 1e-6)) << sets[1].rowwise().maxCoeff();
+}
+
+TEST(MeshLoader, UnusableFilesSayWhy) {
+  for (const char* f : {"missing.stl", "garbage.stl", "empty.obj"}) {
+    try {
+      load_mesh_vertices(kFormats + f, false);
+      ADD_FAILURE() << f << " loaded";
+    } catch (const MeshError& e) {
+      EXPECT_NE(std::string(e.what()).find(f), std::string::npos) << e.what();
+    }
+  }
+}
