@@ -44,11 +44,15 @@ PairCase overlapping(SphereSampler& r, Make make) {
 /// Like the paper's problems: 5–15 vertices, sizes 10–100 (may be separated).
 inline PairCase paper_like_any(SphereSampler& r) {
   const double ra = 10 + 40 * r.uniform(), rb = 10 + 40 * r.uniform();
-  const int na = 5 + static_cast<int>(11 * r.uniform()), nb = 5 + static_cast<int>(11 * r.uniform());
+  const int na = 5 + static_cast<int>(11 * r.uniform()),
+            nb = 5 + static_cast<int>(11 * r.uniform());
   const Vec3 c = r.direction() * (ra + rb) * 0.5 * r.uniform();
-  return {ball_polytope(r, std::max(na, 5), Vec3::Zero(), ra), ball_polytope(r, std::max(nb, 5), c, rb)};
+  return {ball_polytope(r, std::max(na, 5), Vec3::Zero(), ra),
+          ball_polytope(r, std::max(nb, 5), c, rb)};
 }
-inline PairCase paper_like(SphereSampler& r) { return overlapping(r, paper_like_any); }
+inline PairCase paper_like(SphereSampler& r) {
+  return overlapping(r, paper_like_any);
+}
 
 /// Like the paper's problem 14: ~100 vertices, coordinates in the thousands.
 inline PairCase large_coordinates(SphereSampler& r, int n = 100) {

@@ -20,7 +20,8 @@ struct CliRun {
 };
 
 // Runs pdcheck through the shell; stderr goes to a file so both can be read.
-CliRun pdcheck(const std::string& args, const std::string& stdin_text = "", const std::string& env = "") {
+CliRun pdcheck(const std::string& args, const std::string& stdin_text = "",
+               const std::string& env = "") {
   const std::string err_file = testing::TempDir() + "pdcheck_err.txt";
   std::string cmd = env + " " + std::string(PDCHECK_BINARY) + " " + args + " 2>" + err_file;
   if (!stdin_text.empty()) {
@@ -52,7 +53,8 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 std::map<std::string, std::string> statuses(const json& report) {
   std::map<std::string, std::string> s;
-  for (const auto& p : report["pairs"]) s[p["a"].get<std::string>() + ":" + p["b"].get<std::string>()] = p["status"];
+  for (const auto& p : report["pairs"])
+    s[p["a"].get<std::string>() + ":" + p["b"].get<std::string>()] = p["status"];
   return s;
 }
 
@@ -85,7 +87,8 @@ TEST(Cli, DemoSceneStatuses) {
 }
 
 TEST(Cli, ExactMethodAgreesOnTheDemo) {
-  const json a = json::parse(pdcheck(kDemo + " -q").out), b = json::parse(pdcheck(kDemo + " -q --method exact").out);
+  const json a = json::parse(pdcheck(kDemo + " -q").out),
+             b = json::parse(pdcheck(kDemo + " -q --method exact").out);
   ASSERT_EQ(a["pairs"].size(), b["pairs"].size());
   for (size_t k = 0; k < a["pairs"].size(); ++k) {
     EXPECT_EQ(a["pairs"][k]["status"], b["pairs"][k]["status"]);
@@ -142,11 +145,16 @@ TEST(Cli, UsageErrorsExitTwo) {
 
 TEST(Cli, UnreadableMeshesDoNotLoseTheBatch) {
   const std::string f = kSource + "/testdata/formats/";
-  const std::string scene = write_temp("partial.json", R"({"tolerance": 0.1, "parts": [
-    {"id": "box", "mesh": ")" + f + R"(box_ascii.stl"},
-    {"id": "box2", "mesh": ")" + f + R"(box.obj", "transform": [1,0,0,1.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
-    {"id": "bad", "mesh": ")" + f + R"(garbage.stl"},
-    {"id": "nan", "mesh": ")" + f + R"(nan.obj"},
+  const std::string scene = write_temp(
+      "partial.json", R"({"tolerance": 0.1, "parts": [
+    {"id": "box", "mesh": ")" +
+                          f + R"(box_ascii.stl"},
+    {"id": "box2", "mesh": ")" +
+                          f + R"(box.obj", "transform": [1,0,0,1.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
+    {"id": "bad", "mesh": ")" +
+                          f + R"(garbage.stl"},
+    {"id": "nan", "mesh": ")" +
+                          f + R"(nan.obj"},
     {"id": "gone", "mesh": "no/such/file.stl"}]})");
   const CliRun r = pdcheck(scene + " -q");
   EXPECT_EQ(r.code, 3) << r.err;
@@ -164,7 +172,7 @@ TEST(Cli, UnreadableMeshesDoNotLoseTheBatch) {
 TEST(Cli, PartListOnStdinWithJsonLines) {
   const std::string f = kSource + "/testdata/formats/";
   const CliRun r = pdcheck("- --tolerance 0.5 --units mm --format jsonl -q",
-                        "a\t" + f + "box_binary.stl\nb\t" + f + "box_ascii.ply\n");
+                           "a\t" + f + "box_binary.stl\nb\t" + f + "box_ascii.ply\n");
   EXPECT_EQ(r.code, 1) << r.err;
   std::istringstream lines(r.out);
   std::string first, last, line;

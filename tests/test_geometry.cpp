@@ -10,7 +10,8 @@ using namespace pd;
 namespace {
 Points cube(double s, const Vec3& c = Vec3::Zero()) {
   Points p(3, 8);
-  for (int k = 0; k < 8; ++k) p.col(k) = c + s * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  for (int k = 0; k < 8; ++k)
+    p.col(k) = c + s * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
   return p;
 }
 }  // namespace

@@ -21,9 +21,13 @@ const std::string kPart = R"({"id": "a", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0
 }  // namespace
 
 TEST(SceneJson, ErrorsNameFileAndJsonPath) {
-  EXPECT_EQ(error_of(R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0,0]], "transfrom": []}]})"),
-            "s.json: parts[0].transfrom: unknown key (allowed: id, mesh, pieces, transform, units, vertices)");
-  EXPECT_EQ(error_of(R"({"tolerance": "1", "parts": []})"), "s.json: tolerance: expected a number, got string");
+  EXPECT_EQ(
+      error_of(
+          R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0,0]], "transfrom": []}]})"),
+      "s.json: parts[0].transfrom: unknown key (allowed: id, mesh, pieces, transform, units, "
+      "vertices)");
+  EXPECT_EQ(error_of(R"({"tolerance": "1", "parts": []})"),
+            "s.json: tolerance: expected a number, got string");
   EXPECT_EQ(error_of(R"({"tolerance": -1, "parts": []})"), "s.json: tolerance: must be > 0");
   EXPECT_EQ(error_of(R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0]]}]})"),
             "s.json: parts[0].vertices[0]: expected [x, y, z]");
@@ -65,7 +69,8 @@ TEST(SceneJson, UnitsAndTransformsApply) {
 }
 
 TEST(PartList, TabSeparatedIdsAndComments) {
-  const SceneSpec s = parse_part_list("# parts\nwing\tparts/wing.stl\n\nparts/rib.obj\n", "<stdin>");
+  const SceneSpec s =
+      parse_part_list("# parts\nwing\tparts/wing.stl\n\nparts/rib.obj\n", "<stdin>");
   ASSERT_EQ(s.parts.size(), 2u);
   EXPECT_EQ(s.parts[0].id, "wing");
   EXPECT_EQ(*s.parts[0].mesh, "parts/wing.stl");
@@ -74,7 +79,8 @@ TEST(PartList, TabSeparatedIdsAndComments) {
 }
 
 TEST(MeshLoader, EveryFormatGivesTheSameBox) {
-  for (const char* f : {"box_ascii.stl", "box_binary.stl", "box.obj", "box_ascii.ply", "box_binary.ply"}) {
+  for (const char* f :
+       {"box_ascii.stl", "box_binary.stl", "box.obj", "box_ascii.ply", "box_binary.ply"}) {
     const auto sets = load_mesh_vertices(kFormats + f, false);
     ASSERT_EQ(sets.size(), 1u) << f;
     EXPECT_EQ(sets[0].rowwise().minCoeff(), Vec3(-1, -2, -3)) << f;
@@ -88,8 +94,10 @@ TEST(MeshLoader, GltfNodeTransformsCompose) {
   // translated by (10, 0, 0)
   EXPECT_TRUE(sets[0].rowwise().minCoeff().isApprox(Vec3(9, -2, -3), 1e-6));
   // scaled by 2, rotated 90 degrees about x ((y, z) -> (-z, y)), then moved by (0, 20, 0)
-  EXPECT_TRUE(sets[1].rowwise().minCoeff().isApprox(Vec3(-2, 14, -4), 1e-6)) << sets[1].rowwise().minCoeff();
-  EXPECT_TRUE(sets[1].rowwise().maxCoeff().isApprox(Vec3(2, 26, 4), 1e-6)) << sets[1].rowwise().maxCoeff();
+  EXPECT_TRUE(sets[1].rowwise().minCoeff().isApprox(Vec3(-2, 14, -4), 1e-6))
+      << sets[1].rowwise().minCoeff();
+  EXPECT_TRUE(sets[1].rowwise().maxCoeff().isApprox(Vec3(2, 26, 4), 1e-6))
+      << sets[1].rowwise().maxCoeff();
 }
 
 TEST(MeshLoader, UnusableFilesSayWhy) {

@@ -24,7 +24,8 @@ DepthSolution solve(const testgen::PairCase& c, Method m, std::uint64_t seed = 1
 
 Points cube(double h, const Vec3& c) {
   Points p(3, 8);
-  for (int k = 0; k < 8; ++k) p.col(k) = c + h * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  for (int k = 0; k < 8; ++k)
+    p.col(k) = c + h * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
   return p;
 }
 
@@ -84,17 +85,20 @@ TEST(Exact, LibccdCubesShiftedAlongZ) {
 
 TEST(Mlsl, PaperLikePairsMatchExact) {
   SphereSampler r(2024);
-  for (int k = 0; k < 25; ++k) expect_matches_exact(testgen::paper_like(r), "paper-like " + std::to_string(k));
+  for (int k = 0; k < 25; ++k)
+    expect_matches_exact(testgen::paper_like(r), "paper-like " + std::to_string(k));
 }
 
 TEST(Mlsl, LargeCoordinatePairsMatchExact) {
   SphereSampler r(14);
-  for (int k = 0; k < 3; ++k) expect_matches_exact(testgen::large_coordinates(r), "problem-14-like " + std::to_string(k));
+  for (int k = 0; k < 3; ++k)
+    expect_matches_exact(testgen::large_coordinates(r), "problem-14-like " + std::to_string(k));
 }
 
 TEST(Mlsl, ZhouSpheresMatchExact) {
   SphereSampler r(2006);
-  for (int m : {10, 50, 200}) expect_matches_exact(testgen::zhou_spheres(r, m), "spheres m=" + std::to_string(m));
+  for (int m : {10, 50, 200})
+    expect_matches_exact(testgen::zhou_spheres(r, m), "spheres m=" + std::to_string(m));
 }
 
 TEST(Mlsl, SameSeedSameBits) {

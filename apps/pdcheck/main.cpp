@@ -30,29 +30,39 @@ const char* kExamples = R"(Examples:
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pdcheck: convex interference checking with penetration depths (Abramson, Kent "
-               "& Smith's MLSL + Ipopt), separating tessellation false positives from genuine "
-               "interferences."};
+  CLI::App app{
+      "pdcheck: convex interference checking with penetration depths (Abramson, Kent "
+      "& Smith's MLSL + Ipopt), separating tessellation false positives from genuine "
+      "interferences."};
   app.footer(kExamples);
   std::string scene_arg, output, format = "json", method_arg, units_arg;
   double tolerance = 0.0, pair_timeout = 0.0;
   int jobs = 0;
   std::uint64_t seed = 0;
   bool quiet = false;
-  app.add_option("scene", scene_arg, "scene JSON file, or - for standard input (a scene JSON or "
-                                     "a part list: one mesh path per line, or id<TAB>path)")
+  app.add_option("scene", scene_arg,
+                 "scene JSON file, or - for standard input (a scene JSON or "
+                 "a part list: one mesh path per line, or id<TAB>path)")
       ->required();
   app.add_option("--tolerance", tolerance,
                  "depth at or below which an interference is a discretization false positive "
                  "(scene units; overrides the scene)");
-  app.add_option("--units", units_arg, "length unit of the scene and the report: mm, cm, m, in, ft");
-  app.add_option("--method", method_arg, "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
+  app.add_option("--units", units_arg,
+                 "length unit of the scene and the report: mm, cm, m, in, ft");
+  app.add_option("--method", method_arg,
+                 "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
   app.add_option("--seed", seed, "random seed of the stochastic methods (default 1)");
-  app.add_option("-o,--output", output, "write the report to this file (atomically) instead of stdout");
-  app.add_option("--format", format, "report format: json (one document) or jsonl (a line per pair as it finishes, then a summary)")
+  app.add_option("-o,--output", output,
+                 "write the report to this file (atomically) instead of stdout");
+  app.add_option("--format", format,
+                 "report format: json (one document) or jsonl (a line per pair as it finishes, "
+                 "then a summary)")
       ->check(CLI::IsMember({"json", "jsonl"}));
-  app.add_option("-j,--jobs", jobs, "worker processes (default: all cores)")->check(CLI::Range(1, 4096));
-  app.add_option("--pair-timeout", pair_timeout, "seconds one pair may take before its worker is killed and the pair reported as an error (default: none)")
+  app.add_option("-j,--jobs", jobs, "worker processes (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  app.add_option("--pair-timeout", pair_timeout,
+                 "seconds one pair may take before its worker is killed and the pair reported as "
+                 "an error (default: none)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("-q,--quiet", quiet, "no progress and no summary line on stderr");
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
@@ -69,7 +79,8 @@ int main(int argc, char** argv) {
     std::optional<std::string> units;
     if (!units_arg.empty()) {
       if (!pd::unit_in_mm(units_arg))
-        throw pd::SceneError("--units: unknown unit \"" + units_arg + "\" (use " + pd::kUnitNames + ")");
+        throw pd::SceneError("--units: unknown unit \"" + units_arg + "\" (use " + pd::kUnitNames +
+                             ")");
       units = units_arg;
     }
     if (scene_arg == "-") {
@@ -78,14 +89,19 @@ int main(int argc, char** argv) {
     } else {
       scene = pd::load_scene_file(scene_arg, units);
     }
-    if (tolerance > 0) scene.tolerance = tolerance;
-    else if (app.count("--tolerance")) throw pd::SceneError("--tolerance: must be > 0");
+    if (tolerance > 0)
+      scene.tolerance = tolerance;
+    else if (app.count("--tolerance"))
+      throw pd::SceneError("--tolerance: must be > 0");
     if (!scene.tolerance)
-      throw pd::SceneError(scene.path + ": no tolerance: give \"tolerance\" in the scene or --tolerance");
+      throw pd::SceneError(scene.path +
+                           ": no tolerance: give \"tolerance\" in the scene or --tolerance");
     scene.solver.apply(solver);
     if (!method_arg.empty()) {
       const auto m = pd::parse_method(method_arg);
-      if (!m) throw pd::SceneError("--method: unknown method \"" + method_arg + "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
+      if (!m)
+        throw pd::SceneError("--method: unknown method \"" + method_arg +
+                             "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
       solver.method = *m;
     }
     if (app.count("--seed")) solver.seed = seed;
@@ -122,15 +138,18 @@ int main(int argc, char** argv) {
     text = pd::report_json(ctx, result).dump(2) + "\n";
   }
   try {
-    if (output.empty()) std::cout << text << std::flush;
-    else pd::write_file_atomically(output, text);
+    if (output.empty())
+      std::cout << text << std::flush;
+    else
+      pd::write_file_atomically(output, text);
   } catch (const std::exception& e) {
     std::cerr << "pdcheck: error: " << e.what() << "\n";
     return kExitUsage;
   }
   for (const auto& p : result.parts) {
     if (!quiet)
-      for (const auto& w : p.warnings) std::cerr << "pdcheck: warning: part \"" << p.id << "\": " << w << "\n";
+      for (const auto& w : p.warnings)
+        std::cerr << "pdcheck: warning: part \"" << p.id << "\": " << w << "\n";
     if (p.error) std::cerr << "pdcheck: error: part \"" << p.id << "\": " << *p.error << "\n";
   }
   if (!quiet) std::cerr << pd::summary_line(summary, result.seconds) << "\n";

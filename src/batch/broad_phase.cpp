@@ -21,7 +21,8 @@ std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxe
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return boxes[a].lo[axis] < boxes[b].lo[axis] || (boxes[a].lo[axis] == boxes[b].lo[axis] && a < b);
+    return boxes[a].lo[axis] < boxes[b].lo[axis] ||
+           (boxes[a].lo[axis] == boxes[b].lo[axis] && a < b);
   });
   std::vector<int> active;  // boxes whose interval may still reach the sweep line
   for (int i : order) {

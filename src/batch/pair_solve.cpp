@@ -9,10 +9,14 @@ namespace pd {
 
 const char* status_name(Status s) {
   switch (s) {
-    case Status::kSeparated: return "separated";
-    case Status::kFalsePositive: return "false_positive";
-    case Status::kInterference: return "interference";
-    case Status::kError: return "error";
+    case Status::kSeparated:
+      return "separated";
+    case Status::kFalsePositive:
+      return "false_positive";
+    case Status::kInterference:
+      return "interference";
+    case Status::kError:
+      return "error";
   }
   return "error";
 }
@@ -46,7 +50,8 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
   r.method = method_name(s.method);
   if (a.error || b.error) {
     r.status = Status::kError;
-    r.error = "part \"" + (a.error ? a.id : b.id) + "\" could not be loaded: " + (a.error ? *a.error : *b.error);
+    r.error = "part \"" + (a.error ? a.id : b.id) +
+              "\" could not be loaded: " + (a.error ? *a.error : *b.error);
     return r;
   }
   try {
@@ -76,7 +81,8 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     r.status = Status::kError;
     r.error = e.what();
   }
-  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
 

@@ -83,7 +83,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     }
     // A part that failed to load is reported with its reason in the part list
     // (and the exit code); its pairs cannot be formed without geometry.
-    for (const auto& [i, j] : overlapping_boxes(boxes, 0.0)) pairs.emplace_back(usable[i], usable[j]);
+    for (const auto& [i, j] : overlapping_boxes(boxes, 0.0))
+      pairs.emplace_back(usable[i], usable[j]);
     out.culled = out.all_pairs - static_cast<long>(pairs.size());
   }
 
@@ -95,7 +96,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   auto cost = [&](size_t k) {
     return parts[pairs[k].first].hull_vertex_count() * parts[pairs[k].second].hull_vertex_count();
   };
-  std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return cost(x) > cost(y); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t x, size_t y) { return cost(x) > cost(y); });
 
   Progress progress(pairs.size(), options.quiet);
   std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use

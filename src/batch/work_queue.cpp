@@ -91,8 +91,10 @@ std::string reap(Worker& w, bool kill_it) {
   int status = 0;
   std::string why = "worker exited";
   if (waitpid(w.pid, &status, 0) == w.pid) {
-    if (WIFSIGNALED(status)) why = std::string("worker crashed (") + strsignal(WTERMSIG(status)) + ")";
-    else if (WIFEXITED(status)) why = "worker exited with code " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status))
+      why = std::string("worker crashed (") + strsignal(WTERMSIG(status)) + ")";
+    else if (WIFEXITED(status))
+      why = "worker exited with code " + std::to_string(WEXITSTATUS(status));
   }
   w = Worker{};
   return why;
@@ -141,8 +143,8 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
       fds.push_back({workers[k].from, POLLIN, 0});
       who.push_back(k);
       if (options.task_timeout > 0) {
-        const double left = options.task_timeout -
-                            std::chrono::duration<double>(now - workers[k].started).count();
+        const double left =
+            options.task_timeout - std::chrono::duration<double>(now - workers[k].started).count();
         const int ms = std::max(0, static_cast<int>(left * 1000.0) + 1);
         wait_ms = wait_ms < 0 ? ms : std::min(wait_ms, ms);
       }

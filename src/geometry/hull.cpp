@@ -17,8 +17,8 @@ QhullSession::QhullSession(int dim, std::vector<double> coords, const char* opti
   FILE* err = open_memstream(&buffer, &size);  // qhull reports errors as text
   qh_zero(&qh_, err);
   const int n = static_cast<int>(coords_.size()) / dim;
-  exit_code_ = qh_new_qhull(&qh_, dim, n, coords_.data(), False, const_cast<char*>(options),
-                            nullptr, err);
+  exit_code_ =
+      qh_new_qhull(&qh_, dim, n, coords_.data(), False, const_cast<char*>(options), nullptr, err);
   fclose(err);
   if (buffer) {
     if (exit_code_ != 0) error_.assign(buffer, size);
@@ -44,7 +44,9 @@ std::vector<int> hull_vertex_ids(QhullSession& s) {
   qhT* qh = s.qh();
   std::vector<int> ids;
   vertexT* vertex;
-  FORALLvertices { ids.push_back(qh_pointid(qh, vertex->point)); }
+  FORALLvertices {
+    ids.push_back(qh_pointid(qh, vertex->point));
+  }
   std::sort(ids.begin(), ids.end());
   return ids;
 }
@@ -76,17 +78,22 @@ Hull convex_hull(const Points& pts) {
   }
   const double size = std::max(extent[2], 1e-300);
   int dim = 3;
-  if (extent[2] <= tol::kFlat) dim = 0;
-  else if (extent[1] <= tol::kFlat * size) dim = 1;
-  else if (extent[0] <= tol::kFlat * size) dim = 2;
+  if (extent[2] <= tol::kFlat)
+    dim = 0;
+  else if (extent[1] <= tol::kFlat * size)
+    dim = 1;
+  else if (extent[0] <= tol::kFlat * size)
+    dim = 2;
 
   if (dim == 3) {
     QhullSession s(3, interleave(c, Eigen::Matrix3d::Identity()), "qhull");
     if (s.ok()) {
       h.vertices = select(pts, hull_vertex_ids(s));
       h.dimension = 3;
-      if (h.vertices.cols() < 4) dim = 2;  // cannot happen for a solid hull; be safe
-      else return h;
+      if (h.vertices.cols() < 4)
+        dim = 2;  // cannot happen for a solid hull; be safe
+      else
+        return h;
     } else {
       // Nearly flat beyond qhull's precision: fall back to the 2-D hull of the
       // projection, which keeps every extreme point's original coordinates.

@@ -1,8 +1,8 @@
 // Convex hulls with qhull's reentrant library (libqhull_r).
 #pragma once
 
-#include <string>
 #include <array>
+#include <string>
 #include <vector>
 
 #include "geometry/types.h"

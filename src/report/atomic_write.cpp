@@ -17,7 +17,8 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   if (dir.empty()) dir = ".";
   std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
   const int fd = mkstemp(tmpl.data());
-  if (fd < 0) throw std::runtime_error(path + ": cannot create a temporary file: " + std::strerror(errno));
+  if (fd < 0)
+    throw std::runtime_error(path + ": cannot create a temporary file: " + std::strerror(errno));
   size_t off = 0;
   bool ok = true;
   while (ok && off < content.size()) {

@@ -20,23 +20,31 @@ Summary summarize(const RunResult& r) {
   s.candidates = static_cast<long>(r.pairs.size());
   for (const PairResult& p : r.pairs) {
     switch (p.status) {
-      case Status::kSeparated: ++s.separated; break;
-      case Status::kFalsePositive: ++s.false_positive; break;
-      case Status::kInterference: ++s.interference; break;
-      case Status::kError: ++s.error; break;
+      case Status::kSeparated:
+        ++s.separated;
+        break;
+      case Status::kFalsePositive:
+        ++s.false_positive;
+        break;
+      case Status::kInterference:
+        ++s.interference;
+        break;
+      case Status::kError:
+        ++s.error;
+        break;
     }
   }
   return s;
 }
 
 json pair_json(const PairResult& r, const std::vector<Part>& parts) {
-  json j = {{"a", parts[r.a].id},  {"b", parts[r.b].id},
-            {"status", status_name(r.status)}};
+  json j = {{"a", parts[r.a].id}, {"b", parts[r.b].id}, {"status", status_name(r.status)}};
   if (r.status == Status::kError) {
     j["error"] = r.error;
   } else {
     j["depth"] = r.depth;
-    j["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0, r.direction.z() + 0.0};  // no -0
+    j["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0,
+                      r.direction.z() + 0.0};  // no -0
     j["margin"] = r.margin;
     if (r.distance) j["distance"] = *r.distance;
   }
@@ -82,8 +90,11 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
   const SolverSettings& s = ctx.solver;
   json method = {{"name", method_name(s.method)}, {"seed", s.seed}};
   if (s.method == Method::kMlsl)
-    method.update({{"samples", s.samples}, {"reduced", s.reduced}, {"sigma", s.sigma},
-                   {"tau", s.tau}, {"link_scale", s.link_scale}});
+    method.update({{"samples", s.samples},
+                   {"reduced", s.reduced},
+                   {"sigma", s.sigma},
+                   {"tau", s.tau},
+                   {"link_scale", s.link_scale}});
   if (s.method == Method::kMlslPaper)
     method.update({{"N", s.paper_n}, {"M", s.paper_m}, {"sigma", s.sigma}, {"tau", s.tau}});
   if (s.method == Method::kGrid) method["grid"] = s.grid;
@@ -105,12 +116,13 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
 
 std::string summary_line(const Summary& s, double seconds) {
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "pdcheck: %ld parts, %ld candidate pairs (%ld culled): %ld interference, %ld "
-                "false_positive, %ld separated, %ld error%s in %.2f s",
-                s.parts, s.candidates, s.culled, s.interference, s.false_positive, s.separated,
-                s.error, s.part_errors ? (", " + std::to_string(s.part_errors) + " part(s) unusable").c_str() : "",
-                seconds);
+  std::snprintf(
+      buf, sizeof buf,
+      "pdcheck: %ld parts, %ld candidate pairs (%ld culled): %ld interference, %ld "
+      "false_positive, %ld separated, %ld error%s in %.2f s",
+      s.parts, s.candidates, s.culled, s.interference, s.false_positive, s.separated, s.error,
+      s.part_errors ? (", " + std::to_string(s.part_errors) + " part(s) unusable").c_str() : "",
+      seconds);
   return buf;
 }
 

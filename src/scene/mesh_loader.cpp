@@ -43,7 +43,8 @@ std::vector<Points> load_mesh_vertices(const std::string& path, bool split_insta
   const aiScene* scene = importer.ReadFile(path, 0);
   if (!scene || !scene->mRootNode) {
     std::string why = importer.GetErrorString();
-    throw MeshError("cannot load mesh file " + path + ": " + (why.empty() ? "unknown format" : why));
+    throw MeshError("cannot load mesh file " + path + ": " +
+                    (why.empty() ? "unknown format" : why));
   }
   std::vector<Points> pieces;
   collect(scene, scene->mRootNode, Mat4::Identity(), pieces);

@@ -24,7 +24,8 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
     }
     p.where = path + ": line " + std::to_string(n) + " (\"" + p.id + "\")";
     if (p.id.empty() || p.mesh->empty())
-      throw SceneError(path + ": line " + std::to_string(n) + ": expected \"path\" or \"id<TAB>path\"");
+      throw SceneError(path + ": line " + std::to_string(n) +
+                       ": expected \"path\" or \"id<TAB>path\"");
     s.parts.push_back(std::move(p));
   }
   validate_scene(s);

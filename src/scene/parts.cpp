@@ -36,8 +36,10 @@ Part build_part(const PartSpec& spec) {
   part.source = spec.mesh ? *spec.mesh : "inline";
   try {
     std::vector<Points> sets;
-    if (spec.mesh) sets = load_mesh_vertices(*spec.mesh, spec.pieces == Pieces::kMeshes);
-    else sets.push_back(*spec.vertices);
+    if (spec.mesh)
+      sets = load_mesh_vertices(*spec.mesh, spec.pieces == Pieces::kMeshes);
+    else
+      sets.push_back(*spec.vertices);
     bool first = true;
     for (size_t k = 0; k < sets.size(); ++k) {
       part.vertex_count += sets[k].cols();

@@ -24,10 +24,10 @@ enum class Pieces { kHull, kMeshes };
 
 struct PartSpec {
   std::string id;
-  std::string where;                 ///< "scene.json: parts[3]", for messages
-  std::optional<std::string> mesh;   ///< a path usable from the working directory
-  std::optional<Points> vertices;    ///< inline vertices, in the part's units
-  double to_scene_units = 1.0;       ///< part unit / scene unit
+  std::string where;                ///< "scene.json: parts[3]", for messages
+  std::optional<std::string> mesh;  ///< a path usable from the working directory
+  std::optional<Points> vertices;   ///< inline vertices, in the part's units
+  double to_scene_units = 1.0;      ///< part unit / scene unit
   Mat4 transform = Mat4::Identity();
   Pieces pieces = Pieces::kHull;
 };

@@ -23,7 +23,9 @@ struct Ctx {
   }
 };
 
-const char* type_name(const json& j) { return j.type_name(); }
+const char* type_name(const json& j) {
+  return j.type_name();
+}
 
 void only_keys(const Ctx& c, const json& obj, const std::string& at,
                const std::set<std::string>& allowed) {
@@ -58,12 +60,14 @@ Mat4 transform(const Ctx& c, const json& j, const std::string& at) {
   std::vector<double> v;
   if (!j.is_array()) c.fail(at, "expected a 4x4 array or a list of 16 numbers");
   if (j.size() == 16) {
-    for (size_t k = 0; k < 16; ++k) v.push_back(number(c, j[k], at + "[" + std::to_string(k) + "]"));
+    for (size_t k = 0; k < 16; ++k)
+      v.push_back(number(c, j[k], at + "[" + std::to_string(k) + "]"));
   } else if (j.size() == 4) {
     for (size_t r = 0; r < 4; ++r) {
       const std::string ar = at + "[" + std::to_string(r) + "]";
       if (!j[r].is_array() || j[r].size() != 4) c.fail(ar, "expected a row of 4 numbers");
-      for (size_t k = 0; k < 4; ++k) v.push_back(number(c, j[r][k], ar + "[" + std::to_string(k) + "]"));
+      for (size_t k = 0; k < 4; ++k)
+        v.push_back(number(c, j[r][k], ar + "[" + std::to_string(k) + "]"));
     }
   } else {
     c.fail(at, "expected a 4x4 array or a list of 16 numbers, got " + std::to_string(j.size()) +
@@ -105,7 +109,8 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
   if (has_mesh == has_vertices) c.fail(at, "give exactly one of \"mesh\" and \"vertices\"");
   if (has_mesh) {
     const std::filesystem::path m = string(c, j["mesh"], at + ".mesh");
-    p.mesh = (m.is_absolute() || base_dir.empty() ? m : std::filesystem::path(base_dir) / m).string();
+    p.mesh =
+        (m.is_absolute() || base_dir.empty() ? m : std::filesystem::path(base_dir) / m).string();
   } else {
     p.vertices = vertex_list(c, j["vertices"], at + ".vertices");
   }
@@ -115,9 +120,12 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
   if (j.contains("transform")) p.transform = transform(c, j["transform"], at + ".transform");
   if (j.contains("pieces")) {
     const std::string v = string(c, j["pieces"], at + ".pieces");
-    if (v == "hull") p.pieces = Pieces::kHull;
-    else if (v == "meshes") p.pieces = Pieces::kMeshes;
-    else c.fail(at + ".pieces", "expected \"hull\" or \"meshes\", got \"" + v + "\"");
+    if (v == "hull")
+      p.pieces = Pieces::kHull;
+    else if (v == "meshes")
+      p.pieces = Pieces::kMeshes;
+    else
+      c.fail(at + ".pieces", "expected \"hull\" or \"meshes\", got \"" + v + "\"");
     if (v == "meshes" && !has_mesh) c.fail(at + ".pieces", "\"meshes\" needs a mesh file");
   }
   return p;
@@ -131,12 +139,15 @@ SolverOverrides solver(const Ctx& c, const json& j) {
   if (j.contains("method")) {
     const std::string m = string(c, j["method"], at + ".method");
     o.method = parse_method(m);
-    if (!o.method) c.fail(at + ".method", "unknown method \"" + m + "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
+    if (!o.method)
+      c.fail(at + ".method",
+             "unknown method \"" + m + "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
   }
   auto positive_int = [&](const char* key) -> std::optional<int> {
     if (!j.contains(key)) return std::nullopt;
     const std::string ak = at + "." + key;
-    if (!j[key].is_number_integer() || j[key].get<long long>() < 1 || j[key].get<long long>() > 100000)
+    if (!j[key].is_number_integer() || j[key].get<long long>() < 1 ||
+        j[key].get<long long>() > 100000)
       c.fail(ak, "expected an integer from 1 to 100000");
     return j[key].get<int>();
   };
@@ -157,8 +168,10 @@ SolverOverrides solver(const Ctx& c, const json& j) {
 std::string line_column(const std::string& text, size_t byte) {
   size_t line = 1, col = 1;
   for (size_t k = 0; k + 1 < byte && k < text.size(); ++k) {
-    if (text[k] == '\n') ++line, col = 1;
-    else ++col;
+    if (text[k] == '\n')
+      ++line, col = 1;
+    else
+      ++col;
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(col);
 }
@@ -187,7 +200,8 @@ SceneSpec parse_scene_json(const std::string& text, const std::string& path,
                      (pos == std::string::npos ? msg : msg.substr(pos)));
   }
   if (!doc.is_object()) c.fail("", "a scene is a JSON object");
-  only_keys(c, doc, "", {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks"});
+  only_keys(c, doc, "",
+            {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks"});
   SceneSpec s;
   s.path = path;
   if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))
@@ -240,7 +254,8 @@ void validate_scene(const SceneSpec& s) {
       const auto& [a, b] = (*s.pairs)[k];
       for (const auto& id : {a, b})
         if (!ids.count(id))
-          throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: unknown part id \"" + id + "\"");
+          throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: unknown part id \"" + id +
+                           "\"");
       if (a == b)
         throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: a part paired with itself");
     }

@@ -28,10 +28,13 @@ DepthSolution gs_local_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, int
   std::string last_failure;
   for (int b = 0; b < k; ++b) {
     for (int a = 0; a < k; ++a) {
-      const Vec3 v0 = direction_from_angles((a + 0.5) * 2 * M_PI / k, -M_PI / 2 + (b + 0.5) * M_PI / k);
+      const Vec3 v0 =
+          direction_from_angles((a + 0.5) * 2 * M_PI / k, -M_PI / 2 + (b + 0.5) * M_PI / k);
       const LocalResult r = paper_local_search(pr, ipopt, v0, s.stats);
-      if (r.converged) any = true;
-      else last_failure = r.status;
+      if (r.converged)
+        any = true;
+      else
+        last_failure = r.status;
       if (r.gap < best) best = r.gap, s.direction = r.v;
     }
   }

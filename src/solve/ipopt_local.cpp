@@ -41,8 +41,7 @@ class DepthTnlp : public Ipopt::TNLP {
     return true;
   }
 
-  bool get_bounds_info(Index n, Number* xl, Number* xu, Index m, Number* gl,
-                       Number* gu) override {
+  bool get_bounds_info(Index n, Number* xl, Number* xu, Index m, Number* gl, Number* gu) override {
     for (Index k = 0; k < n; ++k) {
       xl[k] = -2e19;
       xu[k] = 2e19;
@@ -144,17 +143,28 @@ class DepthTnlp : public Ipopt::TNLP {
 
 const char* status_name(Ipopt::ApplicationReturnStatus s) {
   switch (s) {
-    case Ipopt::Solve_Succeeded: return "solve_succeeded";
-    case Ipopt::Solved_To_Acceptable_Level: return "solved_to_acceptable_level";
-    case Ipopt::Infeasible_Problem_Detected: return "infeasible_problem_detected";
-    case Ipopt::Search_Direction_Becomes_Too_Small: return "search_direction_too_small";
-    case Ipopt::Diverging_Iterates: return "diverging_iterates";
-    case Ipopt::Maximum_Iterations_Exceeded: return "maximum_iterations_exceeded";
-    case Ipopt::Restoration_Failed: return "restoration_failed";
-    case Ipopt::Error_In_Step_Computation: return "error_in_step_computation";
-    case Ipopt::Maximum_CpuTime_Exceeded: return "maximum_cputime_exceeded";
-    case Ipopt::Invalid_Number_Detected: return "invalid_number_detected";
-    default: return "ipopt_error";
+    case Ipopt::Solve_Succeeded:
+      return "solve_succeeded";
+    case Ipopt::Solved_To_Acceptable_Level:
+      return "solved_to_acceptable_level";
+    case Ipopt::Infeasible_Problem_Detected:
+      return "infeasible_problem_detected";
+    case Ipopt::Search_Direction_Becomes_Too_Small:
+      return "search_direction_too_small";
+    case Ipopt::Diverging_Iterates:
+      return "diverging_iterates";
+    case Ipopt::Maximum_Iterations_Exceeded:
+      return "maximum_iterations_exceeded";
+    case Ipopt::Restoration_Failed:
+      return "restoration_failed";
+    case Ipopt::Error_In_Step_Computation:
+      return "error_in_step_computation";
+    case Ipopt::Maximum_CpuTime_Exceeded:
+      return "maximum_cputime_exceeded";
+    case Ipopt::Invalid_Number_Detected:
+      return "invalid_number_detected";
+    default:
+      return "ipopt_error";
   }
 }
 

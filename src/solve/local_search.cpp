@@ -88,8 +88,8 @@ LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v
   if (!o.converged) {
     // Retry once on the full problem from the paper's cold start.
     const auto all_p = all_indices(pr.p().cols()), all_q = all_indices(pr.q().cols());
-    o = ipopt.solve(pr.p(), pr.q(), all_p, all_q,
-                    IpoptLocalSolver::paper_start(pr.p(), pr.q(), v0), false);
+    o = ipopt.solve(pr.p(), pr.q(), all_p, all_q, IpoptLocalSolver::paper_start(pr.p(), pr.q(), v0),
+                    false);
     count(o, stats);
     if (!o.converged) return {o.v, pr.gap(o.v), false, o.status};
   }

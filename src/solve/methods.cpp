@@ -20,11 +20,16 @@ std::optional<Method> parse_method(const std::string& name) {
 
 std::string method_name(Method m) {
   switch (m) {
-    case Method::kMlsl: return "mlsl";
-    case Method::kMlslPaper: return "mlsl-paper";
-    case Method::kGsLocal: return "gs-local";
-    case Method::kGrid: return "grid";
-    case Method::kExact: return "exact";
+    case Method::kMlsl:
+      return "mlsl";
+    case Method::kMlslPaper:
+      return "mlsl-paper";
+    case Method::kGsLocal:
+      return "gs-local";
+    case Method::kGrid:
+      return "grid";
+    case Method::kExact:
+      return "exact";
   }
   return "?";
 }
@@ -34,11 +39,21 @@ DepthSolution solve_convex_pair(const Points& a, const Points& b, const SolverSe
   const PairProblem pr(a, b);
   DepthSolution sol;
   switch (s.method) {
-    case Method::kExact: sol = exact_depth(pr.p(), pr.q()); break;
-    case Method::kMlsl: sol = mlsl_depth(pr, ipopt, s); break;
-    case Method::kMlslPaper: sol = mlsl_paper_depth(pr, ipopt, s); break;
-    case Method::kGsLocal: sol = gs_local_depth(pr, ipopt, s.gs_local); break;
-    case Method::kGrid: sol = grid_depth(pr, s.grid); break;
+    case Method::kExact:
+      sol = exact_depth(pr.p(), pr.q());
+      break;
+    case Method::kMlsl:
+      sol = mlsl_depth(pr, ipopt, s);
+      break;
+    case Method::kMlslPaper:
+      sol = mlsl_paper_depth(pr, ipopt, s);
+      break;
+    case Method::kGsLocal:
+      sol = gs_local_depth(pr, ipopt, s.gs_local);
+      break;
+    case Method::kGrid:
+      sol = grid_depth(pr, s.grid);
+      break;
   }
   if (!sol.fallback.empty() || !std::isfinite(sol.depth) || !sol.direction.allFinite()) {
     // Never a "clean" answer from a failed solve: the exact reference decides.

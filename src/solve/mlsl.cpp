@@ -91,7 +91,8 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
     const long kn = static_cast<long>(x.size());
     // Critical distance on the sphere (area 4π, dimension 2), as an angle.
     const double rk = std::sqrt(4.0 * s.sigma * std::log(double(kn)) / double(kn));
-    const double cos_rk = std::cos(std::min(rk * s.link_scale, M_PI));  // angle <= r_k  <=>  dot >= cos r_k
+    const double cos_rk =
+        std::cos(std::min(rk * s.link_scale, M_PI));  // angle <= r_k  <=>  dot >= cos r_k
     const long reduced = std::max(1L, std::lround(s.reduced * kn));
     std::vector<long> order(kn);
     std::iota(order.begin(), order.end(), 0L);
@@ -103,8 +104,7 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
       if (started[i]) continue;
       // Single linkage: no start next to a better sample or a known optimum.
       bool linked = false;
-      for (long j = 0; j < kn && !linked; ++j)
-        linked = f[j] < f[i] && x[i].dot(x[j]) >= cos_rk;
+      for (long j = 0; j < kn && !linked; ++j) linked = f[j] < f[i] && x[i].dot(x[j]) >= cos_rk;
       for (size_t o = 0; o < optima.size() && !linked; ++o)
         linked = x[i].dot(optima[o].v) >= cos_rk;
       if (linked) continue;
@@ -139,7 +139,8 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
     if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
   }
   DepthSolution sol = finish(pr, optima, best_sample, stats);
-  if (optima.empty() && best_sample.gap >= 0) sol.fallback = "no local solve converged (" + last_failure + ")";
+  if (optima.empty() && best_sample.gap >= 0)
+    sol.fallback = "no local solve converged (" + last_failure + ")";
   return sol;
 }
 
@@ -162,8 +163,9 @@ DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
       break;  // caps far above the paper's typical run: it always stops
     stats.mlsl_iterations = k;
     const double kn = double(k) * N;
-    const double rk = std::pow(std::tgamma(1.0 + n / 2.0) * mu_s * s.sigma * std::log(kn) / kn,
-                               1.0 / n) / std::sqrt(M_PI);
+    const double rk =
+        std::pow(std::tgamma(1.0 + n / 2.0) * mu_s * s.sigma * std::log(kn) / kn, 1.0 / n) /
+        std::sqrt(M_PI);
     // Step 5: N uniform points of the box, pairwise farther apart than r_k. Early
     // on that is impossible (10 disks of radius r_1/2 exceed the box), so each
     // point takes the best-spread of up to 100 candidates.

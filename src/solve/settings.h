@@ -17,12 +17,13 @@ struct SolverSettings {
   std::uint64_t seed = 1;  ///< same input + same seed = same depths, bit for bit
 
   // mlsl: multi-level single linkage on the unit sphere (docs/solver.md).
-  int samples = 400;        ///< N, uniform samples per iteration
-  double reduced = 0.05;    ///< γ, fraction of all samples kept as the reduced sample
-  double sigma = 4.01;      ///< σ > 4 in the critical distance r_k
-  double tau = 0.9;         ///< stop when the expected fraction of optima found reaches τ
+  int samples = 400;      ///< N, uniform samples per iteration
+  double reduced = 0.05;  ///< γ, fraction of all samples kept as the reduced sample
+  double sigma = 4.01;    ///< σ > 4 in the critical distance r_k
+  double tau = 0.9;       ///< stop when the expected fraction of optima found reaches τ
   int min_iterations = 2;
-  double link_scale = 0.3;  ///< multiplies r_k in the start rule (1 = Rinnooy Kan & Timmer; docs/solver.md)
+  double link_scale =
+      0.3;  ///< multiplies r_k in the start rule (1 = Rinnooy Kan & Timmer; docs/solver.md)
   int max_iterations = 50;  ///< hard caps: MLSL always stops
   int max_local_solves = 60;
   double max_seconds = 30.0;
@@ -31,8 +32,8 @@ struct SolverSettings {
   int paper_n = 10;
   int paper_m = 3;
 
-  int grid = 40;      ///< grid: GS-k, 2k(k+1) directions, k per π in each angle
-  int gs_local = 3;   ///< gs-local: a k×k grid of Ipopt starts (the paper's GS-SQP)
+  int grid = 40;     ///< grid: GS-k, 2k(k+1) directions, k per π in each angle
+  int gs_local = 3;  ///< gs-local: a k×k grid of Ipopt starts (the paper's GS-SQP)
 };
 
 }  // namespace pd

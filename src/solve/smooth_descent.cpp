@@ -63,8 +63,10 @@ DescentOutcome smooth_descent(const Points& p, const Points& q, const Vec3& star
       Eigen::Matrix2d h = b.transpose() * f.hess * b - v.dot(f.grad) * Eigen::Matrix2d::Identity();
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(h);
       Eigen::Vector2d d;
-      if (eig.eigenvalues().minCoeff() > 1e-12) d = -h.ldlt().solve(g);
-      else d = -g / std::max(eig.eigenvalues().cwiseAbs().maxCoeff(), 1.0);
+      if (eig.eigenvalues().minCoeff() > 1e-12)
+        d = -h.ldlt().solve(g);
+      else
+        d = -g / std::max(eig.eigenvalues().cwiseAbs().maxCoeff(), 1.0);
       if (d.norm() > 0.5) d *= 0.5 / d.norm();  // stay within a chart of the sphere
       // Backtracking (Armijo) along the retraction v ← normalise(v + B d).
       double step = 1.0;
