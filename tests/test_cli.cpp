@@ -167,6 +167,7 @@ TEST(Cli, UnreadableMeshesDoNotLoseTheBatch) {
     }
   EXPECT_NE(r.err.find("part \"gone\""), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no/such/file.stl"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("nan.obj: non-finite"), std::string::npos) << r.err;
 }
 
 TEST(Cli, PartListOnStdinWithJsonLines) {

@@ -1,6 +1,7 @@
 #include "scene/parts.h"
 
 #include <map>
+#include <new>
 #include <sstream>
 
 #include "scene/mesh_loader.h"
@@ -51,9 +52,15 @@ Part build_part(const PartSpec& spec) {
       first = false;
       part.pieces.push_back(std::move(h));
     }
+  } catch (const MeshError& e) {
+    part.pieces.clear();
+    part.error = e.what();  // names the file already
   } catch (const std::exception& e) {
     part.pieces.clear();
-    part.error = e.what();
+    part.error =
+        (spec.mesh ? "mesh file " + *spec.mesh + ": " : std::string()) +
+        (dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory while loading (corrupt file?)"
+                                                 : e.what());
   }
   return part;
 }
