@@ -72,8 +72,11 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
         }
       }
     }
-    const double size = a.box.merged(b.box).hi.cwiseAbs().maxCoeff() +
-                        (a.box.merged(b.box).hi - a.box.merged(b.box).lo).norm();
+    // Rounding scale of the pair: input coordinates were rounded at their absolute
+    // magnitude, so the box's distance from the origin counts as well as its size.
+    const Aabb box = a.box.merged(b.box);
+    const double size =
+        box.hi.cwiseAbs().cwiseMax(box.lo.cwiseAbs()).maxCoeff() + (box.hi - box.lo).norm();
     r.status = classify(r.depth, tolerance, size);
     r.margin = tolerance - r.depth;
     if (r.status != Status::kSeparated) r.distance.reset();

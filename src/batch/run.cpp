@@ -93,9 +93,9 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   // idles at the end on a long tail.
   std::vector<size_t> order(pairs.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  auto cost = [&](size_t k) {
-    return parts[pairs[k].first].hull_vertex_count() * parts[pairs[k].second].hull_vertex_count();
-  };
+  std::vector<long> hull_size(n);
+  for (int k = 0; k < n; ++k) hull_size[k] = parts[k].hull_vertex_count();
+  auto cost = [&](size_t k) { return hull_size[pairs[k].first] * hull_size[pairs[k].second]; };
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t x, size_t y) { return cost(x) > cost(y); });
 

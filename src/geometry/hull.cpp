@@ -90,16 +90,12 @@ Hull convex_hull(const Points& pts) {
     if (s.ok()) {
       h.vertices = select(pts, hull_vertex_ids(s));
       h.dimension = 3;
-      if (h.vertices.cols() < 4)
-        dim = 2;  // cannot happen for a solid hull; be safe
-      else
-        return h;
-    } else {
-      // Nearly flat beyond qhull's precision: fall back to the 2-D hull of the
-      // projection, which keeps every extreme point's original coordinates.
-      h.warnings.push_back("nearly flat point set; hulled in its plane");
-      dim = 2;
+      return h;
     }
+    // Nearly flat beyond qhull's precision: fall back to the 2-D hull of the
+    // projection, which keeps every extreme point's original coordinates.
+    h.warnings.push_back("nearly flat point set; hulled in its plane");
+    dim = 2;
   }
   h.dimension = dim;
   if (dim == 2) {

@@ -3,26 +3,14 @@
 #include <Eigen/SVD>
 #include <vector>
 
+#include "solve/objective.h"
 #include "tolerances.h"
 
 namespace pd {
 
-namespace {
-
-std::vector<int> active(const Eigen::RowVectorXd& s, double extreme, double tol, bool top) {
-  std::vector<int> ids;
-  for (Eigen::Index k = 0; k < s.size(); ++k)
-    if (top ? s[k] >= extreme - tol : s[k] <= extreme + tol) ids.push_back(static_cast<int>(k));
-  return ids;
-}
-
-}  // namespace
-
 std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& v) {
-  const Eigen::RowVectorXd sp = v.transpose() * p, sq = v.transpose() * q;
-  const double hp = sp.maxCoeff(), hq = sq.minCoeff();
   for (double t : {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight}) {
-    const std::vector<int> a = active(sp, hp, t, true), b = active(sq, hq, t, false);
+    const std::vector<int> a = near_extreme(p, v, t, true), b = near_extreme(q, v, t, false);
     if (a.size() + b.size() < 3) return std::nullopt;  // a vertex or an edge: no facet
     Eigen::MatrixXd edges(a.size() + b.size() - 2, 3);
     Eigen::Index r = 0;

@@ -122,15 +122,14 @@ class DepthTnlp : public Ipopt::TNLP {
     return true;
   }
 
-  void finalize_solution(Ipopt::SolverReturn status, Index, const Number* x, const Number*,
-                         const Number*, Index, const Number*, const Number*, Number,
-                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+  void finalize_solution(Ipopt::SolverReturn, Index, const Number* x, const Number*, const Number*,
+                         Index, const Number*, const Number*, Number, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
     Vec3 v(x[0], x[1], x[2]);
     const double nv = v.norm();
     outcome.v = nv > 0 && std::isfinite(nv) ? Vec3(v / nv) : start_.v;
     outcome.c = x[3];
     outcome.alpha = x[4];
-    outcome.converged = status == Ipopt::SUCCESS || status == Ipopt::STOP_AT_ACCEPTABLE_POINT;
   }
 
  private:

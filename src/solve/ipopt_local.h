@@ -34,8 +34,9 @@ class IpoptLocalSolver {
   IpoptLocalSolver(const IpoptLocalSolver&) = delete;
   IpoptLocalSolver& operator=(const IpoptLocalSolver&) = delete;
 
-  /// Solves over the vertex subsets `pi` of p and `qj` of q (all when empty
-  /// vectors are passed together with `all = true`).
+  /// Solves over the vertex subsets `pi` of p and `qj` of q (all_indices() for
+  /// the paper's full problem). `warm` starts with a small barrier: for starts
+  /// next to an optimum.
   LocalOutcome solve(const Points& p, const Points& q, const std::vector<int>& pi,
                      const std::vector<int>& qj, const LocalStart& start, bool warm);
 

@@ -16,17 +16,6 @@ void count(const LocalOutcome& o, SolveStats& stats) {
   if (!o.converged) ++stats.ipopt_failures;
 }
 
-// Vertices within `band` of the extreme support value at v: those that can be
-// active at an optimum close to v.
-std::vector<int> near_extreme(const Points& x, const Vec3& v, double band, bool top) {
-  const Eigen::RowVectorXd s = v.transpose() * x;
-  const double e = top ? s.maxCoeff() : s.minCoeff();
-  std::vector<int> ids;
-  for (Eigen::Index k = 0; k < s.size(); ++k)
-    if (top ? s[k] >= e - band : s[k] <= e + band) ids.push_back(static_cast<int>(k));
-  return ids;
-}
-
 // Adds the vertices that the reduced solution violates; returns how many.
 size_t add_violators(const Points& x, const Vec3& v, double level, bool top,
                      std::vector<int>& ids) {

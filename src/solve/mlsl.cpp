@@ -153,11 +153,10 @@ DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
   Optimum best{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
   const int n = 2, N = s.paper_n, M = std::min(s.paper_m, s.paper_n);
   const double mu_s = 2.0 * M_PI * M_PI;  // the (θ, φ) box, eq. (5)
-  int w = 0;
   double wbar = std::numeric_limits<double>::infinity();
   std::string last_failure;
 
-  for (int k = 1; w / wbar < s.tau; ++k) {
+  for (int k = 1; double(optima.size()) / wbar < s.tau; ++k) {
     if (k > s.max_iterations * 10 || stats.local_solves >= s.max_local_solves * 10 ||
         seconds_since(t0) > s.max_seconds)
       break;  // caps far above the paper's typical run: it always stops
@@ -193,11 +192,11 @@ DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
       const auto [th, ph] = pts[val[m].second];
       const LocalResult lr = paper_local_search(pr, ipopt, direction_from_angles(th, ph), stats);
       if (lr.gap < best.gap) best = {lr.v, lr.gap};
-      if (!lr.converged) {
+      if (lr.converged)
+        record(optima, lr);  // a new optimum raises w = |X*|
+      else
         last_failure = lr.status;
-      } else if (record(optima, lr) + 1 == optima.size() && int(optima.size()) > w) {
-        ++w;
-      }
+      const int w = static_cast<int>(optima.size());
       if (k * M > w + 2) wbar = expected_optima(w, long(k) * M);
     }
   }

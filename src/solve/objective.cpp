@@ -14,6 +14,15 @@ double PairProblem::gap(const Vec3& v) const {
   return (v.transpose() * p_).maxCoeff() - (v.transpose() * q_).minCoeff();
 }
 
+std::vector<int> near_extreme(const Points& x, const Vec3& v, double band, bool top) {
+  const Eigen::RowVectorXd s = v.transpose() * x;
+  const double e = top ? s.maxCoeff() : s.minCoeff();
+  std::vector<int> ids;
+  for (Eigen::Index k = 0; k < s.size(); ++k)
+    if (top ? s[k] >= e - band : s[k] <= e + band) ids.push_back(static_cast<int>(k));
+  return ids;
+}
+
 void angles_from_direction(const Vec3& v, double& theta, double& phi) {
   const double rho = std::hypot(v.x(), v.y());
   phi = std::atan2(v.z(), rho);

@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <vector>
 
 #include "geometry/frame.h"
 #include "geometry/types.h"
@@ -35,6 +36,11 @@ class PairProblem {
   Points p_, q_;
   mutable long evaluations_ = 0;
 };
+
+/// Indices of the points whose support value x·v lies within `band` of the
+/// extreme: the largest (top = true, for P) or the smallest (for Q). These are
+/// the vertices active, or able to become active, at direction v.
+std::vector<int> near_extreme(const Points& x, const Vec3& v, double band, bool top);
 
 /// Spherical coordinates of the paper, eq. (3): θ is longitude, φ latitude.
 inline Vec3 direction_from_angles(double theta, double phi) {
