@@ -36,6 +36,17 @@ inline constexpr double kSameOptimumAngle = 1e-6;
 /// is in that optimum's basin: Ipopt is not called again for it.
 inline constexpr double kSameBasinAngle = 1e-2;
 
+/// The global-minimum certificate (solve/certificate.h): a cube-sphere grid of
+/// 6·kCertificateGrid² cells (cell radius ~0.1 rad at 12) bounds the gap below
+/// per cell; the cells left open are covered by at most kCertificateCaps caps of
+/// at most kCertificateCapAngle radians, each searched exactly on a local
+/// Minkowski difference of at most kNeighbourhoodPoints points. Beyond these
+/// limits the exact hull decides (and the report says so).
+inline constexpr int kCertificateGrid = 12;
+inline constexpr double kCertificateCapAngle = 0.35;
+inline constexpr int kCertificateCaps = 8;
+inline constexpr long kNeighbourhoodPoints = 20000;
+
 /// A vertex counts as active at a direction v when its support value is within
 /// this of the extreme value; used to read the optimal facet off a local solve.
 inline constexpr double kActiveLoose = 1e-7;

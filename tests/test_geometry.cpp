@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "batch/broad_phase.h"
-#include "generators.h"
+#include "corpus/generators.h"
 #include "geometry/frame.h"
 #include "geometry/hull.h"
 

@@ -1,7 +1,7 @@
 // Accuracy against the exact reference (the hull of the Minkowski difference).
 #include <gtest/gtest.h>
 
-#include "generators.h"
+#include "corpus/generators.h"
 #include "solve/exact.h"
 #include "solve/methods.h"
 #include "solve/objective.h"

@@ -47,11 +47,11 @@ LocalResult paper_local_search(const PairProblem& pr, IpoptLocalSolver& ipopt, c
   return {o.v, pr.gap(o.v), o.converged, o.converged ? "" : o.status};
 }
 
-Vec3 descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats) {
+DescentOutcome descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats) {
   ++stats.local_solves;
   const DescentOutcome d = smooth_descent(pr.p(), pr.q(), v0);
   stats.alpha_evaluations += d.evaluations;
-  return d.v;
+  return d;
 }
 
 LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,

@@ -4,6 +4,7 @@
 #include "solve/ipopt_local.h"
 #include "solve/objective.h"
 #include "solve/result.h"
+#include "solve/smooth_descent.h"
 
 namespace pd {
 
@@ -24,7 +25,7 @@ LocalResult paper_local_search(const PairProblem& pr, IpoptLocalSolver& ipopt, c
 /// vertices that can be active there (grown until no vertex outside is
 /// violated), then the facet snap. Same optimum as the paper's search, far
 /// fewer Ipopt iterations, depth exact to rounding.
-Vec3 descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats);
+DescentOutcome descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats);
 LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,
                    SolveStats& stats);
 

@@ -6,7 +6,10 @@
 #include <limits>
 #include <numeric>
 
+#include "solve/certificate.h"
+#include "solve/exact.h"
 #include "solve/local_search.h"
+#include "solve/neighbourhood.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -22,12 +25,6 @@ double seconds_since(Clock::time_point t0) {
 struct Optimum {
   Vec3 v;
   double gap;
-};
-
-// A descent end point and the optimum its polish reached.
-struct Landing {
-  Vec3 end;
-  size_t optimum;
 };
 
 // Records a local optimum; returns its index (a new one is appended).
@@ -49,18 +46,80 @@ double expected_optima(int w, long searches) {
   return w * (searches - 1.0) / (searches - w - 2.0);
 }
 
-DepthSolution finish(const PairProblem& pr, const std::vector<Optimum>& optima,
-                     const Optimum& best_sample, SolveStats stats) {
+DepthSolution finish(const PairProblem& pr, const Optimum& best, int distinct, SolveStats stats) {
   DepthSolution s;
-  Optimum best = best_sample;
-  for (const Optimum& o : optima)
-    if (o.gap < best.gap) best = o;
   s.depth = std::max(0.0, best.gap);
   s.direction = best.v;
-  stats.distinct_optima = static_cast<int>(optima.size());
+  stats.distinct_optima = distinct;
   stats.alpha_evaluations += pr.evaluations();
   s.stats = stats;
   return s;
+}
+
+// A basin found by the descents: where they end, and a lower bound on the gap
+// at its local minimum (the smoothing overestimates the gap by <= μ·log(nm)).
+struct Basin {
+  Vec3 end;
+  double lower;
+};
+
+// One basin per distinct descent end point; the lower bound is the smallest seen.
+void add_basin(std::vector<Basin>& basins, const Vec3& end, double lower) {
+  for (Basin& b : basins) {
+    if (angle_between(b.end, end) < tol::kSameBasinAngle) {
+      if (lower < b.lower) b = {end, lower};
+      return;
+    }
+  }
+  basins.push_back({end, lower});
+}
+
+// Ipopt polishes the basins in order of their lower bounds while a bound is
+// below the best gap known: a basin whose minimum cannot beat it is skipped.
+// Then the neighbourhood of the best optimum is checked exhaustively
+// (solve/neighbourhood.h) for a lower facet too close to tell apart by sampling.
+void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<Basin> basins,
+                   Optimum& best, SolveStats& stats, std::string& last_failure) {
+  std::sort(basins.begin(), basins.end(),
+            [](const Basin& a, const Basin& b) { return a.lower < b.lower; });
+  bool polished = false;
+  for (const Basin& b : basins) {
+    if (polished && b.lower >= best.gap - tol::kTouch) break;
+    const LocalResult lr = polish(pr, ipopt, b.end, stats);
+    if (lr.gap < best.gap) best = {lr.v, lr.gap};  // a valid bound even unconverged
+    if (!lr.converged) {
+      last_failure = lr.status;
+      continue;
+    }
+    polished = true;
+  }
+}
+
+// The certificate (solve/certificate.h): caps over every direction where the gap
+// may still be below the best, each searched exactly. A lower facet found is
+// polished by Ipopt and the certificate redone; false when the open region is
+// too large for a few small caps (then the caller asks the exact hull).
+bool certify(const PairProblem& pr, IpoptLocalSolver& ipopt, Optimum& best, SolveStats& stats) {
+  for (int round = 0; round < 4; ++round) {
+    const CapCover cover = open_region_caps(pr, best.gap, best.v, tol::kCertificateGrid,
+                                            tol::kCertificateCapAngle, tol::kCertificateCaps);
+    stats.alpha_evaluations += cover.evaluations;
+    if (!cover.ok) return false;
+    bool improved = false;
+    for (const auto& [centre, radius] : cover.caps) {
+      const auto f = lowest_facet_in_cap(pr.p(), pr.q(), centre, radius, tol::kNeighbourhoodPoints);
+      if (!f) continue;
+      const double g = pr.gap(f->normal);
+      if (g < best.gap) {
+        best = {f->normal, g};
+        improved = true;
+      }
+    }
+    if (!improved) return true;
+    const LocalResult lr = polish(pr, ipopt, best.v, stats);
+    if (lr.converged && lr.gap <= best.gap) best = {lr.v, lr.gap};
+  }
+  return false;
 }
 
 }  // namespace
@@ -72,10 +131,9 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   std::vector<Vec3> x;
   std::vector<double> f;
   std::vector<char> started;
-  std::vector<Optimum> optima;
-  std::vector<Landing> landings;
-  Optimum best_sample{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
-  std::string last_failure;
+  std::vector<Basin> basins;
+  Optimum best{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
+  const double smoothing_excess = std::log(double(pr.p().cols())) + std::log(double(pr.q().cols()));
 
   for (int k = 1; k <= s.max_iterations; ++k) {
     stats.mlsl_iterations = k;
@@ -83,10 +141,10 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
       x.push_back(rng.direction());
       f.push_back(pr.gap(x.back()));
       started.push_back(0);
-      if (f.back() < best_sample.gap) best_sample = {x.back(), f.back()};
+      if (f.back() < best.gap) best = {x.back(), f.back()};
     }
     // A direction with a negative gap is a separating plane: depth 0, certified.
-    if (best_sample.gap < 0) return finish(pr, optima, best_sample, stats);
+    if (best.gap < 0) return finish(pr, best, 0, stats);
 
     const long kn = static_cast<long>(x.size());
     // Critical distance on the sphere (area 4π, dimension 2), as an angle.
@@ -105,41 +163,40 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
       // Single linkage: no start next to a better sample or a known optimum.
       bool linked = false;
       for (long j = 0; j < kn && !linked; ++j) linked = f[j] < f[i] && x[i].dot(x[j]) >= cos_rk;
-      for (size_t o = 0; o < optima.size() && !linked; ++o)
-        linked = x[i].dot(optima[o].v) >= cos_rk;
+      for (size_t o = 0; o < basins.size() && !linked; ++o)
+        linked = x[i].dot(basins[o].end) >= cos_rk;
       if (linked) continue;
       if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
       started[i] = 1;
-      // The cheap descent first; Ipopt only where it ends somewhere new. An end
-      // point next to a known optimum and no lower than it is in its basin.
-      const Vec3 end = descend(pr, x[i], stats);
-      const double end_gap = pr.gap(end);
-      bool known = false;
-      for (size_t o = 0; o < optima.size() && !known; ++o)
-        known = angle_between(end, optima[o].v) < tol::kSameBasinAngle &&
-                end_gap >= optima[o].gap - tol::kTouch;
-      for (size_t l = 0; l < landings.size() && !known; ++l)
-        known = angle_between(end, landings[l].end) < tol::kSameBasinAngle &&
-                end_gap >= optima[landings[l].optimum].gap - tol::kTouch;
-      if (known) continue;
-      const LocalResult lr = polish(pr, ipopt, end, stats);
-      if (lr.gap < best_sample.gap) best_sample = {lr.v, lr.gap};  // a valid bound even unconverged
-      if (!lr.converged) {
-        last_failure = lr.status;
-        continue;
-      }
-      landings.push_back({end, record(optima, lr)});
-      if (lr.gap < 0) return finish(pr, optima, best_sample, stats);
+      const DescentOutcome d = descend(pr, x[i], stats);
+      const double end_gap = pr.gap(d.v);
+      if (end_gap < best.gap) best = {d.v, end_gap};
+      if (end_gap < 0) return finish(pr, best, 0, stats);
+      add_basin(basins, d.v, d.smoothed - d.mu * smoothing_excess);
     }
     // Every reduced-sample point is either a start or linked to one, so it counts
     // as a search whose optimum is known (Rinnooy Kan & Timmer, part II, §3).
-    const int w = static_cast<int>(optima.size());
+    const int w = static_cast<int>(basins.size());
     const double wbar = expected_optima(w, reduced);
     if (k >= s.min_iterations && w > 0 && w / wbar >= s.tau) break;
     if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
   }
-  DepthSolution sol = finish(pr, optima, best_sample, stats);
-  if (optima.empty() && best_sample.gap >= 0)
+  std::string last_failure;
+  const Optimum before = best;
+  const int distinct = static_cast<int>(basins.size());
+  polish_basins(pr, ipopt, std::move(basins), best, stats, last_failure);
+  if (best.gap > 0 && !certify(pr, ipopt, best, stats)) {
+    // Too many near-tied minima spread too widely (nearly concentric spheres,
+    // say): the exact hull settles it, and the report says so.
+    DepthSolution sol = exact_depth(pr.p(), pr.q());
+    stats.alpha_evaluations += pr.evaluations();
+    sol.stats = stats;
+    sol.stats.distinct_optima = distinct;
+    sol.fallback = "exact, because the global minimum could not be certified locally";
+    return sol;
+  }
+  DepthSolution sol = finish(pr, best, distinct, stats);
+  if (!last_failure.empty() && best.gap == before.gap && best.gap >= 0)
     sol.fallback = "no local solve converged (" + last_failure + ")";
   return sol;
 }
@@ -200,7 +257,7 @@ DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
       if (k * M > w + 2) wbar = expected_optima(w, long(k) * M);
     }
   }
-  DepthSolution sol = finish(pr, optima, best, stats);
+  DepthSolution sol = finish(pr, best, static_cast<int>(optima.size()), stats);
   if (optima.empty()) sol.fallback = "no local solve converged (" + last_failure + ")";
   return sol;
 }

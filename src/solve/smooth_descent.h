@@ -11,7 +11,9 @@ namespace pd {
 
 struct DescentOutcome {
   Vec3 v;
-  long evaluations = 0;  ///< smoothed objective evaluations, O(n + m) each
+  long evaluations = 0;   ///< smoothed objective evaluations, O(n + m) each
+  double smoothed = 0.0;  ///< f_μ(v) at the end, for the final μ
+  double mu = 0.0;        ///< the final μ
 };
 
 DescentOutcome smooth_descent(const Points& p, const Points& q, const Vec3& start);

@@ -1,5 +1,7 @@
-// Seeded generators of test polytope pairs (shared by the tests and pdbench).
+// Seeded generators of polytope pairs, shared by the tests and the benchmark (pdbench).
 #pragma once
+
+#include <Eigen/Geometry>
 
 #include "geometry/hull.h"
 #include "solve/exact.h"
@@ -31,6 +33,19 @@ struct PairCase {
   Points a, b;
 };
 
+/// n points on a random ellipsoid's surface (semi-axes in [radius/2, radius],
+/// random orientation): every point is a hull vertex, so the class is exactly n.
+inline Points ellipsoid_polytope(SphereSampler& r, int n, const Vec3& centre, double radius) {
+  const Vec3 axes(radius * (0.5 + 0.5 * r.uniform()), radius * (0.5 + 0.5 * r.uniform()),
+                  radius * (0.5 + 0.5 * r.uniform()));
+  Eigen::Quaterniond rot(r.uniform() + 0.1, r.uniform() - 0.5, r.uniform() - 0.5,
+                         r.uniform() - 0.5);
+  const Eigen::Matrix3d m = rot.normalized().toRotationMatrix() * axes.asDiagonal();
+  Points p(3, n);
+  for (int i = 0; i < n; ++i) p.col(i) = centre + m * r.direction();
+  return p;
+}
+
 /// Draws from `make` until the pair overlaps (the exact reference says so).
 template <class Make>
 PairCase overlapping(SphereSampler& r, Make make) {
@@ -60,6 +75,16 @@ inline PairCase large_coordinates(SphereSampler& r, int n = 100) {
   const double ra = 20000 + 10000 * r.uniform(), rb = 20000 + 10000 * r.uniform();
   const Vec3 c = base + r.direction() * (ra + rb) * 0.5 * r.uniform();
   return {ball_polytope(r, n, base, ra), ball_polytope(r, n, c, rb)};
+}
+
+/// A vertex-count class: n + n points on two random ellipsoids of size 10–100,
+/// overlapping by a random fraction of their size.
+inline PairCase vertex_class(SphereSampler& r, int n) {
+  return overlapping(r, [n](SphereSampler& g) {
+    const double ra = 10 + 90 * g.uniform(), rb = 10 + 90 * g.uniform();
+    const Vec3 c = g.direction() * (ra + rb) * 0.6 * g.uniform();
+    return PairCase{ellipsoid_polytope(g, n, Vec3::Zero(), ra), ellipsoid_polytope(g, n, c, rb)};
+  });
 }
 
 /// Zhou et al.'s spheres: m points, radius 10, at (0,0,0) and (20,10,30), the
