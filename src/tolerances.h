@@ -44,7 +44,7 @@ inline constexpr double kSameBasinAngle = 1e-2;
 /// limits the exact hull decides (and the report says so).
 inline constexpr int kCertificateGrid = 12;
 inline constexpr double kCertificateCapAngle = 0.35;
-inline constexpr int kCertificateCaps = 8;
+inline constexpr int kCertificateCaps = 12;
 inline constexpr long kNeighbourhoodPoints = 20000;
 
 /// A vertex counts as active at a direction v when its support value is within

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
 #include <mutex>
+#include <numeric>
 
 namespace pd {
 
@@ -38,18 +41,19 @@ const std::vector<SphereCell>& cube_sphere_cells(int n) {
         const Vec3 c = cube_point(f, 0.5 * (s0 + s1), 0.5 * (t0 + t1));
         // A projected square is a convex spherical quadrilateral: the point
         // farthest from its centre is a corner.
+        const std::array<Vec3, 4> corners{cube_point(f, s0, t0), cube_point(f, s1, t0),
+                                          cube_point(f, s1, t1), cube_point(f, s0, t1)};
         double r = 0;
-        for (double s : {s0, s1})
-          for (double t : {t0, t1}) r = std::max(r, angle_between(c, cube_point(f, s, t)));
-        cells.push_back({c, r * (1 + 1e-9), f, i, j});
+        for (const Vec3& k : corners) r = std::max(r, angle_between(c, k));
+        cells.push_back({c, r * (1 + 1e-9), corners, f, i, j});
       }
     }
   }
   return cells;
 }
 
-CapCover open_region_caps(const PairProblem& pr, double best, const Vec3& best_v, int grid,
-                          double max_radius, int max_caps) {
+CapCover open_region_caps(const PairProblem& pr, double best, int grid, double max_radius,
+                          int max_caps) {
   const auto& cells = cube_sphere_cells(grid);
   const size_t nc = cells.size();
   CapCover out;
@@ -65,11 +69,12 @@ CapCover open_region_caps(const PairProblem& pr, double best, const Vec3& best_v
     g[k] = hp - hq;
   }
   out.evaluations = static_cast<long>(nc);
+  // The smallest of x·corner; exact on the cell when all are positive (see the
+  // header), and then only rounding separates it from the true minimum.
   auto bound = [&](size_t cell, size_t from) {
-    const double nx = x[from].norm();
-    if (nx == 0) return 0.0;
-    const double a = angle_between(x[from] / nx, cells[cell].centre) + cells[cell].radius;
-    return a >= M_PI ? -nx : nx * std::cos(a);
+    double lo = std::numeric_limits<double>::infinity();
+    for (const Vec3& k : cells[cell].corners) lo = std::min(lo, x[from].dot(k));
+    return lo > 0 ? lo : -1.0;
   };
   // Open cells: no support point of the cell or of its neighbours on the same
   // face lifts the gap above `best` everywhere on the cell.
@@ -87,38 +92,52 @@ CapCover open_region_caps(const PairProblem& pr, double best, const Vec3& best_v
     }
     if (!closed) open.push_back(k);
   }
-  // Greedy caps: first at the best direction, then at the lowest open cell left.
-  std::sort(open.begin(), open.end(), [&](size_t a, size_t b) { return g[a] < g[b]; });
-  std::vector<char> covered(open.size(), 0);
-  size_t left = open.size();
-  Vec3 centre = best_v;
-  while (left > 0) {
-    if (static_cast<int>(out.caps.size()) >= max_caps) {
-      out.ok = false;
-      return out;
+  // Connected groups of open cells (cells whose caps touch), one cap each,
+  // centred on the group's mean direction; a group too wide for one cap is
+  // covered greedily from its lowest cell.
+  std::vector<int> group(open.size());
+  std::iota(group.begin(), group.end(), 0);
+  std::function<int(int)> root = [&](int k) {
+    return group[k] == k ? k : group[k] = root(group[k]);
+  };
+  for (size_t u = 0; u < open.size(); ++u)
+    for (size_t w = u + 1; w < open.size(); ++w) {
+      const SphereCell &cu = cells[open[u]], &cw = cells[open[w]];
+      if (angle_between(cu.centre, cw.centre) <= 1.05 * (cu.radius + cw.radius))
+        group[root(int(u))] = root(int(w));
     }
-    double radius = 0;
-    for (size_t k = 0; k < open.size(); ++k) {
-      if (covered[k]) continue;
-      const double need = angle_between(centre, cells[open[k]].centre) + cells[open[k]].radius;
-      if (need <= max_radius) {
-        covered[k] = 1;
-        --left;
-        radius = std::max(radius, need);
+  std::map<int, std::vector<size_t>> groups;
+  for (size_t u = 0; u < open.size(); ++u) groups[root(int(u))].push_back(open[u]);
+  auto need = [&](const Vec3& centre, size_t cell) {
+    return angle_between(centre, cells[cell].centre) + cells[cell].radius;
+  };
+  for (auto& [id, members] : groups) {
+    Vec3 mean = Vec3::Zero();
+    for (size_t c : members) mean += cells[c].centre;
+    if (mean.norm() > 1e-9) {
+      mean.normalize();
+      double radius = 0;
+      for (size_t c : members) radius = std::max(radius, need(mean, c));
+      if (radius <= max_radius) {
+        out.caps.emplace_back(mean, radius);
+        continue;
       }
     }
-    if (radius > 0) {
+    std::sort(members.begin(), members.end(), [&](size_t a, size_t b) { return g[a] < g[b]; });
+    std::vector<char> covered(members.size(), 0);
+    for (size_t first = 0; first < members.size(); ++first) {
+      if (covered[first]) continue;
+      const Vec3 centre = cells[members[first]].centre;
+      double radius = 0;
+      for (size_t k = first; k < members.size(); ++k)
+        if (!covered[k] && need(centre, members[k]) <= max_radius) {
+          covered[k] = 1;
+          radius = std::max(radius, need(centre, members[k]));
+        }
       out.caps.emplace_back(centre, radius);
-    } else if (centre != best_v) {
-      out.ok = false;  // a cell wider than max_radius: the grid is too coarse
-      return out;
     }
-    for (size_t k = 0; k < open.size(); ++k)
-      if (!covered[k]) {
-        centre = cells[open[k]].centre;
-        break;
-      }
   }
+  if (static_cast<int>(out.caps.size()) > max_caps) out.ok = false;
   return out;
 }
 

@@ -2,8 +2,11 @@
 //
 // For any point x of D = P − Q, gap(u) = h_D(u) >= x·u. The support point
 // x_c = p*(c) − q*(c) found while evaluating the gap at a direction c therefore
-// bounds the gap from below on a whole spherical cell around c:
-//   min over the cell of x_c·u >= |x_c|·cos(angle(x_c, c) + cell radius).
+// bounds the gap from below on a whole cell of the cube-sphere grid. A cell is a
+// spherical quadrilateral with great-circle edges, and along a great-circle arc
+// shorter than π a linear function positive at both ends has its minimum at an
+// end; so min over the cell of x·u is the smallest of x·corner when those are
+// all positive — a bound without any Lipschitz slack.
 // A cell whose bound (from its own support point or a neighbour's) exceeds the
 // best gap known cannot hold the global minimum. The cells left open are
 // covered by a few caps, and each cap is searched exactly for its lowest facet
@@ -11,6 +14,7 @@
 // minimum, to rounding. MLSL's sampling stays the search; this only proves it.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "solve/objective.h"
@@ -22,6 +26,7 @@ namespace pd {
 struct SphereCell {
   Vec3 centre;
   double radius;
+  std::array<Vec3, 4> corners;
   int face, i, j;
 };
 
@@ -29,14 +34,14 @@ struct SphereCell {
 const std::vector<SphereCell>& cube_sphere_cells(int n);
 
 /// Caps (centre, angular radius) covering every cell where the gap may lie
-/// below `best`; the first is centred at `best_v`. Empty `ok` means the open
-/// region needs more than `max_caps` caps of radius <= `max_radius`.
+/// below `best`: one per connected group of open cells. `ok` is false when the
+/// open region needs more than `max_caps` caps of radius <= `max_radius`.
 struct CapCover {
   bool ok = true;
   std::vector<std::pair<Vec3, double>> caps;
   long evaluations = 0;
 };
-CapCover open_region_caps(const PairProblem& pr, double best, const Vec3& best_v, int grid,
-                          double max_radius, int max_caps);
+CapCover open_region_caps(const PairProblem& pr, double best, int grid, double max_radius,
+                          int max_caps);
 
 }  // namespace pd

@@ -7,7 +7,6 @@
 #include <numeric>
 
 #include "solve/certificate.h"
-#include "solve/exact.h"
 #include "solve/local_search.h"
 #include "solve/neighbourhood.h"
 #include "tolerances.h"
@@ -101,7 +100,7 @@ void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<B
 // too large for a few small caps (then the caller asks the exact hull).
 bool certify(const PairProblem& pr, IpoptLocalSolver& ipopt, Optimum& best, SolveStats& stats) {
   for (int round = 0; round < 4; ++round) {
-    const CapCover cover = open_region_caps(pr, best.gap, best.v, tol::kCertificateGrid,
+    const CapCover cover = open_region_caps(pr, best.gap, tol::kCertificateGrid,
                                             tol::kCertificateCapAngle, tol::kCertificateCaps);
     stats.alpha_evaluations += cover.evaluations;
     if (!cover.ok) return false;
@@ -185,17 +184,11 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   const Optimum before = best;
   const int distinct = static_cast<int>(basins.size());
   polish_basins(pr, ipopt, std::move(basins), best, stats, last_failure);
-  if (best.gap > 0 && !certify(pr, ipopt, best, stats)) {
-    // Too many near-tied minima spread too widely (nearly concentric spheres,
-    // say): the exact hull settles it, and the report says so.
-    DepthSolution sol = exact_depth(pr.p(), pr.q());
-    stats.alpha_evaluations += pr.evaluations();
-    sol.stats = stats;
-    sol.stats.distinct_optima = distinct;
-    sol.fallback = "exact, because the global minimum could not be certified locally";
-    return sol;
-  }
+  const bool certified = best.gap <= 0 || certify(pr, ipopt, best, stats);
   DepthSolution sol = finish(pr, best, distinct, stats);
+  // Too many near-tied minima spread too widely (nearly concentric spheres, say):
+  // solve_convex_pair lets the exact hull settle it, and the report says so.
+  if (!certified) sol.fallback = "the global minimum could not be certified locally";
   if (!last_failure.empty() && best.gap == before.gap && best.gap >= 0)
     sol.fallback = "no local solve converged (" + last_failure + ")";
   return sol;

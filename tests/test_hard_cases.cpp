@@ -1,0 +1,228 @@
+// The hard cases: geometry on which convex penetration-depth codes are known to
+// return wrong or NaN depths. Each case runs through the whole pair check (hulls,
+// solve, classification) for `mlsl` and for `exact`, and is checked against an
+// analytic depth where one exists, else against `exact`, with the stated tolerance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "batch/pair_solve.h"
+#include "corpus/generators.h"
+#include "solve/methods.h"
+
+using namespace pd;
+
+namespace {
+
+Points box(const Vec3& lo, const Vec3& hi) {
+  Points p(3, 8);
+  for (int k = 0; k < 8; ++k)
+    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  return p;
+}
+
+Points shifted(Points p, const Vec3& d) {
+  p.colwise() += d;
+  return p;
+}
+
+Points points(std::initializer_list<Vec3> l) {
+  Points p(3, static_cast<Eigen::Index>(l.size()));
+  int k = 0;
+  for (const Vec3& v : l) p.col(k++) = v;
+  return p;
+}
+
+Part part(const std::string& id, const Points& pts) {
+  Part p;
+  p.id = id;
+  p.source = "inline";
+  p.pieces.push_back(convex_hull(pts));
+  p.box = Aabb::of(p.pieces[0].vertices);
+  return p;
+}
+
+PairResult check(const Points& a, const Points& b, Method m, double tolerance) {
+  static IpoptLocalSolver ipopt;
+  SolverSettings s;
+  s.method = m;
+  return solve_part_pair(0, part("a", a), 1, part("b", b), s, tolerance, ipopt);
+}
+
+double gap_world(const Points& a, const Points& b, const Vec3& v) {
+  return (v.transpose() * a).maxCoeff() - (v.transpose() * b).minCoeff();
+}
+
+/// Both methods: no NaN, the expected status, the depth within `abs_tol` of the
+/// expected one, and a direction that achieves the depth (when it is positive).
+void expect_case(const std::string& what, const Points& a, const Points& b, double expected,
+                 double abs_tol, Status status, double tolerance = 0.1) {
+  for (Method m : {Method::kExact, Method::kMlsl}) {
+    const PairResult r = check(a, b, m, tolerance);
+    SCOPED_TRACE(what + " / " + method_name(m));
+    ASSERT_NE(r.status, Status::kError) << r.error;
+    ASSERT_TRUE(std::isfinite(r.depth));
+    ASSERT_TRUE(r.direction.allFinite());
+    EXPECT_NEAR(r.direction.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(r.depth, expected, abs_tol);
+    EXPECT_EQ(status_name(r.status), std::string(status_name(status)));
+    EXPECT_TRUE(r.fallback.empty()) << r.fallback;
+    if (r.depth > 0) {
+      EXPECT_NEAR(gap_world(a, b, r.direction), r.depth, abs_tol);
+    }
+  }
+}
+
+/// No analytic value: mlsl must equal exact within 1e-9 relative.
+void expect_mlsl_equals_exact(const std::string& what, const Points& a, const Points& b) {
+  const PairResult e = check(a, b, Method::kExact, 0.1), m = check(a, b, Method::kMlsl, 0.1);
+  SCOPED_TRACE(what);
+  ASSERT_NE(m.status, Status::kError) << m.error;
+  ASSERT_TRUE(std::isfinite(m.depth) && m.direction.allFinite());
+  EXPECT_NEAR(m.depth, e.depth, 1e-9 * std::max(e.depth, 1e-300));
+  EXPECT_EQ(m.status, e.status);
+  EXPECT_NEAR(gap_world(a, b, m.direction), m.depth, 1e-9 * std::max(e.depth, 1e-12));
+}
+
+const Vec3 kO = Vec3::Zero(), kOne = Vec3::Ones();
+
+}  // namespace
+
+TEST(HardCases, TouchingFaceFace) {
+  const Points a = box(kO, kOne);
+  for (double eps : {0.0, 1e-12, -1e-12}) {  // of the size (the pair spans 2 along x)
+    const Points b = box(Vec3(1 - 2 * eps, 0, 0), Vec3(2 - 2 * eps, 1, 1));
+    expect_case("face-face eps " + std::to_string(eps), a, b, std::max(0.0, 2 * eps), 1e-14,
+                Status::kSeparated);
+  }
+}
+
+TEST(HardCases, TouchingEdgeEdge) {
+  // A tetrahedron's top edge along x, another's bottom edge along y, meeting at 0.
+  const Points a = points({{-1, 0, 0}, {1, 0, 0}, {0, -1, -1}, {0, 1, -1}});
+  for (double eps : {0.0, 1e-12, -1e-12}) {
+    const Points b =
+        shifted(points({{0, -1, 0}, {0, 1, 0}, {-1, 0, 1}, {1, 0, 1}}), Vec3(0, 0, -2 * eps));
+    expect_case("edge-edge eps " + std::to_string(eps), a, b, std::max(0.0, 2 * eps), 1e-14,
+                Status::kSeparated);
+  }
+}
+
+TEST(HardCases, TouchingVertexFace) {
+  const Points a = box(Vec3(-1, -1, -1), Vec3(1, 1, 0));
+  for (double eps : {0.0, 1e-12, -1e-12}) {
+    const Points b =
+        shifted(points({{0, 0, 0}, {1, 0, 2}, {-1, 1, 2}, {-1, -1, 2}}), Vec3(0, 0, -3 * eps));
+    expect_case("vertex-face eps " + std::to_string(eps), a, b, std::max(0.0, 3 * eps), 1e-14,
+                Status::kSeparated);
+  }
+}
+
+TEST(HardCases, OverlapOfOneBillionthOfTheSize) {
+  const Points a = box(kO, kOne), b = box(Vec3(1 - 2e-9, 0, 0), Vec3(2 - 2e-9, 1, 1));
+  expect_case("overlap 1e-9", a, b, 2e-9, 1e-15, Status::kFalsePositive);
+}
+
+TEST(HardCases, CoplanarFacesWithTiedOptima) {
+  // Top and bottom faces coplanar; moving along +x or +y both need 0.5.
+  const Points a = box(kO, kOne), b = box(Vec3(0.5, 0.5, 0), Vec3(1.5, 1.5, 1));
+  expect_case("coplanar", a, b, 0.5, 1e-12, Status::kInterference);
+}
+
+TEST(HardCases, IdenticalPolytopes) {
+  expect_case("identical cubes", box(kO, kOne), box(kO, kOne), 1.0, 1e-12, Status::kInterference);
+  SphereSampler r(77);
+  const Points p = testgen::ball_polytope(r, 40, Vec3(3, 4, 5), 10);
+  expect_mlsl_equals_exact("identical random", p, p);
+}
+
+TEST(HardCases, OneStrictlyInsideTheOther) {
+  expect_case("inside", box(kO, kOne), box(Vec3::Constant(0.4), Vec3::Constant(0.6)), 0.6, 1e-12,
+              Status::kInterference);
+}
+
+TEST(HardCases, OptimumAtThePolesAndTheWrapAround) {
+  const Points a = box(-kOne, kOne);  // libccd's 2x2x2 cube, shifted 1.9 each way
+  const Vec3 axes[] = {Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX()};
+  for (const Vec3& d : axes) {
+    const Points b = shifted(a, 1.9 * d);
+    expect_case("axis", a, b, 0.1, 1e-12, Status::kFalsePositive, 0.2);
+    const PairResult m = check(a, b, Method::kMlsl, 0.2);
+    EXPECT_NEAR(m.direction.dot(d), 1.0, 1e-12);
+  }
+}
+
+TEST(HardCases, ThinPlates) {
+  const Points a = box(kO, Vec3(1000, 1000, 1)), b = box(Vec3(0, 0, 0.99), Vec3(1000, 1000, 1.99));
+  expect_case("plates 1000x1000x1", a, b, 0.01, 1e-9, Status::kFalsePositive, 0.05);
+  // Thickness 1e-6 of the size, overlapping by half of it, rotated off the axes.
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Points c = rot * box(kO, Vec3(1000, 1000, 1e-3));
+  const Points d = rot * box(Vec3(100, 100, 0.5e-3), Vec3(900, 900, 1.5e-3));
+  expect_case("plates 1e-6", c, d, 0.5e-3, 1e-12, Status::kFalsePositive, 0.01);
+}
+
+TEST(HardCases, NeedlesAndSlivers) {
+  const Points a = box(kO, Vec3(100, 0.01, 0.01));
+  const Points b = box(Vec3(50, -50, 0.005), Vec3(50.01, 50, 0.015));
+  expect_case("crossed needles", a, b, 0.005, 1e-12, Status::kFalsePositive);
+  // A sliver tetrahedron (height 1e-4 of its size) through a box corner.
+  const Points s = points({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {3, 3, 1e-3}});
+  expect_mlsl_equals_exact("sliver", s, shifted(box(kO, kOne), Vec3(2, 2, -0.5)));
+}
+
+TEST(HardCases, DuplicateAndNearDuplicateVertices) {
+  // An unwelded STL: every vertex three times, two copies off by 1e-13.
+  const Points clean = box(kO, kOne);
+  Points dup(3, 24);
+  for (int k = 0; k < 8; ++k) {
+    dup.col(3 * k) = clean.col(k);
+    dup.col(3 * k + 1) = clean.col(k);
+    dup.col(3 * k + 2) = clean.col(k) + Vec3(1e-13, -1e-13, 1e-13);
+  }
+  const Points b = box(Vec3(0.7, 0.2, 0.2), Vec3(1.7, 0.8, 0.8));
+  expect_case("duplicates", dup, b, 0.3, 1e-12, Status::kInterference);
+}
+
+TEST(HardCases, FlatAndCollinearInput) {
+  const Points cube = box(kO, kOne);
+  const Points square =
+      points({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}});
+  expect_case("flat square in a cube", cube, square, 0.5, 1e-12, Status::kInterference);
+  const Points segment = points({{0.2, 0.5, 0.3}, {0.5, 0.5, 0.3}, {0.8, 0.5, 0.3}});
+  expect_case("collinear segment in a cube", cube, segment, 0.3, 1e-12, Status::kInterference);
+}
+
+TEST(HardCases, FarFromTheOriginWithASmallInterference) {
+  // x ≈ 35,000 mm, 0.01 mm of interference: double coordinates keep it to ~1e-11.
+  const Points a = box(Vec3(35000, 0, 0), Vec3(35010, 10, 10));
+  const Points b = box(Vec3(35009.99, 2, 2), Vec3(35020, 8, 8));
+  expect_case("x=35000 tol 0.005", a, b, 0.01, 1e-9, Status::kInterference, 0.005);
+  expect_case("x=35000 tol 0.02", a, b, 0.01, 1e-9, Status::kFalsePositive, 0.02);
+}
+
+TEST(HardCases, TinyParts) {
+  // 1e-3 mm parts overlapping by 1e-5 mm: the unit frame makes size irrelevant.
+  const Points a = box(kO, Vec3::Constant(1e-3)),
+               b = box(Vec3(0.99e-3, 0, 0), Vec3(2e-3, 1e-3, 1e-3));
+  expect_case("tiny", a, b, 1e-5, 1e-17, Status::kInterference, 1e-6);
+}
+
+TEST(HardCases, PinAgainstATenMetrePanel) {
+  // A 1 mm pin (24-gon prism) standing 0.1 mm deep in a 10 m panel.
+  Points pin(3, 48);
+  for (int k = 0; k < 24; ++k) {
+    const double t = 2 * M_PI * k / 24;
+    pin.col(k) = Vec3(5000 + 0.5 * std::cos(t), 5000 + 0.5 * std::sin(t), 4.9);
+    pin.col(24 + k) = Vec3(5000 + 0.5 * std::cos(t), 5000 + 0.5 * std::sin(t), 24.9);
+  }
+  const Points panel = box(kO, Vec3(10000, 10000, 5));
+  expect_case("pin", panel, pin, 0.1, 1e-9, Status::kFalsePositive, 0.2);
+}
+
+TEST(HardCases, TwoThousandVerticesPerPart) {
+  SphereSampler r(2000);
+  const Points a = testgen::ellipsoid_polytope(r, 2000, kO, 50);
+  const Points b = testgen::ellipsoid_polytope(r, 2000, Vec3(30, 20, 10), 40);
+  expect_mlsl_equals_exact("2000+2000", a, b);
+}
