@@ -6,6 +6,9 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
           nlohmann-json3-dev libassimp-dev libqhull-dev libgtest-dev python3)
+# Callers may need more (accuracy_vs_time.sh: python3-matplotlib for its plot).
+read -r -a EXTRA <<<"${EXTRA_PACKAGES:-}"
+PACKAGES+=("${EXTRA[@]}")
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
