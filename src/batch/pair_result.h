@@ -3,13 +3,25 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "solve/result.h"
 
 namespace pd {
 
-enum class Status { kSeparated, kFalsePositive, kInterference, kError };
+enum class Status { kSeparated, kFalsePositive, kInterference, kError, kClearanceViolation };
 const char* status_name(Status s);
+
+/// A motion sweep's outcome: the signed minimum translational distance s(t)
+/// (depth > 0 when overlapping, −distance when not) over the time grid.
+struct MotionTrace {
+  long steps = 0;
+  double max_depth = 0.0, t_max_depth = 0.0;      ///< the deepest step (0 if never overlapping)
+  std::optional<double> min_distance;             ///< the smallest separation, if any step is apart
+  double t_min_distance = 0.0;
+  std::vector<std::pair<double, double>> series;  ///< (t, s(t)), when the scene asks
+};
 
 struct PairResult {
   int a = -1, b = -1;  ///< part indices
@@ -23,6 +35,8 @@ struct PairResult {
   double time_ms = 0.0;
   std::string fallback;
   std::string error;
+  std::optional<double> clearance_min;  ///< the required clearance, when checked
+  std::optional<MotionTrace> motion;    ///< when a part of the pair moves
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

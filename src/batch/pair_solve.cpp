@@ -2,7 +2,9 @@
 
 #include <chrono>
 
+#include "batch/motion_sweep.h"
 #include "solve/methods.h"
+#include "solve/signed_distance.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -17,6 +19,8 @@ const char* status_name(Status s) {
       return "interference";
     case Status::kError:
       return "error";
+    case Status::kClearanceViolation:
+      return "clearance_violation";
   }
   return "error";
 }
@@ -39,10 +43,24 @@ void add(SolveStats& t, const SolveStats& s) {
   t.mlsl_iterations += s.mlsl_iterations;
 }
 
+// The separation distance of a separated pair: the smallest over its piece
+// pairs, each warm-started from the static solve's separating direction.
+double static_distance(const Part& a, const Part& b, const Vec3& dir, const SolverSettings& s,
+                       IpoptLocalSolver& ipopt, SolveStats& stats) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Hull& pa : a.pieces)
+    for (const Hull& pb : b.pieces) {
+      const SignedSolution r = signed_distance(pa.vertices, pb.vertices, s, ipopt, dir);
+      add(stats, r.stats);
+      d = std::min(d, std::max(0.0, -r.value));
+    }
+  return d;
+}
+
 }  // namespace
 
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
-                           double tolerance, IpoptLocalSolver& ipopt) {
+                           double tolerance, IpoptLocalSolver& ipopt, const PairChecks& checks) {
   const auto t0 = std::chrono::steady_clock::now();
   PairResult r;
   r.a = ia;
@@ -55,8 +73,19 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     return r;
   }
   try {
+    r.clearance_min = checks.clearance;
+    if (checks.motion) {
+      const MotionSweep sw = sweep_pair(a, b, *checks.motion, s, ipopt);
+      r.motion = sw.trace;
+      r.depth = sw.trace.max_depth;
+      r.direction = sw.direction_at_max;
+      r.distance = sw.trace.min_distance;
+      r.fallback = sw.fallback;
+      add(r.stats, sw.stats);
+    }
     bool first = true;
     for (const Hull& pa : a.pieces) {
+      if (checks.motion) break;  // the sweep replaced the static solve
       for (const Hull& pb : b.pieces) {
         if (a.pieces.size() * b.pieces.size() > 1 &&
             !Aabb::of(pa.vertices).overlaps(Aabb::of(pb.vertices)))
@@ -79,7 +108,13 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
         box.hi.cwiseAbs().cwiseMax(box.lo.cwiseAbs()).maxCoeff() + (box.hi - box.lo).norm();
     r.status = classify(r.depth, tolerance, size);
     r.margin = tolerance - r.depth;
-    if (r.status != Status::kSeparated) r.distance.reset();
+    if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
+    if (checks.clearance && r.status == Status::kSeparated) {
+      if (!checks.motion) r.distance = static_distance(a, b, r.direction, s, ipopt, r.stats);
+      // Touching (distance within rounding of 0) is contact, as for depths.
+      if (r.distance && *r.distance > tol::kTouch * size && *r.distance < *checks.clearance)
+        r.status = Status::kClearanceViolation;
+    }
   } catch (const std::exception& e) {
     r.status = Status::kError;
     r.error = e.what();

@@ -3,12 +3,20 @@
 
 #include "batch/pair_result.h"
 #include "scene/parts.h"
+#include "scene/scene.h"
 #include "solve/ipopt_local.h"
 #include "solve/settings.h"
 
 namespace pd {
 
+/// What a pair is checked for beyond the static depth; empty for a static scene.
+struct PairChecks {
+  std::optional<double> clearance;  ///< the required clearance
+  const MotionCheck* motion = nullptr;  ///< set when a part of the pair moves
+};
+
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
-                           double tolerance, IpoptLocalSolver& ipopt);
+                           double tolerance, IpoptLocalSolver& ipopt,
+                           const PairChecks& checks = {});
 
 }  // namespace pd

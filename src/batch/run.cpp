@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/broad_phase.h"
+#include "batch/motion_sweep.h"
 #include "batch/pair_solve.h"
 #include "batch/progress.h"
 #include "batch/work_queue.h"
@@ -32,6 +33,13 @@ std::string encode_pair_result(const PairResult& r) {
               r.stats.ipopt_iterations, r.stats.ipopt_calls, r.stats.ipopt_failures,
               r.stats.mlsl_iterations}}};
   if (r.distance) j["x"] = *r.distance;
+  if (r.clearance_min) j["c"] = *r.clearance_min;
+  if (r.motion) {
+    const MotionTrace& m = *r.motion;
+    j["mo"] = {{"n", m.steps}, {"d", m.max_depth}, {"td", m.t_max_depth},
+               {"tc", m.t_min_distance}, {"s", m.series}};
+    if (m.min_distance) j["mo"]["c"] = *m.min_distance;
+  }
   return j.dump();
 }
 
@@ -51,6 +59,18 @@ PairResult decode_pair_result(const std::string& s) {
   const auto& st = j["st"];
   r.stats = {st[0], st[1], st[2], st[3], st[4], st[5], st[6]};
   if (j.contains("x")) r.distance = j["x"].get<double>();
+  if (j.contains("c")) r.clearance_min = j["c"].get<double>();
+  if (j.contains("mo")) {
+    const auto& mo = j["mo"];
+    MotionTrace m;
+    m.steps = mo["n"];
+    m.max_depth = mo["d"];
+    m.t_max_depth = mo["td"];
+    m.t_min_distance = mo["tc"];
+    m.series = mo["s"].get<std::vector<std::pair<double, double>>>();
+    if (mo.contains("c")) m.min_distance = mo["c"].get<double>();
+    r.motion = m;
+  }
   return r;
 }
 
@@ -60,6 +80,30 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   out.parts = build_parts(scene);
   const std::vector<Part>& parts = out.parts;
   const int n = static_cast<int>(parts.size());
+  const Checks& checks = scene.checks;
+  out.simulated = {"interference"};
+  if (checks.clearance) out.simulated.push_back("clearance");
+  if (checks.motion) out.simulated.push_back("motion");
+  // Clearance per pair: the scene's minimum, or a named pair's own.
+  std::map<std::pair<std::string, std::string>, double> own_clearance;
+  double reach = 0.0;  // how far apart boxes may be and still need a check
+  if (checks.clearance) {
+    reach = checks.clearance->min;
+    for (const auto& e : checks.clearance->pairs) {
+      own_clearance[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.min;
+      reach = std::max(reach, e.min);
+    }
+  }
+  auto pair_checks = [&](int a, int b) {
+    PairChecks pc;
+    if (checks.clearance) {
+      const auto it = own_clearance.find(
+          {std::min(parts[a].id, parts[b].id), std::max(parts[a].id, parts[b].id)});
+      pc.clearance = it == own_clearance.end() ? checks.clearance->min : it->second;
+    }
+    if (checks.motion && (parts[a].motion || parts[b].motion)) pc.motion = &*checks.motion;
+    return pc;
+  };
 
   std::vector<std::pair<int, int>> pairs;
   if (scene.pairs) {
@@ -79,11 +123,12 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     for (int k = 0; k < n; ++k) {
       if (parts[k].error) continue;
       usable.push_back(k);
-      boxes.push_back(parts[k].box);
+      // A moving part is culled by the box it sweeps over the time grid.
+      boxes.push_back(checks.motion ? swept_box(parts[k], checks.motion->grid) : parts[k].box);
     }
     // A part that failed to load is reported with its reason in the part list
     // (and the exit code); its pairs cannot be formed without geometry.
-    for (const auto& [i, j] : overlapping_boxes(boxes, 0.0))
+    for (const auto& [i, j] : overlapping_boxes(boxes, reach))
       pairs.emplace_back(usable[i], usable[j]);
     out.culled = out.all_pairs - static_cast<long>(pairs.size());
   }
@@ -109,7 +154,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     const auto [a, b] = pairs[k];
     if (crash && parts[a].id + ":" + parts[b].id == crash) std::abort();
     return encode_pair_result(
-        solve_part_pair(a, parts[a], b, parts[b], options.solver, options.tolerance, *ipopt));
+        solve_part_pair(a, parts[a], b, parts[b], options.solver, options.tolerance, *ipopt,
+                        pair_checks(a, b)));
   };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
     PairResult r;

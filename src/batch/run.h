@@ -28,6 +28,7 @@ struct RunResult {
   long all_pairs = 0;             ///< n(n − 1)/2, or the listed pairs
   long culled = 0;                ///< removed by the broad phase
   double seconds = 0.0;
+  std::vector<std::string> simulated;  ///< "interference", then "clearance", "motion" if asked
 };
 
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options);

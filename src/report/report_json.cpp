@@ -8,7 +8,7 @@ using json = nlohmann::ordered_json;
 
 int Summary::exit_code() const {
   if (error > 0 || part_errors > 0) return 3;
-  return interference > 0 ? 1 : 0;
+  return interference > 0 || clearance_violation > 0 ? 1 : 0;
 }
 
 Summary summarize(const RunResult& r) {
@@ -18,6 +18,7 @@ Summary summarize(const RunResult& r) {
   s.all_pairs = r.all_pairs;
   s.culled = r.culled;
   s.candidates = static_cast<long>(r.pairs.size());
+  for (const auto& what : r.simulated) s.clearance_checked |= what == "clearance";
   for (const PairResult& p : r.pairs) {
     switch (p.status) {
       case Status::kSeparated:
@@ -31,6 +32,9 @@ Summary summarize(const RunResult& r) {
         break;
       case Status::kError:
         ++s.error;
+        break;
+      case Status::kClearanceViolation:
+        ++s.clearance_violation;
         break;
     }
   }
@@ -48,6 +52,25 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
     j["margin"] = r.margin;
     if (r.distance) j["distance"] = *r.distance;
   }
+  if (r.clearance_min && r.status != Status::kError) {
+    json c = {{"min", *r.clearance_min}};
+    if (r.distance) c["distance"] = *r.distance;
+    j["clearance"] = c;
+  }
+  if (r.motion && r.status != Status::kError) {
+    const MotionTrace& m = *r.motion;
+    json mo = {{"steps", m.steps}, {"max_depth", m.max_depth}, {"t_max_depth", m.t_max_depth}};
+    if (m.min_distance) {
+      mo["min_distance"] = *m.min_distance;
+      mo["t_min_distance"] = m.t_min_distance;
+    }
+    if (!m.series.empty()) {
+      json ser = json::array();
+      for (const auto& [t, v] : m.series) ser.push_back({t, v});
+      mo["series"] = ser;
+    }
+    j["motion"] = mo;
+  }
   j["method"] = r.method;
   if (!r.fallback.empty()) j["fallback"] = r.fallback;
   j["stats"] = {{"local_solves", r.stats.local_solves},
@@ -61,7 +84,7 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
 }
 
 json summary_json(const Summary& s) {
-  return {{"parts", s.parts},
+  json j = {{"parts", s.parts},
           {"part_errors", s.part_errors},
           {"pairs", s.all_pairs},
           {"culled", s.culled},
@@ -70,7 +93,10 @@ json summary_json(const Summary& s) {
           {"false_positive", s.false_positive},
           {"interference", s.interference},
           {"error", s.error},
+          {"clearance_violation", s.clearance_violation},
           {"exit_code", s.exit_code()}};
+  if (!s.clearance_checked) j.erase("clearance_violation");
+  return j;
 }
 
 json report_json(const ReportContext& ctx, const RunResult& r) {
@@ -108,6 +134,7 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
           {"direction_convention",
            "moving part b by depth * direction separates the pair; for separated pairs "
            "direction is a separating-plane normal pointing from a to b"},
+          {"simulated", r.simulated},
           {"summary", summary_json(summarize(r))},
           {"seconds", r.seconds},
           {"parts", parts},
@@ -118,9 +145,13 @@ std::string summary_line(const Summary& s, double seconds) {
   char buf[512];
   std::snprintf(
       buf, sizeof buf,
-      "pdcheck: %ld parts, %ld candidate pairs (%ld culled): %ld interference, %ld "
+      "pdcheck: %ld parts, %ld candidate pairs (%ld culled): %ld interference, %s%ld "
       "false_positive, %ld separated, %ld error%s in %.2f s",
-      s.parts, s.candidates, s.culled, s.interference, s.false_positive, s.separated, s.error,
+      s.parts, s.candidates, s.culled, s.interference,
+      s.clearance_checked
+          ? (std::to_string(s.clearance_violation) + " clearance_violation, ").c_str()
+          : "",
+      s.false_positive, s.separated, s.error,
       s.part_errors ? (", " + std::to_string(s.part_errors) + " part(s) unusable").c_str() : "",
       seconds);
   return buf;

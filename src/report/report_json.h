@@ -19,7 +19,10 @@ struct ReportContext {
 struct Summary {
   long parts = 0, part_errors = 0, all_pairs = 0, culled = 0, candidates = 0;
   long separated = 0, false_positive = 0, interference = 0, error = 0;
-  int exit_code() const;  ///< 3 if anything was unchecked, else 1 on interference, else 0
+  long clearance_violation = 0;
+  bool clearance_checked = false;
+  /// 3 if anything was unchecked, else 1 on interference or clearance violation, else 0
+  int exit_code() const;
 };
 Summary summarize(const RunResult& r);
 

@@ -73,6 +73,7 @@ std::vector<Part> build_parts(const SceneSpec& scene) {
   for (const PartSpec& spec : scene.parts) {
     if (!spec.mesh) {
       parts.push_back(build_part(spec));
+      parts.back().motion = spec.motion;
       continue;
     }
     const std::string key = cache_key(spec);
@@ -80,6 +81,7 @@ std::vector<Part> build_parts(const SceneSpec& scene) {
     if (it == cache.end()) it = cache.emplace(key, build_part(spec)).first;
     Part p = it->second;
     p.id = spec.id;
+    p.motion = spec.motion;
     parts.push_back(std::move(p));
   }
   return parts;

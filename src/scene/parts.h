@@ -7,6 +7,7 @@
 
 #include "geometry/aabb.h"
 #include "geometry/hull.h"
+#include "geometry/motion.h"
 #include "scene/scene.h"
 
 namespace pd {
@@ -19,6 +20,7 @@ struct Part {
   Aabb box;
   std::vector<std::string> warnings;
   std::optional<std::string> error;  ///< the part could not be used: its pairs are errors
+  std::optional<RigidMotion> motion;  ///< moving parts only (checks.motion)
 
   long hull_vertex_count() const;
 };

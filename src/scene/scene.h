@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/motion.h"
 #include "geometry/types.h"
 #include "solve/settings.h"
 
@@ -30,6 +31,25 @@ struct PartSpec {
   double to_scene_units = 1.0;      ///< part unit / scene unit
   Mat4 transform = Mat4::Identity();
   Pieces pieces = Pieces::kHull;
+  std::optional<RigidMotion> motion;  ///< only with checks.motion
+};
+
+/// Effects beyond the static check, computed only when the scene asks.
+struct ClearanceCheck {
+  double min = 0.0;  ///< scene units, > 0
+  struct PerPair {
+    std::string a, b;
+    double min;
+  };
+  std::vector<PerPair> pairs;  ///< overrides of `min` for named pairs
+};
+struct MotionCheck {
+  TimeGrid grid;
+  bool series = false;  ///< the whole signed-distance series in the report
+};
+struct Checks {
+  std::optional<ClearanceCheck> clearance;
+  std::optional<MotionCheck> motion;
 };
 
 /// Solver fields given by the scene; each overrides the default, and the
@@ -51,6 +71,7 @@ struct SceneSpec {
   std::vector<PartSpec> parts;
   std::optional<std::vector<std::pair<std::string, std::string>>> pairs;
   SolverOverrides solver;
+  Checks checks;
 };
 
 /// Parses a scene document. `path` names it in messages; mesh paths are taken

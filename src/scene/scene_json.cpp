@@ -98,7 +98,7 @@ Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
 PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
               const std::string& scene_units) {
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
-  only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces"});
+  only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces", "motion"});
   PartSpec p;
   p.where = c.file + ": " + at;
   if (!j.contains("id")) c.fail(at, "missing \"id\"");
@@ -129,6 +129,78 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     if (v == "meshes" && !has_mesh) c.fail(at + ".pieces", "\"meshes\" needs a mesh file");
   }
   return p;
+}
+
+Vec3 vec3(const Ctx& c, const json& j, const std::string& at) {
+  if (!j.is_array() || j.size() != 3) c.fail(at, "expected [x, y, z]");
+  return {number(c, j[0], at + "[0]"), number(c, j[1], at + "[1]"), number(c, j[2], at + "[2]")};
+}
+
+RigidMotion motion(const Ctx& c, const json& j, const std::string& at, double to_scene) {
+  if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
+  only_keys(c, j, at, {"angular_velocity", "about", "velocity"});
+  RigidMotion m;
+  if (j.contains("angular_velocity"))
+    m.angular = vec3(c, j["angular_velocity"], at + ".angular_velocity");
+  if (j.contains("about")) m.about = to_scene * vec3(c, j["about"], at + ".about");
+  if (j.contains("velocity")) m.velocity = to_scene * vec3(c, j["velocity"], at + ".velocity");
+  return m;
+}
+
+double positive(const Ctx& c, const json& j, const std::string& at) {
+  const double v = number(c, j, at);
+  if (!(v > 0)) c.fail(at, "must be > 0");
+  return v;
+}
+
+Checks checks(const Ctx& c, const json& j) {
+  if (!j.is_object()) c.fail("checks", std::string("expected an object, got ") + type_name(j));
+  only_keys(c, j, "checks", {"clearance", "motion"});
+  Checks k;
+  if (j.contains("clearance")) {
+    const json& cl = j["clearance"];
+    const std::string at = "checks.clearance";
+    if (!cl.is_object()) c.fail(at, "expected an object");
+    only_keys(c, cl, at, {"min", "pairs"});
+    if (!cl.contains("min")) c.fail(at, "missing \"min\"");
+    ClearanceCheck cc;
+    cc.min = positive(c, cl["min"], at + ".min");
+    if (cl.contains("pairs")) {
+      if (!cl["pairs"].is_array()) c.fail(at + ".pairs", "expected a list");
+      for (size_t n = 0; n < cl["pairs"].size(); ++n) {
+        const json& e = cl["pairs"][n];
+        const std::string ae = at + ".pairs[" + std::to_string(n) + "]";
+        if (!e.is_object()) c.fail(ae, "expected {\"pair\": [id, id], \"min\": d}");
+        only_keys(c, e, ae, {"pair", "min"});
+        if (!e.contains("pair") || !e["pair"].is_array() || e["pair"].size() != 2)
+          c.fail(ae + ".pair", "expected [id, id]");
+        if (!e.contains("min")) c.fail(ae, "missing \"min\"");
+        cc.pairs.push_back({string(c, e["pair"][0], ae + ".pair[0]"),
+                            string(c, e["pair"][1], ae + ".pair[1]"),
+                            positive(c, e["min"], ae + ".min")});
+      }
+    }
+    k.clearance = cc;
+  }
+  if (j.contains("motion")) {
+    const json& mj = j["motion"];
+    const std::string at = "checks.motion";
+    if (!mj.is_object()) c.fail(at, "expected an object");
+    only_keys(c, mj, at, {"t0", "t1", "dt", "series"});
+    MotionCheck m;
+    if (mj.contains("t0")) m.grid.t0 = number(c, mj["t0"], at + ".t0");
+    if (!mj.contains("t1")) c.fail(at, "missing \"t1\"");
+    m.grid.t1 = number(c, mj["t1"], at + ".t1");
+    if (m.grid.t1 < m.grid.t0) c.fail(at + ".t1", "must be >= t0");
+    if (mj.contains("dt")) m.grid.dt = positive(c, mj["dt"], at + ".dt");
+    if (m.grid.steps() > 1000000) c.fail(at, "more than 1,000,000 time steps");
+    if (mj.contains("series")) {
+      if (!mj["series"].is_boolean()) c.fail(at + ".series", "expected true or false");
+      m.series = mj["series"].get<bool>();
+    }
+    k.motion = m;
+  }
+  return k;
 }
 
 SolverOverrides solver(const Ctx& c, const json& j) {
@@ -229,7 +301,13 @@ SceneSpec parse_scene_json(const std::string& text, const std::string& path,
     }
   }
   if (doc.contains("solver")) s.solver = solver(c, doc["solver"]);
-  if (doc.contains("checks")) c.fail("checks", "clearance and motion checks are not available yet");
+  if (doc.contains("checks")) s.checks = checks(c, doc["checks"]);
+  for (size_t k = 0; k < parts.size(); ++k) {
+    if (!parts[k].contains("motion")) continue;
+    const std::string at = "parts[" + std::to_string(k) + "].motion";
+    if (!s.checks.motion) c.fail(at, "a motion needs a time grid: add checks.motion {t0, t1, dt}");
+    s.parts[k].motion = motion(c, parts[k]["motion"], at, 1.0);  // scene units
+  }
   validate_scene(s);
   return s;
 }
@@ -259,6 +337,13 @@ void validate_scene(const SceneSpec& s) {
       if (a == b)
         throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: a part paired with itself");
     }
+  }
+  if (s.checks.clearance) {
+    for (size_t k = 0; k < s.checks.clearance->pairs.size(); ++k)
+      for (const auto& id : {s.checks.clearance->pairs[k].a, s.checks.clearance->pairs[k].b})
+        if (!ids.count(id))
+          throw SceneError(s.path + ": checks.clearance.pairs[" + std::to_string(k) +
+                           "]: unknown part id \"" + id + "\"");
   }
 }
 

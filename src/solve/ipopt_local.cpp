@@ -26,8 +26,8 @@ using Ipopt::Number;
 class DepthTnlp : public Ipopt::TNLP {
  public:
   DepthTnlp(const Points& p, const Points& q, const std::vector<int>& pi,
-            const std::vector<int>& qj, const LocalStart& start)
-      : p_(p), q_(q), pi_(pi), qj_(qj), start_(start) {}
+            const std::vector<int>& qj, const LocalStart& start, bool alpha_free)
+      : p_(p), q_(q), pi_(pi), qj_(qj), start_(start), alpha_free_(alpha_free) {}
 
   LocalOutcome outcome;
 
@@ -46,7 +46,7 @@ class DepthTnlp : public Ipopt::TNLP {
       xl[k] = -2e19;
       xu[k] = 2e19;
     }
-    xl[4] = 0.0;  // α >= 0
+    if (!alpha_free_) xl[4] = 0.0;  // α >= 0 (free: the signed distance of separated pairs)
     const Index nq = static_cast<Index>(qj_.size());
     for (Index r = 0; r < m - 1; ++r) {
       gl[r] = r < nq ? 0.0 : -2e19;
@@ -64,7 +64,7 @@ class DepthTnlp : public Ipopt::TNLP {
       x[1] = start_.v.y();
       x[2] = start_.v.z();
       x[3] = start_.c;
-      x[4] = std::max(start_.alpha, 0.0);
+      x[4] = alpha_free_ ? start_.alpha : std::max(start_.alpha, 0.0);
     }
     return true;
   }
@@ -138,6 +138,7 @@ class DepthTnlp : public Ipopt::TNLP {
   const std::vector<int>& pi_;
   const std::vector<int>& qj_;
   LocalStart start_;
+  bool alpha_free_;
 };
 
 const char* status_name(Ipopt::ApplicationReturnStatus s) {
@@ -197,14 +198,14 @@ LocalStart IpoptLocalSolver::paper_start(const Points& p, const Points& q, const
 
 LocalOutcome IpoptLocalSolver::solve(const Points& p, const Points& q, const std::vector<int>& pi,
                                      const std::vector<int>& qj, const LocalStart& start,
-                                     bool warm) {
+                                     bool warm, bool alpha_free) {
   auto& o = *impl_->app->Options();
   // A start next to the optimum needs no large barrier: a small mu_init and a
   // small push off the bounds keep Ipopt from walking away first.
   o.SetNumericValue("mu_init", warm ? 1e-6 : 0.1);
   o.SetNumericValue("bound_push", warm ? 1e-8 : 1e-2);
   o.SetNumericValue("bound_frac", warm ? 1e-8 : 1e-2);
-  Ipopt::SmartPtr<DepthTnlp> nlp = new DepthTnlp(p, q, pi, qj, start);
+  Ipopt::SmartPtr<DepthTnlp> nlp = new DepthTnlp(p, q, pi, qj, start, alpha_free);
   const Ipopt::ApplicationReturnStatus st = impl_->app->OptimizeTNLP(nlp);
   LocalOutcome out = nlp->outcome;
   out.status = status_name(st);

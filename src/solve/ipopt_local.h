@@ -36,9 +36,12 @@ class IpoptLocalSolver {
 
   /// Solves over the vertex subsets `pi` of p and `qj` of q (all_indices() for
   /// the paper's full problem). `warm` starts with a small barrier: for starts
-  /// next to an optimum.
+  /// next to an optimum. `alpha_free` drops α >= 0: α is then the signed gap,
+  /// and its minimum minus the separation distance of a separated pair (Zhou
+  /// et al.'s NLP for the minimum translational distance).
   LocalOutcome solve(const Points& p, const Points& q, const std::vector<int>& pi,
-                     const std::vector<int>& qj, const LocalStart& start, bool warm);
+                     const std::vector<int>& qj, const LocalStart& start, bool warm,
+                     bool alpha_free = false);
 
   /// The start of the paper's Algorithm 2: c0 = max p·v0, α0 = c0 − min q·v0.
   static LocalStart paper_start(const Points& p, const Points& q, const Vec3& v0);

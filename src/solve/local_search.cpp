@@ -55,7 +55,7 @@ DescentOutcome descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats)
 }
 
 LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,
-                   SolveStats& stats) {
+                   SolveStats& stats, bool alpha_free) {
   // The reduced problem: a band of 0.05 in the unit frame holds every vertex that
   // is active within a few degrees of the descent's end point.
   const double band = 0.05;
@@ -64,7 +64,7 @@ LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v
   LocalStart start = IpoptLocalSolver::paper_start(pr.p(), pr.q(), v0);
   LocalOutcome o;
   for (int round = 0; round < 6; ++round) {
-    o = ipopt.solve(pr.p(), pr.q(), pi, qj, start, true);
+    o = ipopt.solve(pr.p(), pr.q(), pi, qj, start, true, alpha_free);
     count(o, stats);
     if (!o.converged) break;
     // Feasibility over all vertices: the reduced optimum is the full one when no
@@ -78,7 +78,7 @@ LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v
     // Retry once on the full problem from the paper's cold start.
     const auto all_p = all_indices(pr.p().cols()), all_q = all_indices(pr.q().cols());
     o = ipopt.solve(pr.p(), pr.q(), all_p, all_q, IpoptLocalSolver::paper_start(pr.p(), pr.q(), v0),
-                    false);
+                    false, alpha_free);
     count(o, stats);
     if (!o.converged) return {o.v, pr.gap(o.v), false, o.status};
   }

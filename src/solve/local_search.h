@@ -27,6 +27,6 @@ LocalResult paper_local_search(const PairProblem& pr, IpoptLocalSolver& ipopt, c
 /// fewer Ipopt iterations, depth exact to rounding.
 DescentOutcome descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats);
 LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,
-                   SolveStats& stats);
+                   SolveStats& stats, bool alpha_free = false);
 
 }  // namespace pd

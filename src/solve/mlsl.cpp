@@ -123,6 +123,15 @@ bool certify(const PairProblem& pr, IpoptLocalSolver& ipopt, Optimum& best, Solv
 
 }  // namespace
 
+bool certify_minimum(const PairProblem& pr, IpoptLocalSolver& ipopt, Vec3& v, double& gap,
+                     SolveStats& stats) {
+  Optimum best{v, gap};
+  const bool ok = certify(pr, ipopt, best, stats);
+  v = best.v;
+  gap = best.gap;
+  return ok;
+}
+
 DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s) {
   const auto t0 = Clock::now();
   SphereSampler rng(s.seed);

@@ -1,0 +1,65 @@
+#include "solve/signed_distance.h"
+
+#include "solve/exact.h"
+#include "solve/local_search.h"
+#include "solve/methods.h"
+#include "solve/mlsl.h"
+#include "solve/objective.h"
+
+namespace pd {
+
+namespace {
+
+// Separated: the gap has one minimum on the sphere (−distance), so a local
+// solve from any direction with a negative gap reaches it.
+SignedSolution separation(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,
+                          SolveStats stats) {
+  const LocalResult lr = polish(pr, ipopt, v0, stats, true);
+  SignedSolution out;
+  const double g0 = pr.gap(v0);
+  const bool use = lr.converged && lr.gap <= g0;
+  out.value = pr.frame().length_to_world(use ? lr.gap : g0);
+  out.direction = use ? lr.v : v0;
+  if (!lr.converged) out.fallback = "distance solve did not converge (" + lr.status + ")";
+  stats.alpha_evaluations += pr.evaluations();
+  out.stats = stats;
+  return out;
+}
+
+}  // namespace
+
+SignedSolution signed_distance(const Points& a, const Points& b, const SolverSettings& s,
+                               IpoptLocalSolver& ipopt, const std::optional<Vec3>& warm) {
+  const PairProblem pr(a, b);
+  if (s.method == Method::kExact) {
+    const DepthSolution e = exact_depth(pr.p(), pr.q());
+    SignedSolution out;
+    const double dist = e.distance.value_or(0.0);
+    out.value = pr.frame().length_to_world(e.depth > 0 ? e.depth : (dist > 0 ? -dist : 0.0));
+    out.direction = e.direction;  // both conventions point from a to b
+    return out;
+  }
+  if (warm) {
+    SolveStats stats;
+    const LocalResult lr = polish(pr, ipopt, *warm, stats, true);
+    Vec3 v = lr.v;
+    double g = lr.gap;
+    if (pr.gap(*warm) < g) v = *warm, g = pr.gap(*warm);
+    if (g < 0) return separation(pr, ipopt, v, stats);
+    // Overlapping: a local optimum from the warm start, proved global (or not).
+    if (certify_minimum(pr, ipopt, v, g, stats)) {
+      SignedSolution out;
+      out.value = pr.frame().length_to_world(std::max(0.0, g));
+      out.direction = v;
+      stats.alpha_evaluations += pr.evaluations();
+      out.stats = stats;
+      return out;
+    }
+  }
+  const DepthSolution d = solve_convex_pair(a, b, s, ipopt);
+  if (d.depth > 0) return {d.depth, d.direction, d.stats, d.fallback};
+  // depth 0: d.direction separates (gap <= 0 there); the distance from it.
+  return separation(pr, ipopt, d.direction, d.stats);
+}
+
+}  // namespace pd
