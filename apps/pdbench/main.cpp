@@ -91,8 +91,8 @@ bool selected(const std::vector<std::string>& wanted, const std::string& name) {
 
 // The paper's 14 problems had these vertex counts; ours are new random pairs
 // with the same counts (the paper's polytopes are not published).
-const std::pair<int, int> kPaperProblems[14] = {{8, 8},  {6, 9},  {14, 5}, {8, 10}, {9, 7},
-                                                {10, 5}, {13, 6}, {9, 8},  {15, 9}, {15, 11},
+const std::pair<int, int> kPaperProblems[14] = {{8, 8},  {6, 9},  {14, 5}, {8, 10},  {9, 7},
+                                                {10, 5}, {13, 6}, {9, 8},  {15, 9},  {15, 11},
                                                 {8, 11}, {10, 6}, {10, 8}, {103, 93}};
 
 testgen::PairCase paper_problem(SphereSampler& r, int k) {

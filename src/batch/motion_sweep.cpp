@@ -61,7 +61,8 @@ Aabb swept_box(const Part& p, const TimeGrid& grid) {
   Aabb box = p.box;
   if (!p.motion) return box;
   for (long k = 0; k < grid.steps(); ++k)
-    for (const Hull& h : p.pieces) box = box.merged(Aabb::of(p.motion->at(h.vertices, grid.time(k))));
+    for (const Hull& h : p.pieces)
+      box = box.merged(Aabb::of(p.motion->at(h.vertices, grid.time(k))));
   return box;
 }
 

@@ -17,8 +17,8 @@ const char* status_name(Status s);
 /// (depth > 0 when overlapping, −distance when not) over the time grid.
 struct MotionTrace {
   long steps = 0;
-  double max_depth = 0.0, t_max_depth = 0.0;      ///< the deepest step (0 if never overlapping)
-  std::optional<double> min_distance;             ///< the smallest separation, if any step is apart
+  double max_depth = 0.0, t_max_depth = 0.0;  ///< the deepest step (0 if never overlapping)
+  std::optional<double> min_distance;         ///< the smallest separation, if any step is apart
   double t_min_distance = 0.0;
   std::vector<std::pair<double, double>> series;  ///< (t, s(t)), when the scene asks
 };

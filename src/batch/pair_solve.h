@@ -11,7 +11,7 @@ namespace pd {
 
 /// What a pair is checked for beyond the static depth; empty for a static scene.
 struct PairChecks {
-  std::optional<double> clearance;  ///< the required clearance
+  std::optional<double> clearance;      ///< the required clearance
   const MotionCheck* motion = nullptr;  ///< set when a part of the pair moves
 };
 

@@ -36,8 +36,11 @@ std::string encode_pair_result(const PairResult& r) {
   if (r.clearance_min) j["c"] = *r.clearance_min;
   if (r.motion) {
     const MotionTrace& m = *r.motion;
-    j["mo"] = {{"n", m.steps}, {"d", m.max_depth}, {"td", m.t_max_depth},
-               {"tc", m.t_min_distance}, {"s", m.series}};
+    j["mo"] = {{"n", m.steps},
+               {"d", m.max_depth},
+               {"td", m.t_max_depth},
+               {"tc", m.t_min_distance},
+               {"s", m.series}};
     if (m.min_distance) j["mo"]["c"] = *m.min_distance;
   }
   return j.dump();
@@ -153,9 +156,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
     const auto [a, b] = pairs[k];
     if (crash && parts[a].id + ":" + parts[b].id == crash) std::abort();
-    return encode_pair_result(
-        solve_part_pair(a, parts[a], b, parts[b], options.solver, options.tolerance, *ipopt,
-                        pair_checks(a, b)));
+    return encode_pair_result(solve_part_pair(a, parts[a], b, parts[b], options.solver,
+                                              options.tolerance, *ipopt, pair_checks(a, b)));
   };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
     PairResult r;

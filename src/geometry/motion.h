@@ -16,8 +16,8 @@ struct RigidMotion {
 
   Points at(const Points& x, double t) const {
     const double w = angular.norm();
-    const Eigen::Matrix3d r =
-        w > 0 ? Eigen::AngleAxisd(w * t, angular / w).toRotationMatrix() : Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d r = w > 0 ? Eigen::AngleAxisd(w * t, angular / w).toRotationMatrix()
+                                    : Eigen::Matrix3d::Identity();
     Points out = r * (x.colwise() - about);
     out.colwise() += about + velocity * t;
     return out;

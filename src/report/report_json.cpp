@@ -85,16 +85,16 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
 
 json summary_json(const Summary& s) {
   json j = {{"parts", s.parts},
-          {"part_errors", s.part_errors},
-          {"pairs", s.all_pairs},
-          {"culled", s.culled},
-          {"candidate_pairs", s.candidates},
-          {"separated", s.separated},
-          {"false_positive", s.false_positive},
-          {"interference", s.interference},
-          {"error", s.error},
-          {"clearance_violation", s.clearance_violation},
-          {"exit_code", s.exit_code()}};
+            {"part_errors", s.part_errors},
+            {"pairs", s.all_pairs},
+            {"culled", s.culled},
+            {"candidate_pairs", s.candidates},
+            {"separated", s.separated},
+            {"false_positive", s.false_positive},
+            {"interference", s.interference},
+            {"error", s.error},
+            {"clearance_violation", s.clearance_violation},
+            {"exit_code", s.exit_code()}};
   if (!s.clearance_checked) j.erase("clearance_violation");
   return j;
 }

@@ -19,7 +19,7 @@ struct Part {
   std::vector<Hull> pieces;  ///< convex pieces (one unless pieces = "meshes")
   Aabb box;
   std::vector<std::string> warnings;
-  std::optional<std::string> error;  ///< the part could not be used: its pairs are errors
+  std::optional<std::string> error;   ///< the part could not be used: its pairs are errors
   std::optional<RigidMotion> motion;  ///< moving parts only (checks.motion)
 
   long hull_vertex_count() const;

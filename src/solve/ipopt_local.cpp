@@ -197,8 +197,8 @@ LocalStart IpoptLocalSolver::paper_start(const Points& p, const Points& q, const
 }
 
 LocalOutcome IpoptLocalSolver::solve(const Points& p, const Points& q, const std::vector<int>& pi,
-                                     const std::vector<int>& qj, const LocalStart& start,
-                                     bool warm, bool alpha_free) {
+                                     const std::vector<int>& qj, const LocalStart& start, bool warm,
+                                     bool alpha_free) {
   auto& o = *impl_->app->Options();
   // A start next to the optimum needs no large barrier: a small mu_init and a
   // small push off the bounds keep Ipopt from walking away first.

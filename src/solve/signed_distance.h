@@ -13,7 +13,7 @@
 namespace pd {
 
 struct SignedSolution {
-  double value = 0.0;  ///< depth (> 0), or −distance (<= 0); world units
+  double value = 0.0;              ///< depth (> 0), or −distance (<= 0); world units
   Vec3 direction = Vec3::UnitZ();  ///< moving b by value·direction brings the pair to contact
   SolveStats stats;
   std::string fallback;

@@ -1,0 +1,165 @@
+// Clearance checks and motion sweeps, against exact values; and a static scene
+// pays nothing for them.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "batch/motion_sweep.h"
+#include "batch/run.h"
+#include "corpus/generators.h"
+#include "report/report_json.h"
+#include "solve/exact.h"
+#include "solve/signed_distance.h"
+
+using namespace pd;
+using nlohmann::json;
+
+namespace {
+
+json cube(const std::string& id, double x, double y = 0, double z = 0, double s = 1) {
+  json v = json::array();
+  for (int k = 0; k < 8; ++k)
+    v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), z + s * ((k >> 2) & 1)});
+  return {{"id", id}, {"vertices", v}};
+}
+
+json run(const json& scene) {
+  const SceneSpec spec = parse_scene_json(scene.dump(), "test.json", ".");
+  RunOptions o;
+  o.tolerance = *spec.tolerance;
+  o.quiet = true;
+  spec.solver.apply(o.solver);
+  const RunResult r = run_scene(spec, o);
+  ReportContext ctx{"test.json", "mm", o.tolerance, o.solver};
+  json j = json::parse(report_json(ctx, r).dump());
+  j.erase("seconds");
+  for (auto& p : j["pairs"]) p.erase("time_ms");
+  return j;
+}
+
+const json* find_pair(const json& report, const std::string& a, const std::string& b) {
+  for (const auto& p : report["pairs"])
+    if (p["a"] == a && p["b"] == b) return &p;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(Checks, StaticScenePaysNothing) {
+  // The same pairs, the same solves (counters included), the same report.
+  const json base = {
+      {"tolerance", 0.1},
+      {"parts", {cube("a", 0), cube("b", 0.95), cube("c", 1.99, 0.2), cube("d", 9)}}};
+  json with = base;
+  with["checks"] = json::object();
+  EXPECT_EQ(run(base), run(with));
+  EXPECT_EQ(run(base)["simulated"], json({"interference"}));
+}
+
+TEST(Checks, ClearanceViolationsAgainstExactDistances) {
+  json scene = {
+      {"tolerance", 0.1},
+      {"parts", {cube("a", 0), cube("b", 4), cube("c", 0, 8), cube("d", 0, 0, 5.5)}},
+      {"checks",
+       {{"clearance", {{"min", 5.0}, {"pairs", {{{"pair", {"a", "d"}}, {"min", 2.0}}}}}}}}};
+  const json r = run(scene);
+  EXPECT_EQ(r["simulated"], json({"interference", "clearance"}));
+  const json* ab = find_pair(r, "a", "b");  // 3 apart: violates 5
+  ASSERT_TRUE(ab);
+  EXPECT_EQ((*ab)["status"], "clearance_violation");
+  EXPECT_NEAR((*ab)["clearance"]["distance"].get<double>(), 3.0, 1e-9);
+  const json* ac = find_pair(r, "a", "c");  // 7 apart: beyond the inflated broad phase
+  EXPECT_FALSE(ac);
+  const json* ad = find_pair(r, "a", "d");  // 4.5 apart, its own minimum 2: fine
+  ASSERT_TRUE(ad);
+  EXPECT_EQ((*ad)["status"], "separated");
+  EXPECT_NEAR((*ad)["clearance"]["distance"].get<double>(), 4.5, 1e-9);
+  EXPECT_EQ(r["summary"]["clearance_violation"], 1);
+  EXPECT_EQ(r["summary"]["exit_code"], 1);
+}
+
+TEST(Checks, IpoptDistanceMatchesTheExactDistance) {
+  SphereSampler rng(606);
+  IpoptLocalSolver ipopt;
+  SolverSettings s;
+  int separated = 0;
+  for (int k = 0; k < 40; ++k) {
+    const testgen::PairCase c = testgen::paper_like_any(rng);
+    SolverSettings e = s;
+    e.method = Method::kExact;
+    const SignedSolution exact = signed_distance(c.a, c.b, e, ipopt, std::nullopt);
+    const SignedSolution m = signed_distance(c.a, c.b, s, ipopt, std::nullopt);
+    const double size = (c.a.rowwise().maxCoeff() - c.a.rowwise().minCoeff()).norm();
+    EXPECT_NEAR(m.value, exact.value, 1e-9 * size) << k;
+    // Warm-started from a nearby direction: the same value.
+    const SignedSolution w = signed_distance(
+        c.a, c.b, s, ipopt, Vec3(m.direction + Vec3(0.05, -0.03, 0.02)).normalized());
+    EXPECT_NEAR(w.value, exact.value, 1e-9 * size) << k;
+    separated += exact.value < 0;
+  }
+  EXPECT_GT(separated, 5);  // the set holds both kinds
+}
+
+TEST(Checks, MotionSweepAgainstAnalyticValues) {
+  // b slides along −x through a at 1 unit/s: s(t) = t − 2 until contact at t = 2,
+  // then the overlap 1 − |t − 3| (the x overlap is the smallest way out).
+  json scene = {{"tolerance", 0.1},
+                {"parts", {cube("a", 0), cube("b", 3)}},
+                {"checks", {{"motion", {{"t0", 0}, {"t1", 4}, {"dt", 0.5}, {"series", true}}}}}};
+  scene["parts"][1]["motion"] = {{"velocity", {-1, 0, 0}}};
+  const json r = run(scene);
+  const json* ab = find_pair(r, "a", "b");
+  ASSERT_TRUE(ab);
+  const json& m = (*ab)["motion"];
+  EXPECT_EQ(m["steps"], 9);
+  EXPECT_NEAR(m["max_depth"].get<double>(), 1.0, 1e-9);
+  EXPECT_EQ(m["t_max_depth"], 3.0);
+  EXPECT_NEAR(m["min_distance"].get<double>(), 0.0, 1e-9);
+  ASSERT_EQ(m["series"].size(), 9u);
+  for (const auto& p : m["series"]) {
+    const double t = p[0], v = p[1];
+    const double expected = t < 2 ? t - 2 : 1 - std::abs(t - 3);
+    EXPECT_NEAR(v, expected, 1e-9) << "t = " << t;
+  }
+  EXPECT_EQ((*ab)["status"], "interference");
+  EXPECT_EQ(r["simulated"], json({"interference", "motion"}));
+}
+
+TEST(Checks, WarmStartGivesTheColdValues) {
+  SphereSampler rng(2006);
+  const testgen::PairCase c = testgen::zhou_spheres(rng, 60);
+  Part a, b;
+  a.pieces.push_back(convex_hull(c.a));
+  b.pieces.push_back(convex_hull(c.b));
+  a.motion = RigidMotion{Vec3(0, 0, 0.05), Vec3::Zero(), Vec3::Zero()};
+  b.motion = RigidMotion{Vec3::Zero(), Vec3::Zero(), -0.01 * Vec3(2, 1, 3)};
+  MotionCheck m;
+  m.grid = {0, 400, 20};
+  m.series = true;
+  IpoptLocalSolver ipopt;
+  const MotionSweep warm = sweep_pair(a, b, m, SolverSettings{}, ipopt, true);
+  const MotionSweep cold = sweep_pair(a, b, m, SolverSettings{}, ipopt, false);
+  ASSERT_EQ(warm.trace.series.size(), cold.trace.series.size());
+  for (size_t k = 0; k < warm.trace.series.size(); ++k) {
+    const double t = warm.trace.series[k].first;
+    // Both against the exact hull at that time.
+    const Points pa = a.motion->at(a.pieces[0].vertices, t),
+                 pb = b.motion->at(b.pieces[0].vertices, t);
+    SolverSettings e;
+    e.method = Method::kExact;
+    const double exact = signed_distance(pa, pb, e, ipopt, std::nullopt).value;
+    EXPECT_NEAR(warm.trace.series[k].second, exact, 1e-8) << t;
+    EXPECT_NEAR(cold.trace.series[k].second, exact, 1e-8) << t;
+  }
+}
+
+TEST(Checks, MotionNeedsATimeGrid) {
+  json scene = {{"tolerance", 0.1}, {"parts", {cube("a", 0), cube("b", 3)}}};
+  scene["parts"][1]["motion"] = {{"velocity", {-1, 0, 0}}};
+  try {
+    parse_scene_json(scene.dump(), "s.json", ".");
+    FAIL() << "accepted a motion without checks.motion";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("parts[1].motion"), std::string::npos) << e.what();
+  }
+}
