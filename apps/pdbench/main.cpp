@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "corpus/generators.h"
+#include "batch/motion_sweep.h"
 #include "solve/methods.h"
 
 namespace {
@@ -154,6 +155,39 @@ int paper_tables(std::uint64_t seed, const std::string& json_path) {
   return 0;
 }
 
+// Zhou et al.'s experiment for each m: time per step warm-started from the
+// previous step and solved from scratch, and the Ipopt work of each.
+int zhou_timing(const std::string& ms, int steps) {
+  IpoptLocalSolver ipopt;
+  std::printf("| m | steps | warm ms/step | cold ms/step | cold / warm | warm Ipopt calls/step | "
+              "cold Ipopt calls/step |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const std::string& token : split(ms)) {
+    const int m = std::stoi(token);
+    SphereSampler r(1);
+    Part a, b;
+    a.pieces.push_back(convex_hull(testgen::sphere_polytope(r, m, Vec3::Zero(), 10)));
+    b.pieces.push_back(convex_hull(testgen::sphere_polytope(r, m, Vec3(20, 10, 30), 10)));
+    a.motion = RigidMotion{Vec3(0, 0, 0.05), Vec3::Zero(), Vec3::Zero()};
+    b.motion = RigidMotion{Vec3::Zero(), Vec3::Zero(), -0.01 * Vec3(2, 1, 3)};
+    MotionCheck check;
+    check.grid = {0, double(steps - 1), 1};
+    double ms_per[2];
+    int calls[2];
+    for (int w = 0; w < 2; ++w) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const MotionSweep sw = sweep_pair(a, b, check, SolverSettings{}, ipopt, w == 0);
+      ms_per[w] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                      .count() / steps;
+      calls[w] = sw.stats.ipopt_calls;
+    }
+    std::printf("| %d | %d | %.3g | %.3g | %.2f | %.2f | %.2f |\n", m, steps, ms_per[0], ms_per[1],
+                ms_per[1] / ms_per[0], double(calls[0]) / steps, double(calls[1]) / steps);
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -171,11 +205,16 @@ int main(int argc, char** argv) {
   app.add_option("--json", json_path, "also write every row and every pair's point here");
   bool verbose = false;
   app.add_flag("--verbose", verbose, "name every pair off by more than 1e-9 relative (stderr)");
+  std::string zhou;
+  int zhou_steps = 2000;
+  app.add_option("--zhou", zhou, "Zhou et al.'s motion experiment for these m (e.g. 10,100,1000)");
+  app.add_option("--zhou-steps", zhou_steps, "time steps of --zhou")->check(CLI::PositiveNumber);
   bool paper = false;
   app.add_flag("--paper-tables", paper,
                "the paper's Tables I and II on 14 new pairs with its vertex counts");
   CLI11_PARSE(app, argc, argv);
   if (paper) return paper_tables(seed, json_path);
+  if (!zhou.empty()) return zhou_timing(zhou, zhou_steps);
 
   const auto want_sets = split(sets_arg), want_methods = split(methods_arg);
   IpoptLocalSolver ipopt;
