@@ -1,6 +1,7 @@
 // The pdcheck binary end to end: exit codes, messages, reports.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -22,10 +23,13 @@ struct CliRun {
 // Runs pdcheck through the shell; stderr goes to a file so both can be read.
 CliRun pdcheck(const std::string& args, const std::string& stdin_text = "",
                const std::string& env = "") {
-  const std::string err_file = testing::TempDir() + "pdcheck_err.txt";
+  // Per process: ctest runs tests in parallel, each in its own process.
+  const std::string err_file =
+      testing::TempDir() + "pdcheck_err_" + std::to_string(getpid()) + ".txt";
   std::string cmd = env + " " + std::string(PDCHECK_BINARY) + " " + args + " 2>" + err_file;
   if (!stdin_text.empty()) {
-    const std::string in_file = testing::TempDir() + "pdcheck_in.txt";
+    const std::string in_file =
+        testing::TempDir() + "pdcheck_in_" + std::to_string(getpid()) + ".txt";
     std::ofstream(in_file) << stdin_text;
     cmd += " <" + in_file;
   } else {
