@@ -19,7 +19,7 @@ for scene in assembly-10k pairs-2000; do
     if [ -x /usr/bin/time ]; then
       /usr/bin/time -f "%M" -o "$OUT/rss" "$ROOT/build/bin/pdcheck" "$OUT/$scene.json" -q \
         --jobs "$jobs" -o "$OUT/$scene-j$jobs.json" || true
-      rss=$(( $(cat "$OUT/rss") / 1024 ))
+      rss=$(( $(tail -n 1 "$OUT/rss") / 1024 ))  # GNU time notes a non-zero exit first
     else
       "$ROOT/build/bin/pdcheck" "$OUT/$scene.json" -q --jobs "$jobs" -o "$OUT/$scene-j$jobs.json" || true
       rss="?"
