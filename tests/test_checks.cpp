@@ -54,6 +54,14 @@ TEST(Checks, StaticScenePaysNothing) {
   with["checks"] = json::object();
   EXPECT_EQ(run(base), run(with));
   EXPECT_EQ(run(base)["simulated"], json({"interference"}));
+  // A time grid but no moving part: the pairs are checked statically, as before.
+  json grid = base;
+  grid["checks"] = {{"motion", {{"t1", 100}}}};
+  json swept = run(grid), plain = run(base);
+  EXPECT_EQ(swept["simulated"], json({"interference", "motion"}));
+  swept.erase("simulated");
+  plain.erase("simulated");
+  EXPECT_EQ(swept, plain);
 }
 
 TEST(Checks, ClearanceViolationsAgainstExactDistances) {

@@ -24,7 +24,8 @@ TEST(SceneJson, ErrorsNameFileAndJsonPath) {
   EXPECT_EQ(
       error_of(
           R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0,0]], "transfrom": []}]})"),
-      "s.json: parts[0].transfrom: unknown key (allowed: id, mesh, motion, pieces, transform, units, "
+      "s.json: parts[0].transfrom: unknown key (allowed: id, mesh, motion, pieces, transform, "
+      "units, "
       "vertices)");
   EXPECT_EQ(error_of(R"({"tolerance": "1", "parts": []})"),
             "s.json: tolerance: expected a number, got string");

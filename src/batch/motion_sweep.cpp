@@ -32,11 +32,7 @@ MotionSweep sweep_pair(const Part& a, const Part& b, const MotionCheck& check,
             signed_distance(placed(a, a.pieces[i], t), placed(b, b.pieces[j], t), s, ipopt,
                             warm ? last[i * nq + j] : std::nullopt);
         last[i * nq + j] = r.direction;
-        out.stats.alpha_evaluations += r.stats.alpha_evaluations;
-        out.stats.local_solves += r.stats.local_solves;
-        out.stats.ipopt_calls += r.stats.ipopt_calls;
-        out.stats.ipopt_iterations += r.stats.ipopt_iterations;
-        out.stats.ipopt_failures += r.stats.ipopt_failures;
+        out.stats += r.stats;
         if (!r.fallback.empty()) out.fallback = r.fallback + " at t = " + std::to_string(t);
         if (r.value > value) value = r.value, dir = r.direction;
       }

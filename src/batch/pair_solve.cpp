@@ -33,14 +33,26 @@ Status classify(double depth, double tolerance, double pair_size) {
 
 namespace {
 
-void add(SolveStats& t, const SolveStats& s) {
-  t.alpha_evaluations += s.alpha_evaluations;
-  t.local_solves += s.local_solves;
-  t.distinct_optima += s.distinct_optima;
-  t.ipopt_iterations += s.ipopt_iterations;
-  t.ipopt_calls += s.ipopt_calls;
-  t.ipopt_failures += s.ipopt_failures;
-  t.mlsl_iterations += s.mlsl_iterations;
+// The static check: every piece pair, the deepest one counts.
+void solve_static(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt,
+                  PairResult& r) {
+  bool first = true;
+  for (const Hull& pa : a.pieces) {
+    for (const Hull& pb : b.pieces) {
+      if (a.pieces.size() * b.pieces.size() > 1 &&
+          !Aabb::of(pa.vertices).overlaps(Aabb::of(pb.vertices)))
+        continue;  // pieces whose boxes are apart cannot overlap
+      const DepthSolution d = solve_convex_pair(pa.vertices, pb.vertices, s, ipopt);
+      r.stats += d.stats;
+      if (!d.fallback.empty()) r.fallback = d.fallback;
+      if (first || d.depth > r.depth) {
+        r.depth = d.depth;
+        r.direction = d.direction;
+        r.distance = d.distance;
+        first = false;
+      }
+    }
+  }
 }
 
 // The separation distance of a separated pair: the smallest over its piece
@@ -51,7 +63,7 @@ double static_distance(const Part& a, const Part& b, const Vec3& dir, const Solv
   for (const Hull& pa : a.pieces)
     for (const Hull& pb : b.pieces) {
       const SignedSolution r = signed_distance(pa.vertices, pb.vertices, s, ipopt, dir);
-      add(stats, r.stats);
+      stats += r.stats;
       d = std::min(d, std::max(0.0, -r.value));
     }
   return d;
@@ -74,32 +86,16 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
   }
   try {
     r.clearance_min = checks.clearance;
-    if (checks.motion) {
+    if (checks.motion) {  // the sweep replaces the static solve
       const MotionSweep sw = sweep_pair(a, b, *checks.motion, s, ipopt);
       r.motion = sw.trace;
       r.depth = sw.trace.max_depth;
       r.direction = sw.direction_at_max;
       r.distance = sw.trace.min_distance;
       r.fallback = sw.fallback;
-      add(r.stats, sw.stats);
-    }
-    bool first = true;
-    for (const Hull& pa : a.pieces) {
-      if (checks.motion) break;  // the sweep replaced the static solve
-      for (const Hull& pb : b.pieces) {
-        if (a.pieces.size() * b.pieces.size() > 1 &&
-            !Aabb::of(pa.vertices).overlaps(Aabb::of(pb.vertices)))
-          continue;  // pieces whose boxes are apart cannot overlap
-        const DepthSolution d = solve_convex_pair(pa.vertices, pb.vertices, s, ipopt);
-        add(r.stats, d.stats);
-        if (!d.fallback.empty()) r.fallback = d.fallback;
-        if (first || d.depth > r.depth) {
-          r.depth = d.depth;
-          r.direction = d.direction;
-          r.distance = d.distance;
-          first = false;
-        }
-      }
+      r.stats += sw.stats;
+    } else {
+      solve_static(a, b, s, ipopt, r);
     }
     // Rounding scale of the pair: input coordinates were rounded at their absolute
     // magnitude, so the box's distance from the origin counts as well as its size.

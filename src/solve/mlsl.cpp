@@ -75,8 +75,6 @@ void add_basin(std::vector<Basin>& basins, const Vec3& end, double lower) {
 
 // Ipopt polishes the basins in order of their lower bounds while a bound is
 // below the best gap known: a basin whose minimum cannot beat it is skipped.
-// Then the neighbourhood of the best optimum is checked exhaustively
-// (solve/neighbourhood.h) for a lower facet too close to tell apart by sampling.
 void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<Basin> basins,
                    Optimum& best, SolveStats& stats, std::string& last_failure) {
   std::sort(basins.begin(), basins.end(),
@@ -94,42 +92,33 @@ void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<B
   }
 }
 
-// The certificate (solve/certificate.h): caps over every direction where the gap
-// may still be below the best, each searched exactly. A lower facet found is
-// polished by Ipopt and the certificate redone; false when the open region is
-// too large for a few small caps (then the caller asks the exact hull).
-bool certify(const PairProblem& pr, IpoptLocalSolver& ipopt, Optimum& best, SolveStats& stats) {
+}  // namespace
+
+bool certify_minimum(const PairProblem& pr, IpoptLocalSolver& ipopt, Vec3& v, double& gap,
+                     SolveStats& stats) {
   for (int round = 0; round < 4; ++round) {
-    const CapCover cover = open_region_caps(pr, best.gap, tol::kCertificateGrid,
+    const CapCover cover = open_region_caps(pr, gap, tol::kCertificateGrid,
                                             tol::kCertificateCapAngle, tol::kCertificateCaps);
     stats.alpha_evaluations += cover.evaluations;
     if (!cover.ok) return false;
     bool improved = false;
     for (const auto& [centre, radius] : cover.caps) {
-      const auto f = lowest_facet_in_cap(pr.p(), pr.q(), centre, radius, tol::kNeighbourhoodPoints);
-      if (!f) continue;
-      const double g = pr.gap(f->normal);
-      if (g < best.gap) {
-        best = {f->normal, g};
+      const CapSearch c =
+          lowest_facet_in_cap(pr.p(), pr.q(), centre, radius, tol::kNeighbourhoodPoints);
+      if (!c.searched) return false;  // a cap too large to search proves nothing
+      if (!c.lowest) continue;
+      const double g = pr.gap(c.lowest->normal);
+      if (g < gap) {
+        v = c.lowest->normal;
+        gap = g;
         improved = true;
       }
     }
     if (!improved) return true;
-    const LocalResult lr = polish(pr, ipopt, best.v, stats);
-    if (lr.converged && lr.gap <= best.gap) best = {lr.v, lr.gap};
+    const LocalResult lr = polish(pr, ipopt, v, stats);
+    if (lr.converged && lr.gap <= gap) v = lr.v, gap = lr.gap;
   }
   return false;
-}
-
-}  // namespace
-
-bool certify_minimum(const PairProblem& pr, IpoptLocalSolver& ipopt, Vec3& v, double& gap,
-                     SolveStats& stats) {
-  Optimum best{v, gap};
-  const bool ok = certify(pr, ipopt, best, stats);
-  v = best.v;
-  gap = best.gap;
-  return ok;
 }
 
 DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s) {
@@ -193,7 +182,7 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   const Optimum before = best;
   const int distinct = static_cast<int>(basins.size());
   polish_basins(pr, ipopt, std::move(basins), best, stats, last_failure);
-  const bool certified = best.gap <= 0 || certify(pr, ipopt, best, stats);
+  const bool certified = best.gap <= 0 || certify_minimum(pr, ipopt, best.v, best.gap, stats);
   DepthSolution sol = finish(pr, best, distinct, stats);
   // Too many near-tied minima spread too widely (nearly concentric spheres, say):
   // solve_convex_pair lets the exact hull settle it, and the report says so.

@@ -49,18 +49,18 @@ std::vector<int> extreme_in_cap(const Points& x, const Vec3& v, double radius, b
   return keep;
 }
 
-std::optional<FacetCandidate> lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v,
-                                                  double radius, long max_points) {
+CapSearch lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v, double radius,
+                              long max_points) {
   const std::vector<int> pi = extreme_in_cap(p, v, radius, true);
   const std::vector<int> qj = extreme_in_cap(q, v, radius, false);
-  if (long(pi.size()) * long(qj.size()) > max_points) return std::nullopt;
+  if (long(pi.size()) * long(qj.size()) > max_points) return {false, std::nullopt};
   Points m(3, pi.size() * qj.size());
   Eigen::Index k = 0;
   for (int i : pi)
     for (int j : qj) m.col(k++) = p.col(i) - q.col(j);
   const double cos_r = std::cos(radius);
   HullFacets f;
-  if (m.cols() < 3) return std::nullopt;  // a vertex or an edge: no facet normal inside
+  if (m.cols() < 3) return {};  // a vertex or an edge: no facet normal inside
   if (m.cols() == 3 || !hull_facets(m, f)) {
     // Flat: the polygon itself is the one facet, its normal taken towards v.
     const Vec3 c = m.rowwise().mean();
@@ -68,16 +68,17 @@ std::optional<FacetCandidate> lowest_facet_in_cap(const Points& p, const Points&
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(d * d.transpose());
     Vec3 n = eig.eigenvectors().col(0);
     if (n.dot(v) < 0) n = -n;
-    if (n.dot(v) < cos_r) return std::nullopt;
-    return FacetCandidate{n, (n.transpose() * m).maxCoeff()};
+    if (n.dot(v) < cos_r) return {};
+    return {true, FacetCandidate{n, (n.transpose() * m).maxCoeff()}};
   }
-  std::optional<FacetCandidate> best;
+  CapSearch out;
   for (size_t t = 0; t < f.normals.size(); ++t) {
     if (f.normals[t].dot(v) < cos_r) continue;
     const double offset = -f.offsets[t];
-    if (!best || offset < best->offset) best = FacetCandidate{f.normals[t], offset};
+    if (!out.lowest || offset < out.lowest->offset)
+      out.lowest = FacetCandidate{f.normals[t], offset};
   }
-  return best;
+  return out;
 }
 
 }  // namespace pd

@@ -25,9 +25,16 @@ struct FacetCandidate {
 /// eight directions on the cap's rim.
 std::vector<int> extreme_in_cap(const Points& x, const Vec3& v, double radius, bool top);
 
-/// The lowest facet of P − Q whose normal lies within `radius` of v; nullopt
-/// when none does or when the local difference would exceed `max_points`.
-std::optional<FacetCandidate> lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v,
-                                                  double radius, long max_points);
+/// The outcome of searching a cap: `searched` is false when the local
+/// difference would exceed `max_points` (nothing is known about the cap then);
+/// `lowest` is empty when no facet normal lies in the cap.
+struct CapSearch {
+  bool searched = true;
+  std::optional<FacetCandidate> lowest;
+};
+
+/// The lowest facet of P − Q whose normal lies within `radius` of v.
+CapSearch lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v, double radius,
+                              long max_points);
 
 }  // namespace pd

@@ -17,6 +17,17 @@ struct SolveStats {
   int ipopt_calls = 0;
   int ipopt_failures = 0;  ///< Ipopt calls that did not converge
   int mlsl_iterations = 0;
+
+  SolveStats& operator+=(const SolveStats& s) {
+    alpha_evaluations += s.alpha_evaluations;
+    local_solves += s.local_solves;
+    distinct_optima += s.distinct_optima;
+    ipopt_iterations += s.ipopt_iterations;
+    ipopt_calls += s.ipopt_calls;
+    ipopt_failures += s.ipopt_failures;
+    mlsl_iterations += s.mlsl_iterations;
+    return *this;
+  }
 };
 
 /// depth >= 0; direction is a unit vector: moving b by depth·direction separates

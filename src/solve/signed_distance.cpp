@@ -44,7 +44,7 @@ SignedSolution signed_distance(const Points& a, const Points& b, const SolverSet
     const LocalResult lr = polish(pr, ipopt, *warm, stats, true);
     Vec3 v = lr.v;
     double g = lr.gap;
-    if (pr.gap(*warm) < g) v = *warm, g = pr.gap(*warm);
+    if (const double g0 = pr.gap(*warm); g0 < g) v = *warm, g = g0;
     if (g < 0) return separation(pr, ipopt, v, stats);
     // Overlapping: a local optimum from the warm start, proved global (or not).
     if (certify_minimum(pr, ipopt, v, g, stats)) {
