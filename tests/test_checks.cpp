@@ -33,6 +33,7 @@ json run(const json& scene) {
   ReportContext ctx{"test.json", "mm", o.tolerance, o.solver};
   json j = json::parse(report_json(ctx, r).dump());
   j.erase("seconds");
+  j.erase("stage_seconds");
   for (auto& p : j["pairs"]) p.erase("time_ms");
   return j;
 }

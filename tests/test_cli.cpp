@@ -64,6 +64,7 @@ std::map<std::string, std::string> statuses(const json& report) {
 
 json without_timings(json r) {
   r.erase("seconds");
+  r.erase("stage_seconds");
   for (auto& p : r["pairs"]) p.erase("time_ms");
   return r;
 }

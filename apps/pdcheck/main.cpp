@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <iostream>
 #include <iterator>
 #include <mutex>
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
 
   pd::SceneSpec scene;
   pd::SolverSettings solver;
+  const auto load_start = std::chrono::steady_clock::now();
   try {
     std::optional<std::string> units;
     if (!units_arg.empty()) {
@@ -110,6 +112,8 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
 
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   pd::RunOptions opt;
   opt.solver = solver;
   opt.tolerance = *scene.tolerance;
@@ -124,7 +128,8 @@ int main(int argc, char** argv) {
   }
   const pd::RunResult result = pd::run_scene(scene, opt);
   const pd::Summary summary = pd::summarize(result);
-  pd::ReportContext ctx{scene.path, scene.units.value_or("mm"), *scene.tolerance, solver};
+  pd::ReportContext ctx{scene.path, scene.units.value_or("mm"), *scene.tolerance, solver,
+                        load_seconds};
 
   std::string text;
   if (jsonl) {

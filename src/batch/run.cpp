@@ -77,10 +77,26 @@ PairResult decode_pair_result(const std::string& s) {
   return r;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Seconds since `t`, and `t` moved to now.
+double lap(Clock::time_point& t) {
+  const auto now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
+
+}  // namespace
+
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
+  auto t = t0;
   RunResult out;
-  out.parts = build_parts(scene);
+  out.parts = build_parts(scene, options.jobs);
+  out.stages.parts = lap(t);
   const std::vector<Part>& parts = out.parts;
   const int n = static_cast<int>(parts.size());
   const Checks& checks = scene.checks;
@@ -136,6 +152,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     out.culled = out.all_pairs - static_cast<long>(pairs.size());
   }
 
+  out.stages.broad_phase = lap(t);
   out.pairs.resize(pairs.size());
   // Largest pairs first (by the work of one support evaluation): no worker
   // idles at the end on a long tail.
@@ -176,7 +193,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   };
   run_work_queue(order, {options.jobs, options.pair_timeout}, task, done);
   progress.finish();
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.stages.solve = lap(t);
+  out.seconds = std::chrono::duration<double>(t - t0).count();
   return out;
 }
 

@@ -22,12 +22,20 @@ struct RunOptions {
   std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;
 };
 
+/// Wall time of each stage of run_scene, in seconds.
+struct StageTimes {
+  double parts = 0.0;        ///< meshes loaded, transformed and hulled
+  double broad_phase = 0.0;  ///< candidate pairs found
+  double solve = 0.0;        ///< every pair solved (the work queue)
+};
+
 struct RunResult {
   std::vector<Part> parts;
   std::vector<PairResult> pairs;  ///< in (a, b) order: deterministic whatever the jobs
   long all_pairs = 0;             ///< n(n − 1)/2, or the listed pairs
   long culled = 0;                ///< removed by the broad phase
   double seconds = 0.0;
+  StageTimes stages;
   std::vector<std::string> simulated;  ///< "interference", then "clearance", "motion" if asked
 };
 

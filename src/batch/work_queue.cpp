@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <stdexcept>
 
 namespace pd {
@@ -53,12 +54,15 @@ bool read_all(int fd, void* data, size_t n) {
   _exit(0);
 }
 
+// A worker holds up to kDepth tasks: the one it is computing and the next,
+// already in its pipe, so it never waits on the parent between tasks.
+constexpr size_t kDepth = 2;
+
 struct Worker {
   pid_t pid = -1;
   int to = -1, from = -1;
-  bool busy = false;
-  size_t task = 0;
-  Clock::time_point started;
+  std::deque<size_t> tasks;   ///< sent, not yet answered; the front one is running
+  Clock::time_point started;  ///< when the front task began (its answer clock)
 };
 
 Worker spawn(const TaskFn& task, const std::vector<Worker>& others) {
@@ -84,7 +88,9 @@ Worker spawn(const TaskFn& task, const std::vector<Worker>& others) {
   return w;
 }
 
-std::string reap(Worker& w, bool kill_it) {
+/// Ends a worker and says why it ended. Tasks it held but had not started go
+/// back to `retry`; the running one is the caller's to report.
+std::string reap(Worker& w, bool kill_it, std::deque<size_t>& retry) {
   if (kill_it) kill(w.pid, SIGKILL);
   close(w.to);
   close(w.from);
@@ -96,6 +102,7 @@ std::string reap(Worker& w, bool kill_it) {
     else if (WIFEXITED(status))
       why = "worker exited with code " + std::to_string(WEXITSTATUS(status));
   }
+  for (size_t k = w.tasks.size(); k-- > 1;) retry.push_front(w.tasks[k]);
   w = Worker{};
   return why;
 }
@@ -115,23 +122,28 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
   std::vector<Worker> workers;
   for (int k = 0; k < jobs; ++k) workers.push_back(spawn(task, workers));
   size_t next = 0, finished = 0;
+  std::deque<size_t> retry;  // sent to a worker that died before starting them
+  auto pending = [&] { return !retry.empty() || next < order.size(); };
 
-  auto dispatch = [&](Worker& w) {
-    while (next < order.size()) {
-      const std::uint64_t index = order[next++];
+  // Tops a worker up to kDepth tasks, replacing it if it died meanwhile.
+  auto feed = [&](Worker& w) {
+    while (w.tasks.size() < kDepth && pending()) {
       if (w.pid < 0) w = spawn(task, workers);
-      if (write_all(w.to, &index, sizeof index)) {
-        w.busy = true;
-        w.task = index;
-        w.started = Clock::now();
-        return;
+      const bool again = !retry.empty();
+      const std::uint64_t index = again ? retry.front() : order[next];
+      if (!write_all(w.to, &index, sizeof index)) {
+        if (w.tasks.empty()) {  // it died idle: replace it and try again
+          reap(w, true, retry);
+          continue;
+        }
+        return;  // its running task will report the death
       }
-      // The worker died before it took the task: replace it and try again.
-      reap(w, true);
-      --next;
+      again ? retry.pop_front() : void(++next);
+      if (w.tasks.empty()) w.started = Clock::now();
+      w.tasks.push_back(index);
     }
   };
-  for (Worker& w : workers) dispatch(w);
+  for (Worker& w : workers) feed(w);
 
   while (finished < order.size()) {
     std::vector<pollfd> fds;
@@ -139,7 +151,7 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
     int wait_ms = -1;
     const auto now = Clock::now();
     for (size_t k = 0; k < workers.size(); ++k) {
-      if (!workers[k].busy) continue;
+      if (workers[k].tasks.empty()) continue;
       fds.push_back({workers[k].from, POLLIN, 0});
       who.push_back(k);
       if (options.task_timeout > 0) {
@@ -153,36 +165,42 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
     if (ready < 0 && errno != EINTR) throw std::runtime_error("poll() failed");
     for (size_t f = 0; f < fds.size(); ++f) {
       Worker& w = workers[who[f]];
-      const size_t task_index = w.task;
+      const size_t running = w.tasks.front();
       if (fds[f].revents & (POLLIN | POLLHUP | POLLERR)) {
         std::uint64_t index = 0, len = 0;
         std::string payload;
         bool ok = read_all(w.from, &index, sizeof index) && read_all(w.from, &len, sizeof len);
         if (ok) {
           payload.resize(len);
-          ok = read_all(w.from, payload.data(), len) && index == task_index;
+          ok = read_all(w.from, payload.data(), len) && index == running;
         }
-        w.busy = false;
         ++finished;
         if (ok) {
-          done(task_index, true, payload);
+          w.tasks.pop_front();
+          w.started = Clock::now();
+          done(running, true, payload);
         } else {
-          done(task_index, false, reap(w, true));
+          done(running, false, reap(w, true, retry));
         }
-        dispatch(w);
+        feed(w);
       } else if (options.task_timeout > 0 &&
                  std::chrono::duration<double>(Clock::now() - w.started).count() >
                      options.task_timeout) {
-        reap(w, true);
+        reap(w, true, retry);
         ++finished;
-        done(task_index, false,
+        done(running, false,
              "timed out after " + std::to_string(options.task_timeout) + " s (worker killed)");
-        dispatch(w);
+        feed(w);
       }
     }
+    // A worker replaced above may leave retried tasks that its own feed could
+    // not place (it was full); idle workers take them.
+    for (Worker& w : workers)
+      if (w.tasks.empty()) feed(w);
   }
+  std::deque<size_t> none;
   for (Worker& w : workers)
-    if (w.pid >= 0) reap(w, false);  // closing its input ends the worker's loop
+    if (w.pid >= 0) reap(w, false, none);  // closing its input ends the worker's loop
   sigaction(SIGPIPE, &previous, nullptr);
 }
 

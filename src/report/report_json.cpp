@@ -137,6 +137,11 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
           {"simulated", r.simulated},
           {"summary", summary_json(summarize(r))},
           {"seconds", r.seconds},
+          {"stage_seconds",
+           {{"load", ctx.load_seconds},
+            {"parts", r.stages.parts},
+            {"broad_phase", r.stages.broad_phase},
+            {"solve", r.stages.solve}}},
           {"parts", parts},
           {"pairs", pairs}};
 }

@@ -13,6 +13,7 @@ struct ReportContext {
   std::string units;
   double tolerance = 0.0;
   SolverSettings solver;
+  double load_seconds = 0.0;  ///< reading and parsing the scene (before run_scene)
 };
 
 /// Counts per status, parts that failed, and the exit code they imply.

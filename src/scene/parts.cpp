@@ -1,8 +1,11 @@
 #include "scene/parts.h"
 
+#include <algorithm>
+#include <future>
 #include <map>
 #include <new>
 #include <sstream>
+#include <thread_pool/thread_pool.hpp>
 
 #include "scene/mesh_loader.h"
 
@@ -67,21 +70,46 @@ Part build_part(const PartSpec& spec) {
 
 }  // namespace
 
-std::vector<Part> build_parts(const SceneSpec& scene) {
-  std::vector<Part> parts;
-  std::map<std::string, Part> cache;
-  for (const PartSpec& spec : scene.parts) {
-    if (!spec.mesh) {
-      parts.push_back(build_part(spec));
-      parts.back().motion = spec.motion;
-      continue;
+std::vector<Part> build_parts(const SceneSpec& scene, int threads) {
+  // Distinct geometry first: the same mesh file under the same units,
+  // transform and pieces is loaded and hulled once. Inline parts are distinct.
+  std::vector<const PartSpec*> unique;
+  std::vector<size_t> source(scene.parts.size());
+  std::map<std::string, size_t> seen;
+  for (size_t k = 0; k < scene.parts.size(); ++k) {
+    const PartSpec& spec = scene.parts[k];
+    if (spec.mesh) {
+      const auto [it, fresh] = seen.emplace(cache_key(spec), unique.size());
+      source[k] = it->second;
+      if (!fresh) continue;
+    } else {
+      source[k] = unique.size();
     }
-    const std::string key = cache_key(spec);
-    auto it = cache.find(key);
-    if (it == cache.end()) it = cache.emplace(key, build_part(spec)).first;
-    Part p = it->second;
-    p.id = spec.id;
-    p.motion = spec.motion;
+    unique.push_back(&spec);
+  }
+
+  // Hulls are independent (qhull_r keeps its state per run, each assimp
+  // Importer its own), so they run on a thread pool. The pool is joined before
+  // returning: the work queue forks afterwards, and fork is only safe with one
+  // thread.
+  std::vector<Part> built(unique.size());
+  if (threads <= 1 || unique.size() < 2) {
+    for (size_t u = 0; u < unique.size(); ++u) built[u] = build_part(*unique[u]);
+  } else {
+    thread_pool::ThreadPool pool(std::min<size_t>(threads, unique.size()));
+    std::vector<std::future<void>> pending;
+    pending.reserve(unique.size());
+    for (size_t u = 0; u < unique.size(); ++u)
+      pending.push_back(pool.Submit([&, u] { built[u] = build_part(*unique[u]); }));
+    for (auto& f : pending) f.get();  // build_part catches everything it can throw
+  }
+
+  std::vector<Part> parts;
+  parts.reserve(scene.parts.size());
+  for (size_t k = 0; k < scene.parts.size(); ++k) {
+    Part p = built[source[k]];
+    p.id = scene.parts[k].id;
+    p.motion = scene.parts[k].motion;
     parts.push_back(std::move(p));
   }
   return parts;

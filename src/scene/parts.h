@@ -27,7 +27,8 @@ struct Part {
 
 /// Loads, transforms and hulls every part. A part that fails gets `error` set
 /// and the rest go on. The same mesh file under the same units, transform and
-/// pieces is loaded and hulled once.
-std::vector<Part> build_parts(const SceneSpec& scene);
+/// pieces is loaded and hulled once. `threads` > 1 hulls distinct parts in
+/// parallel (the result does not depend on it); every thread has ended on return.
+std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1);
 
 }  // namespace pd

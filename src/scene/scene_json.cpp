@@ -86,11 +86,17 @@ Mat4 transform(const Ctx& c, const json& j, const std::string& at) {
 Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
   if (!j.is_array()) c.fail(at, std::string("expected a list of [x, y, z], got ") + type_name(j));
   if (j.empty()) c.fail(at, "empty vertex list");
+  // The hot loop of a large scene: a field's path is spelled only on error.
+  auto where = [&](size_t k) { return at + "[" + std::to_string(k) + "]"; };
   Points p(3, j.size());
   for (size_t k = 0; k < j.size(); ++k) {
-    const std::string ak = at + "[" + std::to_string(k) + "]";
-    if (!j[k].is_array() || j[k].size() != 3) c.fail(ak, "expected [x, y, z]");
-    for (int d = 0; d < 3; ++d) p(d, k) = number(c, j[k][d], ak + "[" + std::to_string(d) + "]");
+    const json& v = j[k];
+    if (!v.is_array() || v.size() != 3) c.fail(where(k), "expected [x, y, z]");
+    for (int d = 0; d < 3; ++d) {
+      const json& x = v[d];
+      p(d, k) = x.is_number() ? x.get<double>() : NAN;
+      if (!std::isfinite(p(d, k))) number(c, x, where(k) + "[" + std::to_string(d) + "]");
+    }
   }
   return p;
 }
