@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "scene/json_split.h"
 #include "scene/mesh_loader.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
@@ -9,13 +10,16 @@ using namespace pd;
 namespace {
 const std::string kFormats = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/";
 
+// The error a scene gives, the same with 1 and 4 parsing threads (or a note
+// that says how they differ).
 std::string error_of(const std::string& text) {
-  try {
-    parse_scene_json(text, "s.json", "");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  std::string what[2];
+  for (int t : {0, 1}) try {
+      parse_scene_json(text, "s.json", "", std::nullopt, t ? 4 : 1);
+    } catch (const SceneError& e) {
+      what[t] = e.what();
+    }
+  return what[0] == what[1] ? what[0] : "threads differ: " + what[0] + " | " + what[1];
 }
 const std::string kPart = R"({"id": "a", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]})";
 }  // namespace
@@ -152,4 +156,64 @@ TEST(Parts, ThreadsDoNotChangeTheParts) {
     broken += one[k].error.has_value();
   }
   EXPECT_GT(broken, 0);  // the broken files stayed errors, named per part
+}
+
+TEST(JsonSplit, ElementsOfTheTopLevelArray) {
+  const std::string text =
+      R"( { "a": {"parts": [1]}, "s": "]\"[", "parts" : [ {"id": "x]\"}"} ,[1,[2]], "q", 3.5e2 ,)"
+      R"(null ] , "z": [] } )";
+  const auto span = top_level_array(text, "parts");
+  ASSERT_TRUE(span);
+  std::vector<std::string> got;
+  for (const auto& [b, e] : span->elements) got.push_back(text.substr(b, e - b));
+  EXPECT_EQ(got,
+            (std::vector<std::string>{R"({"id": "x]\"}"})", "[1,[2]]", "\"q\"", "3.5e2", "null"}));
+  EXPECT_EQ(text[span->begin], '[');
+  EXPECT_EQ(text[span->end - 1], ']');
+  EXPECT_TRUE(top_level_array(R"({"parts": []})", "parts")->elements.empty());
+  // Not split: the whole-text parse decides (and reports any error).
+  for (const char* bad : {R"([1, 2])", R"({"parts": 3})", R"({"parts": [1], "parts": [2]})",
+                          R"({"parts": [1, 2)", R"({"parts": [1 2]})", R"({"parts": [1]} x)",
+                          R"({"parts": ["1]})", R"({"other": [1]})", R"({})", ""})
+    EXPECT_FALSE(top_level_array(bad, "parts")) << bad;
+}
+
+TEST(SceneJson, ThreadsDoNotChangeTheScene) {
+  const std::string text = R"({"units": "cm", "tolerance": 0.1,
+      "checks": {"motion": {"t1": 2, "dt": 0.5}},
+      "parts": [
+        {"id": "a ]}", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "units": "mm"},
+        {"id": "b", "mesh": "m/box.stl", "transform": [1,0,0,5, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
+        {"id": "c\"", "vertices": [[0,0,0],[2,0,0],[0,2,0],[0,0,2]],
+         "motion": {"angular_velocity": [0,0,1], "about": [1,2,3], "velocity": [1,0,0]}}],
+      "pairs": [["a ]}", "b"]], "solver": {"seed": 7}})";
+  ASSERT_TRUE(top_level_array(text, "parts"));  // so four threads take the split path
+  const SceneSpec one = parse_scene_json(text, "s.json", "base", std::nullopt, 1);
+  const SceneSpec four = parse_scene_json(text, "s.json", "base", std::nullopt, 4);
+  ASSERT_EQ(one.parts.size(), 3u);
+  ASSERT_EQ(four.parts.size(), 3u);
+  EXPECT_EQ(one.units, four.units);
+  EXPECT_EQ(one.pairs, four.pairs);
+  EXPECT_EQ(one.solver.seed, four.solver.seed);
+  for (size_t k = 0; k < 3; ++k) {
+    const PartSpec &x = one.parts[k], &y = four.parts[k];
+    EXPECT_EQ(x.id, y.id);
+    EXPECT_EQ(x.where, y.where);
+    EXPECT_EQ(x.mesh, y.mesh);
+    EXPECT_EQ(x.vertices.has_value(), y.vertices.has_value());
+    if (x.vertices && y.vertices) {
+      EXPECT_EQ(*x.vertices, *y.vertices);
+    }
+    EXPECT_EQ(x.transform, y.transform);
+    EXPECT_EQ(x.to_scene_units, y.to_scene_units);
+    EXPECT_EQ(x.motion.has_value(), y.motion.has_value());
+    if (x.motion && y.motion) {
+      EXPECT_EQ(x.motion->about, y.motion->about);
+      EXPECT_EQ(x.motion->velocity, y.motion->velocity);
+    }
+  }
+  EXPECT_EQ(four.parts[2].id, "c\"");
+  EXPECT_DOUBLE_EQ(four.parts[0].to_scene_units, 0.1);  // mm in a cm scene
+  ASSERT_TRUE(four.parts[2].motion);
+  EXPECT_EQ(four.parts[2].motion->about, Vec3(1, 2, 3));
 }

@@ -59,7 +59,9 @@ int main(int argc, char** argv) {
                  "report format: json (one document) or jsonl (a line per pair as it finishes, "
                  "then a summary)")
       ->check(CLI::IsMember({"json", "jsonl"}));
-  app.add_option("-j,--jobs", jobs, "worker processes (default: all cores)")
+  app.add_option(
+         "-j,--jobs", jobs,
+         "worker processes for the solves, threads for parsing and hulls (default: all cores)")
       ->check(CLI::Range(1, 4096));
   app.add_option("--pair-timeout", pair_timeout,
                  "seconds one pair may take before its worker is killed and the pair reported as "
@@ -74,6 +76,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitUsage;
   }
 
+  if (jobs <= 0) jobs = static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
   pd::SceneSpec scene;
   pd::SolverSettings solver;
   const auto load_start = std::chrono::steady_clock::now();
@@ -87,9 +90,9 @@ int main(int argc, char** argv) {
     }
     if (scene_arg == "-") {
       std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
-      scene = pd::parse_stdin_scene(text, units);
+      scene = pd::parse_stdin_scene(text, units, jobs);
     } else {
-      scene = pd::load_scene_file(scene_arg, units);
+      scene = pd::load_scene_file(scene_arg, units, jobs);
     }
     if (tolerance > 0)
       scene.tolerance = tolerance;
@@ -117,7 +120,7 @@ int main(int argc, char** argv) {
   pd::RunOptions opt;
   opt.solver = solver;
   opt.tolerance = *scene.tolerance;
-  opt.jobs = jobs > 0 ? jobs : std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
+  opt.jobs = jobs;
   opt.pair_timeout = pair_timeout;
   opt.quiet = quiet;
   const bool jsonl = format == "jsonl";

@@ -32,10 +32,11 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
   return s;
 }
 
-SceneSpec parse_stdin_scene(const std::string& text, const std::optional<std::string>& units) {
+SceneSpec parse_stdin_scene(const std::string& text, const std::optional<std::string>& units,
+                            int threads) {
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && text[first] == '{')
-    return parse_scene_json(text, "<stdin>", "", units);
+    return parse_scene_json(text, "<stdin>", "", units, threads);
   SceneSpec s = parse_part_list(text, "<stdin>");
   s.units = units;
   return s;

@@ -1,12 +1,11 @@
 #include "scene/parts.h"
 
 #include <algorithm>
-#include <future>
 #include <map>
 #include <new>
 #include <sstream>
-#include <thread_pool/thread_pool.hpp>
 
+#include "parallel_for.h"
 #include "scene/mesh_loader.h"
 
 namespace pd {
@@ -88,21 +87,10 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads) {
     unique.push_back(&spec);
   }
 
-  // Hulls are independent (qhull_r keeps its state per run, each assimp
-  // Importer its own), so they run on a thread pool. The pool is joined before
-  // returning: the work queue forks afterwards, and fork is only safe with one
-  // thread.
+  // Hulls are independent: qhull_r keeps its state per run, each assimp
+  // Importer its own, and build_part catches whatever it throws.
   std::vector<Part> built(unique.size());
-  if (threads <= 1 || unique.size() < 2) {
-    for (size_t u = 0; u < unique.size(); ++u) built[u] = build_part(*unique[u]);
-  } else {
-    thread_pool::ThreadPool pool(std::min<size_t>(threads, unique.size()));
-    std::vector<std::future<void>> pending;
-    pending.reserve(unique.size());
-    for (size_t u = 0; u < unique.size(); ++u)
-      pending.push_back(pool.Submit([&, u] { built[u] = build_part(*unique[u]); }));
-    for (auto& f : pending) f.get();  // build_part catches everything it can throw
-  }
+  parallel_for(unique.size(), threads, [&](size_t u) { built[u] = build_part(*unique[u]); });
 
   std::vector<Part> parts;
   parts.reserve(scene.parts.size());

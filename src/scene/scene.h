@@ -77,13 +77,15 @@ struct SceneSpec {
 /// Parses a scene document. `path` names it in messages; mesh paths are taken
 /// relative to `base_dir`. Throws SceneError.
 /// `units` (the command line's --units), when given, replaces the scene's unit.
+/// `threads` > 1 parses and converts the parts in parallel; the result and any
+/// error message are the same as with one thread.
 SceneSpec parse_scene_json(const std::string& text, const std::string& path,
                            const std::string& base_dir,
-                           const std::optional<std::string>& units = std::nullopt);
+                           const std::optional<std::string>& units = std::nullopt, int threads = 1);
 
 /// Reads a scene file from disk (throws SceneError when unreadable).
 SceneSpec load_scene_file(const std::string& path,
-                          const std::optional<std::string>& units = std::nullopt);
+                          const std::optional<std::string>& units = std::nullopt, int threads = 1);
 
 /// A plain part list: one mesh path per line, or "id<TAB>path"; blank lines and
 /// lines starting with '#' are skipped. Paths are relative to the working directory.
@@ -91,7 +93,8 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path);
 
 /// Standard input: a scene JSON when it starts with '{', a part list otherwise.
 SceneSpec parse_stdin_scene(const std::string& text,
-                            const std::optional<std::string>& units = std::nullopt);
+                            const std::optional<std::string>& units = std::nullopt,
+                            int threads = 1);
 
 /// Checks that ids are unique and pairs name known parts (throws SceneError).
 void validate_scene(const SceneSpec& s);

@@ -4,8 +4,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
+#include "parallel_for.h"
+#include "scene/json_split.h"
 #include "scene/scene.h"
 #include "scene/units.h"
 
@@ -265,28 +266,31 @@ void SolverOverrides::apply(SolverSettings& s) const {
   if (gs_local) s.gs_local = *gs_local;
 }
 
-SceneSpec parse_scene_json(const std::string& text, const std::string& path,
-                           const std::string& base_dir, const std::optional<std::string>& units) {
-  const Ctx c{path};
-  json doc;
+namespace {
+
+json parse_json(const std::string& text, const std::string& path) {
   try {
-    doc = json::parse(text);
+    return json::parse(text);
   } catch (const json::parse_error& e) {
     std::string msg = e.what();
     const auto pos = msg.find("error while parsing");
     throw SceneError(path + ": invalid JSON at " + line_column(text, e.byte) + ": " +
                      (pos == std::string::npos ? msg : msg.substr(pos)));
   }
+}
+
+/// Everything but the parts (they are converted by `scene_part`): the fields a
+/// part's conversion needs (units, checks.motion) are read first.
+SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::string>& units) {
   if (!doc.is_object()) c.fail("", "a scene is a JSON object");
   only_keys(c, doc, "",
             {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks"});
   SceneSpec s;
-  s.path = path;
+  s.path = c.file;
   if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))
     c.fail("version", "only version 1 is known");
   if (doc.contains("units")) s.units = unit(c, doc["units"], "units");
   if (units) s.units = units;
-  const std::string scene_units = s.units.value_or("mm");
   if (doc.contains("tolerance")) {
     s.tolerance = number(c, doc["tolerance"], "tolerance");
     if (!(*s.tolerance > 0)) c.fail("tolerance", "must be > 0");
@@ -294,8 +298,6 @@ SceneSpec parse_scene_json(const std::string& text, const std::string& path,
   if (!doc.contains("parts")) c.fail("", "missing \"parts\"");
   const json& parts = doc["parts"];
   if (!parts.is_array()) c.fail("parts", std::string("expected a list, got ") + type_name(parts));
-  for (size_t k = 0; k < parts.size(); ++k)
-    s.parts.push_back(part(c, parts[k], "parts[" + std::to_string(k) + "]", base_dir, scene_units));
   if (doc.contains("pairs")) {
     const json& pj = doc["pairs"];
     if (!pj.is_array()) c.fail("pairs", "expected a list of [id, id]");
@@ -308,23 +310,73 @@ SceneSpec parse_scene_json(const std::string& text, const std::string& path,
   }
   if (doc.contains("solver")) s.solver = solver(c, doc["solver"]);
   if (doc.contains("checks")) s.checks = checks(c, doc["checks"]);
-  for (size_t k = 0; k < parts.size(); ++k) {
-    if (!parts[k].contains("motion")) continue;
-    const std::string at = "parts[" + std::to_string(k) + "].motion";
-    if (!s.checks.motion) c.fail(at, "a motion needs a time grid: add checks.motion {t0, t1, dt}");
-    s.parts[k].motion = motion(c, parts[k]["motion"], at, 1.0);  // scene units
-  }
-  validate_scene(s);
   return s;
 }
 
-SceneSpec load_scene_file(const std::string& path, const std::optional<std::string>& units) {
-  std::ifstream in(path, std::ios::binary);
+/// Part k of the scene, its motion included.
+PartSpec scene_part(const Ctx& c, const json& j, size_t k, const std::string& base_dir,
+                    const SceneSpec& s) {
+  const std::string at = "parts[" + std::to_string(k) + "]";
+  PartSpec p = part(c, j, at, base_dir, s.units.value_or("mm"));
+  if (j.contains("motion")) {
+    if (!s.checks.motion)
+      c.fail(at + ".motion", "a motion needs a time grid: add checks.motion {t0, t1, dt}");
+    p.motion = motion(c, j["motion"], at + ".motion", 1.0);  // scene units
+  }
+  return p;
+}
+
+/// The parts array split at its elements, each parsed and converted on its own
+/// thread. std::nullopt on anything unexpected: the whole-text parse then runs
+/// and reports the error with the right line and column.
+std::optional<SceneSpec> parse_in_slices(const std::string& text, const Ctx& c,
+                                         const std::string& base_dir,
+                                         const std::optional<std::string>& units, int threads) {
+  const auto span = top_level_array(text, "parts");
+  if (!span || span->elements.size() < 2) return std::nullopt;
+  try {
+    const json doc = json::parse(text.substr(0, span->begin) + "[]" + text.substr(span->end));
+    SceneSpec s = scene_fields(c, doc, units);
+    s.parts.resize(span->elements.size());
+    parallel_for(s.parts.size(), threads, [&](size_t k) {
+      const auto [b, e] = span->elements[k];
+      s.parts[k] = scene_part(c, json::parse(text.data() + b, text.data() + e), k, base_dir, s);
+    });
+    return s;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+SceneSpec parse_scene_json(const std::string& text, const std::string& path,
+                           const std::string& base_dir, const std::optional<std::string>& units,
+                           int threads) {
+  const Ctx c{path};
+  std::optional<SceneSpec> s;
+  if (threads > 1) s = parse_in_slices(text, c, base_dir, units, threads);
+  if (!s) {
+    const json doc = parse_json(text, path);
+    s = scene_fields(c, doc, units);
+    const json& parts = doc["parts"];
+    for (size_t k = 0; k < parts.size(); ++k)
+      s->parts.push_back(scene_part(c, parts[k], k, base_dir, *s));
+  }
+  validate_scene(*s);
+  return std::move(*s);
+}
+
+SceneSpec load_scene_file(const std::string& path, const std::optional<std::string>& units,
+                          int threads) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  std::string text(static_cast<size_t>(in.tellg()), '\0');  // one read: scenes reach 100 MB
+  in.seekg(0);
+  if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
+    throw SceneError(path + ": cannot read the scene file");
   const std::string base = std::filesystem::path(path).parent_path().string();
-  return parse_scene_json(ss.str(), path, base, units);
+  return parse_scene_json(text, path, base, units, threads);
 }
 
 void validate_scene(const SceneSpec& s) {
