@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "corpus/generators.h"
 #include "batch/motion_sweep.h"
+#include "corpus/generators.h"
 #include "solve/methods.h"
 
 namespace {
@@ -159,8 +159,9 @@ int paper_tables(std::uint64_t seed, const std::string& json_path) {
 // previous step and solved from scratch, and the Ipopt work of each.
 int zhou_timing(const std::string& ms, int steps) {
   IpoptLocalSolver ipopt;
-  std::printf("| m | steps | warm ms/step | cold ms/step | cold / warm | warm Ipopt calls/step | "
-              "cold Ipopt calls/step |\n");
+  std::printf(
+      "| m | steps | warm ms/step | cold ms/step | cold / warm | warm Ipopt calls/step | "
+      "cold Ipopt calls/step |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& token : split(ms)) {
     const int m = std::stoi(token);
@@ -177,8 +178,9 @@ int zhou_timing(const std::string& ms, int steps) {
     for (int w = 0; w < 2; ++w) {
       const auto t0 = std::chrono::steady_clock::now();
       const MotionSweep sw = sweep_pair(a, b, check, SolverSettings{}, ipopt, w == 0);
-      ms_per[w] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                      .count() / steps;
+      ms_per[w] =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+          steps;
       calls[w] = sw.stats.ipopt_calls;
     }
     std::printf("| %d | %d | %.3g | %.3g | %.2f | %.2f | %.2f |\n", m, steps, ms_per[0], ms_per[1],
