@@ -95,7 +95,11 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   const auto t0 = Clock::now();
   auto t = t0;
   RunResult out;
-  out.parts = build_parts(scene, options.jobs);
+  {
+    Progress progress(scene.parts.size(), options.quiet, "parts");
+    out.parts = build_parts(scene, options.jobs, [&](size_t n) { progress.tick(n); });
+    progress.finish();
+  }
   out.stages.parts = lap(t);
   const std::vector<Part>& parts = out.parts;
   const int n = static_cast<int>(parts.size());
@@ -164,7 +168,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t x, size_t y) { return cost(x) > cost(y); });
 
-  Progress progress(pairs.size(), options.quiet);
+  Progress progress(pairs.size(), options.quiet, "pairs");
   std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
   // Fault injection for the crash-isolation test: the worker that takes the
   // named pair dies as a solver crash would.

@@ -69,10 +69,12 @@ Part build_part(const PartSpec& spec) {
 
 }  // namespace
 
-std::vector<Part> build_parts(const SceneSpec& scene, int threads) {
+std::vector<Part> build_parts(const SceneSpec& scene, int threads,
+                              const std::function<void(size_t)>& on_built) {
   // Distinct geometry first: the same mesh file under the same units,
   // transform and pieces is loaded and hulled once. Inline parts are distinct.
   std::vector<const PartSpec*> unique;
+  std::vector<size_t> users;  // scene parts per distinct geometry
   std::vector<size_t> source(scene.parts.size());
   std::map<std::string, size_t> seen;
   for (size_t k = 0; k < scene.parts.size(); ++k) {
@@ -80,17 +82,24 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads) {
     if (spec.mesh) {
       const auto [it, fresh] = seen.emplace(cache_key(spec), unique.size());
       source[k] = it->second;
-      if (!fresh) continue;
+      if (!fresh) {
+        ++users[it->second];
+        continue;
+      }
     } else {
       source[k] = unique.size();
     }
     unique.push_back(&spec);
+    users.push_back(1);
   }
 
   // Hulls are independent: qhull_r keeps its state per run, each assimp
   // Importer its own, and build_part catches whatever it throws.
   std::vector<Part> built(unique.size());
-  parallel_for(unique.size(), threads, [&](size_t u) { built[u] = build_part(*unique[u]); });
+  parallel_for(unique.size(), threads, [&](size_t u) {
+    built[u] = build_part(*unique[u]);
+    if (on_built) on_built(users[u]);
+  });
 
   std::vector<Part> parts;
   parts.reserve(scene.parts.size());

@@ -1,6 +1,7 @@
 // Parts: a scene's part specs turned into convex pieces in scene units.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ struct Part {
 /// and the rest go on. The same mesh file under the same units, transform and
 /// pieces is loaded and hulled once. `threads` > 1 hulls distinct parts in
 /// parallel (the result does not depend on it); every thread has ended on return.
-std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1);
+/// `on_built(n)`, when given, is called (from the building thread) as the geometry
+/// of n scene parts is ready, for progress.
+std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
+                              const std::function<void(size_t)>& on_built = {});
 
 }  // namespace pd
