@@ -85,8 +85,10 @@ std::vector<std::string> split(const std::string& s) {
 
 bool selected(const std::vector<std::string>& wanted, const std::string& name) {
   if (wanted.empty()) return true;
+  // A name, or its leading words: "mlsl" selects every "mlsl tau=…", while
+  // "mlsl tau=0.9" selects only itself (not 0.99), and "mlsl-paper" is its own.
   for (const auto& w : wanted)
-    if (name.rfind(w, 0) == 0) return true;  // a prefix selects ("mlsl" = every τ)
+    if (name.rfind(w, 0) == 0 && (name.size() == w.size() || name[w.size()] == ' ')) return true;
   return false;
 }
 
@@ -202,8 +204,12 @@ int main(int argc, char** argv) {
   app.add_option("--budget", budget,
                  "seconds per (set, method) cell; a slow method stops early (at least one pair)");
   app.add_option("--seed", seed, "corpus seed");
-  app.add_option("--sets", sets_arg, "comma-separated set name prefixes (default: all)");
-  app.add_option("--methods", methods_arg, "comma-separated method name prefixes (default: all)");
+  app.add_option(
+      "--sets", sets_arg,
+      "comma-separated set names or their leading words, e.g. 30+30,zhou (default: all)");
+  app.add_option(
+      "--methods", methods_arg,
+      "comma-separated method names or their leading words, e.g. mlsl,grid (default: all)");
   app.add_option("--json", json_path, "also write every row and every pair's point here");
   bool verbose = false;
   app.add_flag("--verbose", verbose, "name every pair off by more than 1e-9 relative (stderr)");
