@@ -39,8 +39,9 @@ SignedSolution signed_distance(const Points& a, const Points& b, const SolverSet
     out.direction = e.direction;  // both conventions point from a to b
     return out;
   }
+  SolveStats warm_stats;  // a warm start that did not settle the pair still did its work
   if (warm) {
-    SolveStats stats;
+    SolveStats& stats = warm_stats;
     const LocalResult lr = polish(pr, ipopt, *warm, stats, true);
     Vec3 v = lr.v;
     double g = lr.gap;
@@ -56,9 +57,16 @@ SignedSolution signed_distance(const Points& a, const Points& b, const SolverSet
       return out;
     }
   }
-  const DepthSolution d = solve_convex_pair(a, b, s, ipopt);
-  if (d.depth > 0) return {d.depth, d.direction, d.stats, d.fallback};
-  // depth 0: d.direction separates (gap <= 0 there); the distance from it.
+  // From scratch, on a problem of its own (one more centring of the points:
+  // O(n + m), small beside the solve).
+  DepthSolution d = solve_convex_pair(a, b, s, ipopt);
+  d.stats += warm_stats;
+  if (d.depth > 0) {
+    d.stats.alpha_evaluations += pr.evaluations();  // the warm start's gap evaluations
+    return {d.depth, d.direction, d.stats, d.fallback};
+  }
+  // depth 0: d.direction separates (gap <= 0 there); the distance from it
+  // (separation() counts pr's evaluations, the warm start's included).
   return separation(pr, ipopt, d.direction, d.stats);
 }
 
