@@ -143,13 +143,15 @@ TEST(Checks, WarmStartGivesTheColdValues) {
   a.motion = RigidMotion{Vec3(0, 0, 0.05), Vec3::Zero(), Vec3::Zero()};
   b.motion = RigidMotion{Vec3::Zero(), Vec3::Zero(), -0.01 * Vec3(2, 1, 3)};
   MotionCheck m;
-  m.grid = {0, 400, 20};
+  m.grid = {0, 1200, 20};  // apart until t ≈ 480 s, then overlapping
   m.series = true;
   IpoptLocalSolver ipopt;
   const MotionSweep warm = sweep_pair(a, b, m, SolverSettings{}, ipopt, true);
   const MotionSweep cold = sweep_pair(a, b, m, SolverSettings{}, ipopt, false);
   ASSERT_EQ(warm.trace.series.size(), cold.trace.series.size());
+  int apart = 0, overlapping = 0;
   for (size_t k = 0; k < warm.trace.series.size(); ++k) {
+    (warm.trace.series[k].second < 0 ? apart : overlapping)++;
     const double t = warm.trace.series[k].first;
     // Both against the exact hull at that time.
     const Points pa = a.motion->at(a.pieces[0].vertices, t),
@@ -160,6 +162,8 @@ TEST(Checks, WarmStartGivesTheColdValues) {
     EXPECT_NEAR(warm.trace.series[k].second, exact, 1e-8) << t;
     EXPECT_NEAR(cold.trace.series[k].second, exact, 1e-8) << t;
   }
+  EXPECT_GT(apart, 10);  // both branches of the warm start were exercised
+  EXPECT_GT(overlapping, 10);
 }
 
 TEST(Checks, MotionNeedsATimeGrid) {

@@ -10,11 +10,10 @@ namespace pd {
 
 namespace {
 
-// Separated: the gap has one minimum on the sphere (−distance), so a local
-// solve from any direction with a negative gap reaches it.
-SignedSolution separation(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,
+// Separated: the gap has one minimum on the sphere (−distance), so the
+// α-free local solve `lr` from any direction v0 with a negative gap reaches it.
+SignedSolution separation(const PairProblem& pr, const LocalResult& lr, const Vec3& v0,
                           SolveStats stats) {
-  const LocalResult lr = polish(pr, ipopt, v0, stats, true);
   SignedSolution out;
   const double g0 = pr.gap(v0);
   const bool use = lr.converged && lr.gap <= g0;
@@ -46,7 +45,8 @@ SignedSolution signed_distance(const Points& a, const Points& b, const SolverSet
     Vec3 v = lr.v;
     double g = lr.gap;
     if (const double g0 = pr.gap(*warm); g0 < g) v = *warm, g = g0;
-    if (g < 0) return separation(pr, ipopt, v, stats);
+    // Still apart: that α-free solve was the distance solve.
+    if (g < 0) return separation(pr, lr, *warm, stats);
     // Overlapping: a local optimum from the warm start, proved global (or not).
     if (certify_minimum(pr, ipopt, v, g, stats)) {
       SignedSolution out;
@@ -67,7 +67,9 @@ SignedSolution signed_distance(const Points& a, const Points& b, const SolverSet
   }
   // depth 0: d.direction separates (gap <= 0 there); the distance from it
   // (separation() counts pr's evaluations, the warm start's included).
-  return separation(pr, ipopt, d.direction, d.stats);
+  SolveStats stats = d.stats;
+  const LocalResult lr = polish(pr, ipopt, d.direction, stats, true);
+  return separation(pr, lr, d.direction, stats);
 }
 
 }  // namespace pd
