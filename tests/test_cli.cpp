@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -104,6 +105,39 @@ TEST(Cli, ExactMethodAgreesOnTheDemo) {
 TEST(Cli, JobsDoNotChangeTheReport) {
   const CliRun one = pdcheck(kDemo + " -q --jobs 1"), two = pdcheck(kDemo + " -q --jobs 2");
   EXPECT_EQ(without_timings(json::parse(one.out)), without_timings(json::parse(two.out)));
+}
+
+TEST(Cli, JobsDoNotChangeALargerReport) {
+  // 90 parts: jittered prisms on a lattice (some overlapping their neighbours)
+  // and mesh files under shared transforms (hulled once), so the threaded
+  // parse, the threaded hulls and the worker queue all take part.
+  json parts = json::array();
+  for (int k = 0; k < 90; ++k) {
+    const double x = 10.0 * (k % 5), y = 10.0 * (k / 5 % 6), z = 10.0 * (k / 30);
+    const double r = 5.0 + 0.7 * ((k * 7) % 5) - 0.2;  // radii 4.8 … 7.6: neighbours may meet
+    if (k % 9 == 4) {
+      parts.push_back({{"id", "mesh" + std::to_string(k)},
+                       {"mesh", kSource + "/testdata/formats/box_binary.stl"},
+                       {"transform", {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z, 0, 0, 0, 1}}});
+      continue;
+    }
+    json v = json::array();
+    const int n = 6 + k % 11;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * M_PI * i / n + 0.1 * k;
+      for (double h : {-4.0, 4.0}) v.push_back({x + r * std::cos(t), y + r * std::sin(t), z + h});
+    }
+    parts.push_back({{"id", "p" + std::to_string(k)}, {"vertices", v}});
+  }
+  const std::string scene = write_temp("lattice_" + std::to_string(getpid()) + ".json",
+                                       json{{"tolerance", 0.5}, {"parts", parts}}.dump());
+  const CliRun one = pdcheck(scene + " -q --jobs 1"), three = pdcheck(scene + " -q --jobs 3");
+  ASSERT_EQ(one.code, 1) << one.err;
+  const json a = json::parse(one.out);
+  EXPECT_EQ(without_timings(a), without_timings(json::parse(three.out)));
+  // Not a trivial batch: every status but error occurs.
+  for (const char* k : {"separated", "false_positive", "interference"})
+    EXPECT_GT(a["summary"][k].get<int>(), 0) << k << " " << a["summary"];
 }
 
 TEST(Cli, CrashedWorkerCostsOnlyItsPair) {
