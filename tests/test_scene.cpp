@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdio>
+#include <fstream>
+
+#include "geometry/hull.h"
 #include "scene/json_split.h"
 #include "scene/mesh_loader.h"
 #include "scene/parts.h"
@@ -216,4 +221,53 @@ TEST(SceneJson, ThreadsDoNotChangeTheScene) {
   EXPECT_DOUBLE_EQ(four.parts[0].to_scene_units, 0.1);  // mm in a cm scene
   ASSERT_TRUE(four.parts[2].motion);
   EXPECT_EQ(four.parts[2].motion->about, Vec3(1, 2, 3));
+}
+
+TEST(Parts, OneMeshFileUnderManyTransforms) {
+  // A file with interior points, placed under several units and transforms:
+  // each instance's hull is the hull of the placed file (the file is read and
+  // reduced to its hull once, then each instance hulls the placed reduction).
+  const std::string obj = testing::TempDir() + "cloud_" + std::to_string(getpid()) + ".obj";
+  {
+    std::ofstream f(obj);
+    f.precision(17);
+    unsigned seed = 7;
+    auto uniform = [&] { return (seed = seed * 1103515245u + 12345u) / 4294967296.0 * 2 - 1; };
+    for (int k = 0; k < 300; ++k)
+      f << "v " << uniform() << " " << uniform() << " " << uniform() << "\n";
+    for (int k = 1; k + 2 <= 300; k += 3) f << "f " << k << " " << k + 1 << " " << k + 2 << "\n";
+  }
+  const std::string parts =
+      R"([
+      {"id": "a", "mesh": ")" +
+      obj + R"("},
+      {"id": "b", "mesh": ")" +
+      obj + R"(", "units": "in", "transform": [0,-2,0,5, 1,0,0,-3, 0,0,0.5,1e4, 0,0,0,1]},
+      {"id": "c", "mesh": ")" +
+      obj + R"(", "transform": [1,0.5,0,0, 0,-1,0,0, 0,0,3,0, 0,0,0,1]},
+      {"id": "d", "mesh": ")" +
+      obj + R"(", "units": "in", "transform": [0,-2,0,5, 1,0,0,-3, 0,0,0.5,1e4, 0,0,0,1]}])";
+  const SceneSpec s =
+      parse_scene_json(R"({"tolerance": 0.1, "parts": )" + parts + "}", "s.json", "");
+  const auto raw = load_mesh_vertices(obj, false);
+  ASSERT_EQ(raw.size(), 1u);
+  for (int threads : {1, 3}) {
+    const auto built = build_parts(s, threads);
+    ASSERT_EQ(built.size(), 4u);
+    for (size_t k = 0; k < built.size(); ++k) {
+      const PartSpec& spec = s.parts[k];
+      const Points placed =
+          (spec.transform.topLeftCorner<3, 3>() * (raw[0] * spec.to_scene_units)).colwise() +
+          Vec3(spec.transform.topRightCorner<3, 1>());
+      const Hull direct = convex_hull(placed);
+      ASSERT_FALSE(built[k].error) << *built[k].error;
+      EXPECT_EQ(built[k].vertex_count, raw[0].cols());
+      ASSERT_EQ(built[k].pieces.size(), 1u);
+      EXPECT_LT(direct.vertices.cols(), raw[0].cols());  // interior points were dropped
+      EXPECT_EQ(built[k].pieces[0].vertices, direct.vertices) << spec.id;
+      EXPECT_EQ(built[k].pieces[0].dimension, direct.dimension) << spec.id;
+      EXPECT_EQ(built[k].warnings, direct.warnings) << spec.id;
+    }
+  }
+  std::remove(obj.c_str());
 }

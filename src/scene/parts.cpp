@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <map>
+#include <mutex>
 #include <new>
+#include <optional>
 #include <sstream>
 
 #include "parallel_for.h"
@@ -25,7 +27,7 @@ Points place(const Points& p, const PartSpec& spec) {
          Vec3(spec.transform.topRightCorner<3, 1>());
 }
 
-std::string cache_key(const PartSpec& s) {
+std::string instance_key(const PartSpec& s) {
   std::ostringstream k;
   k.precision(17);
   k << *s.mesh << '|' << s.to_scene_units << '|' << int(s.pieces);
@@ -33,36 +35,67 @@ std::string cache_key(const PartSpec& s) {
   return k.str();
 }
 
-Part build_part(const PartSpec& spec) {
+std::string file_key(const PartSpec& s) {
+  return *s.mesh + '|' + std::to_string(int(s.pieces));
+}
+
+std::string load_error(const PartSpec& spec, const std::exception& e) {
+  if (dynamic_cast<const MeshError*>(&e)) return e.what();  // names the file already
+  return (spec.mesh ? "mesh file " + *spec.mesh + ": " : std::string()) +
+         (dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory while loading (corrupt file?)"
+                                                  : e.what());
+}
+
+// A mesh file as its instances share it: read once, each piece reduced to the
+// vertices of its hull. An affine map sends extreme points among the images of
+// extreme points, so an instance hulls the placed reduced set and gets the
+// hull of the placed file.
+struct MeshFile {
+  std::once_flag loaded;
+  std::vector<Points> reduced;  ///< per piece, file coordinates
+  std::vector<long> counts;     ///< vertices per piece as read
+  std::optional<std::string> error;
+};
+
+void load(const PartSpec& spec, MeshFile& f) {
+  try {
+    for (Points& p : load_mesh_vertices(*spec.mesh, spec.pieces == Pieces::kMeshes)) {
+      f.counts.push_back(p.cols());
+      f.reduced.push_back(convex_hull(p).vertices);
+    }
+  } catch (const std::exception& e) {
+    f.reduced.clear();
+    f.error = load_error(spec, e);
+  }
+}
+
+/// One part from its spec; `file` is its mesh file, shared with other instances.
+Part build_part(const PartSpec& spec, MeshFile* file) {
   Part part;
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
+  if (file) {
+    std::call_once(file->loaded, [&] { load(spec, *file); });  // the first instance reads it
+    if (file->error) {
+      part.error = file->error;
+      return part;
+    }
+  }
+  const std::vector<Points> inline_set = file ? std::vector<Points>{} : std::vector{*spec.vertices};
+  const std::vector<Points>& sets = file ? file->reduced : inline_set;
   try {
-    std::vector<Points> sets;
-    if (spec.mesh)
-      sets = load_mesh_vertices(*spec.mesh, spec.pieces == Pieces::kMeshes);
-    else
-      sets.push_back(*spec.vertices);
-    bool first = true;
     for (size_t k = 0; k < sets.size(); ++k) {
-      part.vertex_count += sets[k].cols();
+      part.vertex_count += file ? file->counts[k] : sets[k].cols();
       Hull h = convex_hull(place(sets[k], spec));
       for (auto& w : h.warnings)
         part.warnings.push_back(sets.size() > 1 ? "piece " + std::to_string(k) + ": " + w : w);
       const Aabb b = Aabb::of(h.vertices);
-      part.box = first ? b : part.box.merged(b);
-      first = false;
+      part.box = k == 0 ? b : part.box.merged(b);
       part.pieces.push_back(std::move(h));
     }
-  } catch (const MeshError& e) {
-    part.pieces.clear();
-    part.error = e.what();  // names the file already
   } catch (const std::exception& e) {
     part.pieces.clear();
-    part.error =
-        (spec.mesh ? "mesh file " + *spec.mesh + ": " : std::string()) +
-        (dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory while loading (corrupt file?)"
-                                                 : e.what());
+    part.error = load_error(spec, e);
   }
   return part;
 }
@@ -72,15 +105,18 @@ Part build_part(const PartSpec& spec) {
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
                               const std::function<void(size_t)>& on_built) {
   // Distinct geometry first: the same mesh file under the same units,
-  // transform and pieces is loaded and hulled once. Inline parts are distinct.
+  // transform and pieces is hulled once, and read once under any transform.
+  // Inline parts are distinct.
   std::vector<const PartSpec*> unique;
+  std::vector<std::optional<size_t>> file_of;  // per distinct part: its mesh file
+  std::map<std::string, size_t> files;
   std::vector<size_t> users;  // scene parts per distinct geometry
   std::vector<size_t> source(scene.parts.size());
   std::map<std::string, size_t> seen;
   for (size_t k = 0; k < scene.parts.size(); ++k) {
     const PartSpec& spec = scene.parts[k];
     if (spec.mesh) {
-      const auto [it, fresh] = seen.emplace(cache_key(spec), unique.size());
+      const auto [it, fresh] = seen.emplace(instance_key(spec), unique.size());
       source[k] = it->second;
       if (!fresh) {
         ++users[it->second];
@@ -91,13 +127,17 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     }
     unique.push_back(&spec);
     users.push_back(1);
+    file_of.emplace_back();
+    if (spec.mesh) file_of.back() = files.emplace(file_key(spec), files.size()).first->second;
   }
 
   // Hulls are independent: qhull_r keeps its state per run, each assimp
-  // Importer its own, and build_part catches whatever it throws.
+  // Importer its own, and build_part catches whatever it throws. The first
+  // instance of a mesh file reads it; others of the same file wait for it.
   std::vector<Part> built(unique.size());
+  std::vector<MeshFile> mesh_files(files.size());
   parallel_for(unique.size(), threads, [&](size_t u) {
-    built[u] = build_part(*unique[u]);
+    built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr);
     if (on_built) on_built(users[u]);
   });
 

@@ -27,8 +27,9 @@ struct Part {
 };
 
 /// Loads, transforms and hulls every part. A part that fails gets `error` set
-/// and the rest go on. The same mesh file under the same units, transform and
-/// pieces is loaded and hulled once. `threads` > 1 hulls distinct parts in
+/// and the rest go on. A mesh file is read once (and reduced to its hull's
+/// vertices once) whatever its instances' transforms; the same file under the
+/// same units, transform and pieces is hulled once. `threads` > 1 hulls distinct parts in
 /// parallel (the result does not depend on it); every thread has ended on return.
 /// `on_built(n)`, when given, is called (from the building thread) as the geometry
 /// of n scene parts is ready, for progress.
