@@ -1,6 +1,5 @@
 #include "scene/parts.h"
 
-#include <algorithm>
 #include <map>
 #include <mutex>
 #include <new>
@@ -81,12 +80,15 @@ Part build_part(const PartSpec& spec, MeshFile* file) {
       return part;
     }
   }
-  const std::vector<Points> inline_set = file ? std::vector<Points>{} : std::vector{*spec.vertices};
-  const std::vector<Points>& sets = file ? file->reduced : inline_set;
+  std::vector<const Points*> sets;  // the point sets to place and hull, not copied
+  if (file)
+    for (const Points& p : file->reduced) sets.push_back(&p);
+  else
+    sets.push_back(&*spec.vertices);
   try {
     for (size_t k = 0; k < sets.size(); ++k) {
-      part.vertex_count += file ? file->counts[k] : sets[k].cols();
-      Hull h = convex_hull(place(sets[k], spec));
+      part.vertex_count += file ? file->counts[k] : sets[k]->cols();
+      Hull h = convex_hull(place(*sets[k], spec));
       for (auto& w : h.warnings)
         part.warnings.push_back(sets.size() > 1 ? "piece " + std::to_string(k) + ": " + w : w);
       const Aabb b = Aabb::of(h.vertices);
