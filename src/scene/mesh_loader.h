@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/mesh.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -15,9 +16,14 @@ class MeshError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The vertices of every mesh instance in a file, node transforms applied
+/// Every mesh instance in a file with its triangles, node transforms applied
 /// (world = node · v, accumulated in double precision: assimp stores float32).
-/// With split_instances, one point set per (node, mesh) instance; else one set.
+/// With split_instances, one mesh per (node, mesh) instance; else one mesh
+/// (triangle indices offset to the concatenated vertices). Faces of more than
+/// three vertices are fanned; points and lines contribute vertices only.
+std::vector<Mesh> load_meshes(const std::string& path, bool split_instances);
+
+/// The vertices of load_meshes, without triangles.
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances);
 
 }  // namespace pd
