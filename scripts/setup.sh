@@ -6,7 +6,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
           nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev libgtest-dev
-          python3)
+          libcgal-dev libgmp-dev libmpfr-dev python3)
 # Callers may need more (accuracy_vs_time.sh: python3-matplotlib for its plot).
 read -r -a EXTRA <<<"${EXTRA_PACKAGES:-}"
 PACKAGES+=("${EXTRA[@]}")

@@ -1,0 +1,187 @@
+#include "corpus/cad_shapes.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace pd::shapes {
+
+namespace {
+
+// Triangles are collected as index triples, then packed into a Mesh.
+struct Builder {
+  std::vector<Vec3> v;
+  std::vector<std::array<int, 3>> t;
+  int add(const Vec3& p) {
+    v.push_back(p);
+    return static_cast<int>(v.size()) - 1;
+  }
+  void tri(int a, int b, int c) { t.push_back({a, b, c}); }
+  void quad(int a, int b, int c, int d) {  // counter-clockwise a, b, c, d
+    tri(a, b, c);
+    tri(a, c, d);
+  }
+  Mesh mesh() const {
+    Mesh m;
+    m.vertices.resize(3, static_cast<long>(v.size()));
+    for (std::size_t i = 0; i < v.size(); ++i) m.vertices.col(i) = v[i];
+    m.triangles.resize(3, static_cast<long>(t.size()));
+    for (std::size_t i = 0; i < t.size(); ++i)
+      m.triangles.col(i) = Eigen::Vector3i(t[i][0], t[i][1], t[i][2]);
+    return m;
+  }
+};
+
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// Ear clipping of a simple counter-clockwise polygon: triangles as index triples.
+std::vector<std::array<int, 3>> ear_clip(const std::vector<Vec2>& p) {
+  std::vector<int> left(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) left[i] = static_cast<int>(i);
+  std::vector<std::array<int, 3>> out;
+  while (left.size() > 3) {
+    bool clipped = false;
+    const std::size_t n = left.size();
+    for (std::size_t k = 0; k < n && !clipped; ++k) {
+      const int a = left[(k + n - 1) % n], b = left[k], c = left[(k + 1) % n];
+      if (cross(p[b] - p[a], p[c] - p[b]) <= 0) continue;  // reflex or flat
+      bool empty = true;
+      for (int q : left) {
+        if (q == a || q == b || q == c) continue;
+        if (cross(p[b] - p[a], p[q] - p[a]) >= 0 && cross(p[c] - p[b], p[q] - p[b]) >= 0 &&
+            cross(p[a] - p[c], p[q] - p[c]) >= 0)
+          empty = false;
+      }
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      left.erase(left.begin() + static_cast<long>(k));
+      clipped = true;
+    }
+    if (!clipped)
+      throw std::invalid_argument("ear_clip: polygon is not simple and counter-clockwise");
+  }
+  out.push_back({left[0], left[1], left[2]});
+  return out;
+}
+
+// Rings `outer` and `inner` (same count, matched by index, both counter-clockwise)
+// give an annular prism from z0 to z1.
+Mesh ring_prism(const std::vector<Vec2>& outer, const std::vector<Vec2>& inner, double z0,
+                double z1) {
+  Builder b;
+  const int n = static_cast<int>(outer.size());
+  std::vector<int> ob(n), ot(n), ib(n), it(n);
+  for (int i = 0; i < n; ++i) {
+    ob[i] = b.add({outer[i].x(), outer[i].y(), z0});
+    ot[i] = b.add({outer[i].x(), outer[i].y(), z1});
+    ib[i] = b.add({inner[i].x(), inner[i].y(), z0});
+    it[i] = b.add({inner[i].x(), inner[i].y(), z1});
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    b.quad(ot[i], ot[j], it[j], it[i]);  // top, seen from +z
+    b.quad(ob[j], ob[i], ib[i], ib[j]);  // bottom
+    b.quad(ob[i], ob[j], ot[j], ot[i]);  // outer wall
+    b.quad(ib[j], ib[i], it[i], it[j]);  // hole wall, facing the axis
+  }
+  return b.mesh();
+}
+
+}  // namespace
+
+Mesh box(const Vec3& lo, const Vec3& hi) {
+  return prism({{lo.x(), lo.y()}, {hi.x(), lo.y()}, {hi.x(), hi.y()}, {lo.x(), hi.y()}}, lo.z(),
+               hi.z());
+}
+
+Mesh prism(const std::vector<Vec2>& polygon, double z0, double z1) {
+  Builder b;
+  const int n = static_cast<int>(polygon.size());
+  for (const Vec2& p : polygon) b.add({p.x(), p.y(), z0});
+  for (const Vec2& p : polygon) b.add({p.x(), p.y(), z1});
+  for (const auto& e : ear_clip(polygon)) {
+    b.tri(n + e[0], n + e[1], n + e[2]);
+    b.tri(e[2], e[1], e[0]);
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    b.quad(i, j, n + j, n + i);
+  }
+  return b.mesh();
+}
+
+std::vector<Vec2> circle(const Vec2& centre, double radius, int segments, double phase) {
+  std::vector<Vec2> c(segments);
+  for (int i = 0; i < segments; ++i) {
+    const double a = phase + 2.0 * M_PI * i / segments;
+    c[i] = centre + radius * Vec2(std::cos(a), std::sin(a));
+  }
+  return c;
+}
+
+Mesh cylinder(const Vec2& centre, double radius, double z0, double z1, int segments) {
+  return prism(circle(centre, radius, segments), z0, z1);
+}
+
+Mesh plate_with_hole(double side, double thickness, double hole_radius, int segments) {
+  if (segments % 8 != 0) throw std::invalid_argument("plate_with_hole: segments % 8 != 0");
+  const double h = side / 2;
+  std::vector<Vec2> outer(segments);
+  for (int i = 0; i < segments; ++i) {
+    const double a = 2.0 * M_PI * i / segments, c = std::cos(a), s = std::sin(a);
+    const double m = std::max(std::abs(c), std::abs(s));
+    // Central projection of the hole's direction onto the square; snap the
+    // coordinate on the square's side (and both at a corner) to ±h exactly.
+    auto coord = [&](double u) {
+      const double r = u / m;
+      return std::abs(r) > 1 - 1e-12 ? std::copysign(h, r) : h * r;
+    };
+    outer[i] = Vec2(coord(c), coord(s));
+  }
+  return ring_prism(outer, circle({0, 0}, hole_radius, segments), 0.0, thickness);
+}
+
+Mesh l_bracket(double a, double t, double width) {
+  return prism({{0, 0}, {a, 0}, {a, t}, {t, t}, {t, a}, {0, a}}, 0.0, width);
+}
+
+Mesh hollow_box(const Vec3& lo, const Vec3& hi, double wall) {
+  const Vec3 w = Vec3::Constant(wall);
+  return joined({box(lo, hi), flipped(box(lo + w, hi - w))});
+}
+
+Mesh translated(Mesh m, const Vec3& offset) {
+  m.vertices.colwise() += offset;
+  return m;
+}
+
+Mesh float32(Mesh m) {
+  for (long i = 0; i < m.vertices.size(); ++i)
+    m.vertices.data()[i] = static_cast<double>(static_cast<float>(m.vertices.data()[i]));
+  return m;
+}
+
+Mesh joined(const std::vector<Mesh>& parts) {
+  long nv = 0, nt = 0;
+  for (const Mesh& p : parts) nv += p.vertices.cols(), nt += p.triangles.cols();
+  Mesh m;
+  m.vertices.resize(3, nv);
+  m.triangles.resize(3, nt);
+  long v = 0, t = 0;
+  for (const Mesh& p : parts) {
+    m.vertices.middleCols(v, p.vertices.cols()) = p.vertices;
+    m.triangles.middleCols(t, p.triangles.cols()) = p.triangles.array() + static_cast<int>(v);
+    v += p.vertices.cols();
+    t += p.triangles.cols();
+  }
+  return m;
+}
+
+Mesh flipped(Mesh m) {
+  m.triangles.row(1).swap(m.triangles.row(2));
+  return m;
+}
+
+}  // namespace pd::shapes

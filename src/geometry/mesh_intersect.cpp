@@ -1,0 +1,262 @@
+#include "geometry/mesh_intersect.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pd {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = K::Point_3;
+using Triangle3 = K::Triangle_3;
+using Segment3 = K::Segment_3;
+using TriIter = std::vector<Triangle3>::const_iterator;
+using Primitive = CGAL::AABB_triangle_primitive<K, TriIter>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+// The engine of CGAL::Side_of_triangle_mesh (ray parity, a new random ray when
+// one meets an edge or vertex), called on our own tree of triangles: that class
+// wants a face graph, and merged float32 soups are often not one.
+using RayCast = CGAL::internal::Point_inside_vertical_ray_cast<K, Tree>;
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+struct PreparedMesh::Impl {
+  std::vector<Point3> points;      // merged: equal coordinates are one point
+  std::vector<int> merged;         // original column -> index into points, -1 if unused
+  std::vector<Triangle3> faces;    // non-degenerate triangles
+  std::vector<Segment3> segments;  // degenerate (collinear) triangles as their hull
+  std::vector<int> shell_vertex;   // one merged vertex per connected component
+  bool closed = false;
+  CGAL::Bbox_3 box;
+  Tree tree;            // over faces
+  bool parity = false;  // closed and has faces: points can be located
+
+  CGAL::Bounded_side side(const Point3& p) const {
+    if (p.x() < box.xmin() || p.x() > box.xmax() || p.y() < box.ymin() || p.y() > box.ymax() ||
+        p.z() < box.zmin() || p.z() > box.zmax())
+      return CGAL::ON_UNBOUNDED_SIDE;
+    return RayCast()(p, tree);
+  }
+
+  // Closest point of the surface to p (faces and degenerate segments).
+  Point3 closest(const Point3& p) const {
+    Point3 best = p;
+    double best_d2 = INFINITY;
+    if (!faces.empty()) {
+      best = tree.closest_point(p);
+      best_d2 = CGAL::squared_distance(p, best);
+    }
+    for (const Segment3& s : segments) {
+      const double d2 = CGAL::squared_distance(p, s);
+      if (d2 < best_d2) {
+        // The projection onto the segment, clamped to its ends.
+        const K::Vector_3 d = s.target() - s.source();
+        double t = ((p - s.source()) * d) / d.squared_length();
+        t = std::clamp(t, 0.0, 1.0);
+        best = s.source() + t * d;
+        best_d2 = d2;
+      }
+    }
+    return best;
+  }
+};
+
+PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  const long n = mesh.vertices.cols();
+  if (mesh.triangles.cols() == 0) throw std::invalid_argument("mesh has no triangles");
+  for (long t = 0; t < mesh.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.triangles(k, t) < 0 || mesh.triangles(k, t) >= n)
+        throw std::invalid_argument("triangle " + std::to_string(t) + " indexes vertex " +
+                                    std::to_string(mesh.triangles(k, t)) + " of " +
+                                    std::to_string(n));
+
+  // Merge vertices with equal coordinates (STL stores each triangle's corners).
+  m.merged.assign(n, -1);
+  std::map<std::array<double, 3>, int> index;
+  for (long t = 0; t < mesh.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles(k, t);
+      if (m.merged[v] >= 0) continue;
+      const std::array<double, 3> c{mesh.vertices(0, v), mesh.vertices(1, v), mesh.vertices(2, v)};
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+        throw std::invalid_argument("vertex " + std::to_string(v) + " is not finite");
+      auto [it, inserted] = index.emplace(c, static_cast<int>(m.points.size()));
+      if (inserted) m.points.emplace_back(c[0], c[1], c[2]);
+      m.merged[v] = it->second;
+    }
+
+  // Edge parity (closedness), shells and the two primitive sets.
+  std::vector<int> parent(m.points.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::map<std::pair<int, int>, int> edge_uses;
+  for (long t = 0; t < mesh.triangles.cols(); ++t) {
+    const int i = m.merged[mesh.triangles(0, t)], j = m.merged[mesh.triangles(1, t)],
+              k = m.merged[mesh.triangles(2, t)];
+    parent[find_root(parent, j)] = find_root(parent, i);
+    parent[find_root(parent, k)] = find_root(parent, i);
+    // A triangle with a repeated corner is an edge traversed twice: no parity.
+    if (i == j || j == k || k == i) {
+      const int a = std::min({i, j, k}), b = std::max({i, j, k});
+      if (a != b) m.segments.emplace_back(m.points[a], m.points[b]);
+      continue;
+    }
+    for (auto [u, w] : {std::pair{i, j}, std::pair{j, k}, std::pair{k, i}})
+      ++edge_uses[{std::min(u, w), std::max(u, w)}];
+    const Point3 &p = m.points[i], &q = m.points[j], &r = m.points[k];
+    if (!CGAL::collinear(p, q, r)) {
+      m.faces.emplace_back(p, q, r);
+    } else {
+      // A needle: the segment between its two farthest corners covers it.
+      const double pq = CGAL::squared_distance(p, q), qr = CGAL::squared_distance(q, r),
+                   rp = CGAL::squared_distance(r, p);
+      if (pq >= qr && pq >= rp)
+        m.segments.emplace_back(p, q);
+      else if (qr >= rp)
+        m.segments.emplace_back(q, r);
+      else
+        m.segments.emplace_back(r, p);
+    }
+  }
+  m.closed = !edge_uses.empty() && std::all_of(edge_uses.begin(), edge_uses.end(),
+                                               [](const auto& e) { return e.second % 2 == 0; });
+  for (int v = 0; v < static_cast<int>(m.points.size()); ++v)
+    if (find_root(parent, v) == v) m.shell_vertex.push_back(v);
+
+  m.box = CGAL::bbox_3(m.points.begin(), m.points.end());
+  if (!m.faces.empty()) {
+    m.tree.insert(m.faces.cbegin(), m.faces.cend());
+    m.tree.build();
+    m.tree.accelerate_distance_queries();  // built now, not lazily under concurrent queries
+  }
+  m.parity = m.closed && !m.faces.empty();
+}
+
+PreparedMesh::~PreparedMesh() = default;
+PreparedMesh::PreparedMesh(PreparedMesh&&) noexcept = default;
+PreparedMesh& PreparedMesh::operator=(PreparedMesh&&) noexcept = default;
+bool PreparedMesh::closed() const {
+  return impl_->parity;
+}
+int PreparedMesh::shells() const {
+  return static_cast<int>(impl_->shell_vertex.size());
+}
+
+namespace {
+
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
+
+// Primitive i of a mesh: faces first, then segments. Boxes are closed, so
+// touching boxes are reported.
+std::vector<Box> primitive_boxes(const PreparedMesh::Impl& m) {
+  std::vector<Box> boxes;
+  boxes.reserve(m.faces.size() + m.segments.size());
+  for (std::size_t i = 0; i < m.faces.size(); ++i)
+    boxes.emplace_back(m.faces[i].bbox(), static_cast<int>(i));
+  for (std::size_t i = 0; i < m.segments.size(); ++i)
+    boxes.emplace_back(m.segments[i].bbox(), static_cast<int>(m.faces.size() + i));
+  return boxes;
+}
+
+bool primitives_meet(const PreparedMesh::Impl& a, int i, const PreparedMesh::Impl& b, int j) {
+  const int fa = static_cast<int>(a.faces.size()), fb = static_cast<int>(b.faces.size());
+  if (i < fa && j < fb) return CGAL::do_intersect(a.faces[i], b.faces[j]);
+  if (i < fa) return CGAL::do_intersect(a.faces[i], b.segments[j - fb]);
+  if (j < fb) return CGAL::do_intersect(b.faces[j], a.segments[i - fa]);
+  return CGAL::do_intersect(a.segments[i - fa], b.segments[j - fb]);
+}
+
+struct Found {};
+
+bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
+  std::vector<Box> ba = primitive_boxes(a), bb = primitive_boxes(b);
+  try {
+    CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(),
+                             [&](const Box& x, const Box& y) {
+                               if (primitives_meet(a, x.info(), b, y.info())) throw Found{};
+                             });
+  } catch (const Found&) {
+    return true;
+  }
+  return false;
+}
+
+// Some shell of `inner` has a vertex inside or on closed `outer`. Called when the
+// surfaces do not meet, so each shell is wholly inside or wholly outside.
+bool shell_inside(const PreparedMesh::Impl& inner, const PreparedMesh::Impl& outer) {
+  if (!outer.parity) return false;
+  for (int v : inner.shell_vertex)
+    if (outer.side(inner.points[v]) != CGAL::ON_UNBOUNDED_SIDE) return true;
+  return false;
+}
+
+// Deepest vertex of `inner` strictly inside closed `outer`.
+void deepest_in(const PreparedMesh::Impl& inner, const PreparedMesh::Impl& outer, bool inner_is_a,
+                MeshDepthBound& best) {
+  if (!outer.parity) return;
+  for (std::size_t col = 0; col < inner.merged.size(); ++col) {
+    const int v = inner.merged[col];
+    if (v < 0) continue;
+    const Point3& p = inner.points[v];
+    if (outer.side(p) != CGAL::ON_BOUNDED_SIDE) continue;
+    const Point3 q = outer.closest(p);
+    const double d = std::sqrt(CGAL::squared_distance(p, q));
+    if (!(d > best.depth)) continue;
+    const Vec3 pv(p.x(), p.y(), p.z()), qv(q.x(), q.y(), q.z());
+    best.depth = d;
+    best.direction = (inner_is_a ? pv - qv : qv - pv) / d;
+    best.vertex = static_cast<int>(col);
+    best.vertex_of_a = inner_is_a;
+    best.surface_point = qv;
+  }
+}
+
+}  // namespace
+
+bool meshes_intersect(const PreparedMesh& pa, const PreparedMesh& pb) {
+  const PreparedMesh::Impl &a = pa.impl(), &b = pb.impl();
+  if (!CGAL::do_overlap(a.box, b.box)) return false;
+  if (surfaces_meet(a, b)) return true;
+  return shell_inside(a, b) || shell_inside(b, a);
+}
+
+bool meshes_intersect(const Mesh& a, const Mesh& b) {
+  return meshes_intersect(PreparedMesh(a), PreparedMesh(b));
+}
+
+MeshDepthBound deepest_vertex_depth(const PreparedMesh& pa, const PreparedMesh& pb) {
+  const PreparedMesh::Impl &a = pa.impl(), &b = pb.impl();
+  MeshDepthBound best;
+  best.tested_in_a = a.parity;
+  best.tested_in_b = b.parity;
+  if (!CGAL::do_overlap(a.box, b.box)) return best;
+  deepest_in(a, b, true, best);
+  deepest_in(b, a, false, best);
+  return best;
+}
+
+MeshDepthBound deepest_vertex_depth(const Mesh& a, const Mesh& b) {
+  return deepest_vertex_depth(PreparedMesh(a), PreparedMesh(b));
+}
+
+}  // namespace pd

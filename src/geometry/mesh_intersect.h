@@ -1,0 +1,74 @@
+// Exact tests between two triangle meshes (not their hulls): do the parts
+// share a point, and how deep does one's deepest vertex sit inside the other.
+// CGAL lives in mesh_intersect.cpp only.
+#pragma once
+
+#include <memory>
+
+#include "geometry/mesh.h"
+#include "geometry/types.h"
+
+namespace pd {
+
+/// A mesh made ready for the exact tests: vertices with equal coordinates
+/// merged, search trees built. Build it once per part and reuse it for every
+/// pair; it is immutable and may be queried from several threads.
+///
+/// Closed means every edge is shared by an even number of triangles (after the
+/// merge), so the mesh bounds a solid by the even-odd rule (a housing with an
+/// inner cavity shell is a solid with a void). Open meshes have a surface only.
+/// Vertices no triangle uses (points, lines) take no part in any test.
+/// Throws std::invalid_argument when the mesh has no triangles, a triangle
+/// index is out of range or a coordinate is not finite.
+class PreparedMesh {
+ public:
+  explicit PreparedMesh(const Mesh& mesh);
+  ~PreparedMesh();
+  PreparedMesh(PreparedMesh&&) noexcept;
+  PreparedMesh& operator=(PreparedMesh&&) noexcept;
+
+  bool closed() const;
+  int shells() const;  ///< connected components (triangles sharing a vertex)
+
+  struct Impl;
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Whether the parts share a point: a surface of a meets a surface of b (exact
+/// predicates on the double coordinates, so touching counts as intersecting:
+/// a bolt whose faces lie on the hole's faces intersects it), or a shell of one
+/// lies inside the other's closed mesh (containment, even-odd rule). With an
+/// open mesh only its surface counts: a part inside an open shell is not found.
+/// Degenerate (zero-area) triangles take part as segments. Never throws on
+/// self-intersecting meshes: their inside is the even-odd one, so a part in
+/// the overlap of two overlapping shells of one mesh counts as outside.
+bool meshes_intersect(const PreparedMesh& a, const PreparedMesh& b);
+bool meshes_intersect(const Mesh& a, const Mesh& b);
+
+/// A lower bound of the pair's penetration depth from single vertices: a vertex
+/// p of a strictly inside closed b must leave b, so any translation separating
+/// the parts is at least p's distance to b's surface long (and vice versa).
+struct MeshDepthBound {
+  double depth = 0.0;  ///< scene units; 0 when no vertex lies strictly inside
+  /// Unit; the DepthSolution convention (solve/result.h): moving b by
+  /// depth·direction lifts the realising vertex out: (p − q)/|p − q| for p of a
+  /// with closest point q on b's surface, (q − p)/|q − p| for p of b in a.
+  Vec3 direction = Vec3::UnitZ();
+  int vertex = -1;                    ///< the realising vertex's column in its Mesh; -1 if none
+  bool vertex_of_a = true;            ///< the realising vertex belongs to a (inside b) or to b
+  Vec3 surface_point = Vec3::Zero();  ///< q, its closest point on the other surface
+  bool tested_in_a = false, tested_in_b = false;  ///< whether a (b) was closed: if not,
+                                                  ///< no vertex could be inside it
+};
+
+/// Max over the vertices of a strictly inside closed b (even-odd rule) of their
+/// distance to b's surface, and vice versa. Open meshes contain no vertex (the
+/// corresponding tested_in_* is false). The distance is to the nearest triangle,
+/// so on a self-intersecting mesh it can only be smaller: still a lower bound.
+MeshDepthBound deepest_vertex_depth(const PreparedMesh& a, const PreparedMesh& b);
+MeshDepthBound deepest_vertex_depth(const Mesh& a, const Mesh& b);
+
+}  // namespace pd
