@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <iterator>
 #include <mutex>
@@ -94,10 +95,11 @@ int main(int argc, char** argv) {
     } else {
       scene = pd::load_scene_file(scene_arg, units, jobs);
     }
-    if (tolerance > 0)
+    if (app.count("--tolerance")) {
+      if (!(tolerance > 0 && std::isfinite(tolerance)))
+        throw pd::SceneError("--tolerance: must be a finite number > 0");
       scene.tolerance = tolerance;
-    else if (app.count("--tolerance"))
-      throw pd::SceneError("--tolerance: must be > 0");
+    }
     if (!scene.tolerance)
       throw pd::SceneError(scene.path +
                            ": no tolerance: give \"tolerance\" in the scene or --tolerance");

@@ -1,6 +1,7 @@
 #include "batch/pair_solve.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "batch/motion_sweep.h"
 #include "solve/methods.h"
@@ -69,6 +70,24 @@ double static_distance(const Part& a, const Part& b, const Vec3& dir, const Solv
   return d;
 }
 
+// The first number of a result that is not finite, or nullptr: such a result
+// comes from arithmetic that overflowed and must not pass as a finding.
+const char* non_finite_field(const PairResult& r) {
+  if (!std::isfinite(r.depth)) return "depth";
+  if (!r.direction.allFinite()) return "direction";
+  if (!std::isfinite(r.margin)) return "margin";
+  if (r.distance && !std::isfinite(*r.distance)) return "distance";
+  if (r.motion) {
+    const MotionTrace& m = *r.motion;
+    if (!std::isfinite(m.max_depth) || !std::isfinite(m.t_max_depth) ||
+        !std::isfinite(m.t_min_distance) || (m.min_distance && !std::isfinite(*m.min_distance)))
+      return "motion trace";
+    for (const auto& [t, s] : m.series)
+      if (!std::isfinite(t) || !std::isfinite(s)) return "motion series";
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
@@ -110,6 +129,11 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
       // Touching (distance within rounding of 0) is contact, as for depths.
       if (r.distance && *r.distance > tol::kTouch * size && *r.distance < *checks.clearance)
         r.status = Status::kClearanceViolation;
+    }
+    if (const char* bad = non_finite_field(r)) {
+      r.status = Status::kError;
+      r.error = std::string("the solve gave a non-finite ") + bad +
+                ": the coordinates are too large for double-precision arithmetic";
     }
   } catch (const std::exception& e) {
     r.status = Status::kError;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "batch/broad_phase.h"
 #include "batch/motion_sweep.h"
@@ -43,15 +45,23 @@ std::string encode_pair_result(const PairResult& r) {
                {"s", m.series}};
     if (m.min_distance) j["mo"]["c"] = *m.min_distance;
   }
-  return j.dump();
+  // MessagePack, not JSON text: it keeps every double's bits (NaN, ±Inf, −0
+  // included), where dump() would write NaN and Inf as null.
+  const std::vector<std::uint8_t> bytes = json::to_msgpack(j);
+  return std::string(bytes.begin(), bytes.end());
 }
 
 PairResult decode_pair_result(const std::string& s) {
-  const json j = json::parse(s);
+  // Not const: a missing key reads as null and throws on conversion (const
+  // operator[] would be undefined behaviour).
+  json j = json::from_msgpack(s);
   PairResult r;
   r.a = j["a"];
   r.b = j["b"];
-  r.status = static_cast<Status>(j["s"].get<int>());
+  const int status = j["s"];
+  if (status < int(Status::kSeparated) || status > int(Status::kClearanceViolation))
+    throw std::runtime_error("unknown status " + std::to_string(status));
+  r.status = static_cast<Status>(status);
   r.depth = j["d"];
   r.direction = Vec3(j["v"][0], j["v"][1], j["v"][2]);
   r.margin = j["g"];
@@ -74,6 +84,25 @@ PairResult decode_pair_result(const std::string& s) {
     if (mo.contains("c")) m.min_distance = mo["c"].get<double>();
     r.motion = m;
   }
+  return r;
+}
+
+PairResult pair_result_from_worker(bool ok, const std::string& payload, int a, int b,
+                                   const std::string& method) {
+  std::string why = payload;
+  if (ok) {
+    try {
+      return decode_pair_result(payload);
+    } catch (const std::exception& e) {  // the pair is lost, never the batch
+      why = std::string("worker result unreadable: ") + e.what();
+    }
+  }
+  PairResult r;
+  r.a = a;
+  r.b = b;
+  r.status = Status::kError;
+  r.method = method;
+  r.error = why;
   return r;
 }
 
@@ -181,16 +210,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
                                               options.tolerance, *ipopt, pair_checks(a, b)));
   };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
-    PairResult r;
-    if (ok) {
-      r = decode_pair_result(payload);
-    } else {
-      r.a = pairs[k].first;
-      r.b = pairs[k].second;
-      r.status = Status::kError;
-      r.method = method_name(options.solver.method);
-      r.error = payload;
-    }
+    const PairResult r = pair_result_from_worker(ok, payload, pairs[k].first, pairs[k].second,
+                                                 method_name(options.solver.method));
     out.pairs[k] = r;
     if (options.on_pair) options.on_pair(r, parts);
     progress.tick();

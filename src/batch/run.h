@@ -45,4 +45,10 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options);
 std::string encode_pair_result(const PairResult& r);
 PairResult decode_pair_result(const std::string& s);
 
+/// The parent's view of a worker's answer for pair (a, b): the decoded result,
+/// or an error result when the worker failed (`ok` false, `payload` its reason)
+/// or its payload cannot be decoded. Never throws on a bad payload.
+PairResult pair_result_from_worker(bool ok, const std::string& payload, int a, int b,
+                                   const std::string& method);
+
 }  // namespace pd

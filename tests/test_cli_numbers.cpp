@@ -1,0 +1,102 @@
+// The pdcheck binary on numbers at the edges of double precision and on
+// malformed scene text (issue 11): every case ends with a report or exit 2,
+// never an abort.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using nlohmann::json;
+
+namespace {
+
+const std::string kSource = PDCHECK_SOURCE_DIR;
+
+struct CliRun {
+  int code = -1;   ///< exit code, or -1 when killed by a signal
+  int signal = 0;  ///< the signal that ended it, if any
+  std::string out, err;
+};
+
+// Runs pdcheck through the shell; stderr goes to a file so both can be read.
+CliRun pdcheck(const std::string& args, const std::string& stdin_text = "") {
+  const std::string tag = std::to_string(getpid());
+  const std::string err_file = testing::TempDir() + "pdcheck_num_err_" + tag + ".txt";
+  std::string cmd = "exec " + std::string(PDCHECK_BINARY) + " " + args + " 2>" + err_file;
+  if (!stdin_text.empty()) {
+    const std::string in_file = testing::TempDir() + "pdcheck_num_in_" + tag + ".txt";
+    std::ofstream(in_file) << stdin_text;
+    cmd += " <" + in_file;
+  } else {
+    cmd += " </dev/null";
+  }
+  CliRun r;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  // The shell reports a child killed by signal s as exit code 128 + s.
+  if (WIFEXITED(status) && WEXITSTATUS(status) > 128) r.signal = WEXITSTATUS(status) - 128;
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  r.code = WIFEXITED(status) && !r.signal ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_file);
+  std::stringstream ss;
+  ss << e.rdbuf();
+  r.err = ss.str();
+  return r;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Two tetrahedra that overlap near the origin, every coordinate with the
+// exponent suffix `e` ("" for unit size, "e250" for huge).
+std::string overlapping_pair(const std::string& e) {
+  auto v = [&](const char* x, const char* y, const char* z) {
+    return "[" + std::string(x) + e + "," + y + e + "," + z + e + "]";
+  };
+  return "{\"tolerance\": 1e-300, \"parts\": [{\"id\": \"a\", \"vertices\": [" + v("0", "0", "0") +
+         "," + v("1", "0", "0") + "," + v("0", "1", "0") + "," + v("0", "0", "1") +
+         "]}, {\"id\": \"b\", \"vertices\": [" + v("0.1", "0.1", "0.1") + "," +
+         v("2", "0.1", "0.1") + "," + v("0.1", "2", "0.1") + "," + v("0.1", "0.1", "2") +
+         "]}], \"pairs\": [[\"a\", \"b\"]]}";
+}
+
+}  // namespace
+
+TEST(CliNumbers, InfiniteToleranceIsRefused) {
+  for (const char* t : {"inf", "-inf", "nan", "1e999"}) {
+    const CliRun r =
+        pdcheck(kSource + "/testdata/demo/scene.json --quiet --tolerance " + std::string(t));
+    EXPECT_EQ(r.code, 2) << t << ": " << r.err;
+    EXPECT_NE(r.err.find("--tolerance"), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliNumbers, HugeCoordinatesNeverAbortTheRun) {
+  // Finite coordinates whose squares overflow: the run still ends with a
+  // report in which the pair has a real status or an error with its reason.
+  const std::string scene = write_temp("num_huge.json", overlapping_pair("e250"));
+  for (const char* method : {"mlsl", "exact"}) {
+    const CliRun r = pdcheck(scene + " --quiet -j 1 --method " + method);
+    ASSERT_EQ(r.signal, 0) << method << ": " << r.err;
+    ASSERT_TRUE(r.code == 1 || r.code == 3) << method << ": exit " << r.code << " " << r.err;
+    const json rep = json::parse(r.out);
+    ASSERT_EQ(rep["pairs"].size(), 1u);
+    const json& p = rep["pairs"][0];
+    if (p["status"] == "error") {
+      EXPECT_FALSE(p["error"].get<std::string>().empty());
+    } else {
+      EXPECT_EQ(p["status"], "interference") << p.dump();
+      EXPECT_TRUE(p["depth"].is_number()) << p.dump();
+    }
+  }
+}

@@ -1,0 +1,129 @@
+// Numbers at the edges of double precision: the worker/parent codec, huge
+// coordinates, non-finite results (issue 11).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "batch/run.h"
+
+namespace {
+
+using pd::PairResult;
+
+std::uint64_t bits(double x) {
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+double from_bits(std::uint64_t b) {
+  double x;
+  std::memcpy(&x, &b, sizeof x);
+  return x;
+}
+
+// Every double a pair's result may hold, the awkward ones included.
+const double kAwkward[] = {std::numeric_limits<double>::quiet_NaN(),
+                           -std::numeric_limits<double>::quiet_NaN(),
+                           from_bits(0x7ff4000000000123ULL),  // a NaN with a payload
+                           std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity(),
+                           -0.0,
+                           0.0,
+                           std::numeric_limits<double>::denorm_min(),
+                           std::numeric_limits<double>::max(),
+                           -std::numeric_limits<double>::lowest(),
+                           0.1,
+                           1.0 / 3.0,
+                           1e-300};
+
+PairResult with_every_double(double x) {
+  PairResult r;
+  r.a = 3;
+  r.b = 7;
+  r.status = pd::Status::kInterference;
+  r.depth = x;
+  r.direction = pd::Vec3(x, -x, 0.5);
+  r.distance = x;
+  r.margin = x;
+  r.method = "mlsl";
+  r.time_ms = x;
+  r.fallback = "f";
+  r.error = "e";
+  r.clearance_min = x;
+  pd::MotionTrace m;
+  m.steps = 5;
+  m.max_depth = x;
+  m.t_max_depth = x;
+  m.min_distance = x;
+  m.t_min_distance = x;
+  m.series = {{x, x}, {1.0, x}};
+  r.motion = m;
+  return r;
+}
+
+}  // namespace
+
+TEST(PairResultCodec, KeepsEveryDoubleBitForBit) {
+  for (const double x : kAwkward) {
+    const PairResult r = pd::decode_pair_result(pd::encode_pair_result(with_every_double(x)));
+    SCOPED_TRACE(x);
+    EXPECT_EQ(r.a, 3);
+    EXPECT_EQ(r.b, 7);
+    EXPECT_EQ(r.status, pd::Status::kInterference);
+    EXPECT_EQ(bits(r.depth), bits(x));
+    EXPECT_EQ(bits(r.direction.x()), bits(x));
+    EXPECT_EQ(bits(r.direction.y()), bits(-x));
+    EXPECT_EQ(bits(r.direction.z()), bits(0.5));
+    ASSERT_TRUE(r.distance);
+    EXPECT_EQ(bits(*r.distance), bits(x));
+    EXPECT_EQ(bits(r.margin), bits(x));
+    EXPECT_EQ(bits(r.time_ms), bits(x));
+    ASSERT_TRUE(r.clearance_min);
+    EXPECT_EQ(bits(*r.clearance_min), bits(x));
+    ASSERT_TRUE(r.motion);
+    EXPECT_EQ(r.motion->steps, 5);
+    EXPECT_EQ(bits(r.motion->max_depth), bits(x));
+    EXPECT_EQ(bits(r.motion->t_max_depth), bits(x));
+    ASSERT_TRUE(r.motion->min_distance);
+    EXPECT_EQ(bits(*r.motion->min_distance), bits(x));
+    EXPECT_EQ(bits(r.motion->t_min_distance), bits(x));
+    ASSERT_EQ(r.motion->series.size(), 2u);
+    EXPECT_EQ(bits(r.motion->series[0].first), bits(x));
+    EXPECT_EQ(bits(r.motion->series[1].second), bits(x));
+  }
+}
+
+TEST(PairResultCodec, RefusesDamagedPayloadsWithAnException) {
+  const std::string good = pd::encode_pair_result(with_every_double(1.0));
+  EXPECT_NO_THROW(pd::decode_pair_result(good));
+  EXPECT_ANY_THROW(pd::decode_pair_result(""));
+  EXPECT_ANY_THROW(pd::decode_pair_result("{\"a\": 1}"));
+  EXPECT_ANY_THROW(pd::decode_pair_result(good.substr(0, good.size() / 2)));
+  // A status outside the enum is not cast into one.
+  PairResult bad = with_every_double(1.0);
+  bad.status = static_cast<pd::Status>(99);
+  EXPECT_ANY_THROW(pd::decode_pair_result(pd::encode_pair_result(bad)));
+}
+
+TEST(PairResultCodec, AnUnreadableWorkerAnswerIsAnErrorOnItsPairOnly) {
+  const PairResult good = pd::pair_result_from_worker(
+      true, pd::encode_pair_result(with_every_double(2.0)), 3, 7, "mlsl");
+  EXPECT_EQ(good.status, pd::Status::kInterference);
+  EXPECT_EQ(good.depth, 2.0);
+  for (const std::string payload :
+       {std::string(), std::string("{\"d\": null}"), std::string("\x85garbage")}) {
+    const PairResult r = pd::pair_result_from_worker(true, payload, 4, 9, "exact");
+    EXPECT_EQ(r.status, pd::Status::kError);
+    EXPECT_EQ(r.a, 4);
+    EXPECT_EQ(r.b, 9);
+    EXPECT_EQ(r.method, "exact");
+    EXPECT_NE(r.error.find("worker result unreadable"), std::string::npos) << r.error;
+  }
+  const PairResult crashed = pd::pair_result_from_worker(false, "worker crashed", 1, 2, "mlsl");
+  EXPECT_EQ(crashed.status, pd::Status::kError);
+  EXPECT_EQ(crashed.error, "worker crashed");
+}
