@@ -2,9 +2,17 @@
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+
+#include "scene/ply_check.h"
 
 namespace pd {
 
@@ -49,27 +57,11 @@ void collect(const aiScene* scene, const aiNode* node, const Mat4& parent, std::
   for (unsigned c = 0; c < node->mNumChildren; ++c) collect(scene, node->mChildren[c], world, out);
 }
 
-}  // namespace
-
-std::vector<Mesh> load_meshes(const std::string& path, bool split_instances) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshError("cannot read mesh file " + path + ": no such file");
-  Assimp::Importer importer;
-  // Only positions are needed; no post-processing that could move vertices.
-  const aiScene* scene = importer.ReadFile(path, 0);
-  if (!scene || !scene->mRootNode) {
-    std::string why = importer.GetErrorString();
-    throw MeshError("cannot load mesh file " + path + ": " +
-                    (why.empty() ? "unknown format" : why));
-  }
+/// The meshes of an imported scene, split per instance or joined into one.
+std::vector<Mesh> meshes_of(const aiScene* scene, bool split_instances) {
   std::vector<Mesh> pieces;
-  try {
-    collect(scene, scene->mRootNode, Mat4::Identity(), pieces);
-  } catch (const MeshError& e) {
-    throw MeshError("mesh file " + path + ": " + e.what());
-  }
-  if (pieces.empty()) throw MeshError("mesh file " + path + " has no vertices");
+  collect(scene, scene->mRootNode, Mat4::Identity(), pieces);
+  if (pieces.empty()) throw MeshError("has no vertices");
   if (split_instances) return pieces;
   Eigen::Index n = 0, t = 0;
   for (const auto& p : pieces) {
@@ -87,6 +79,106 @@ std::vector<Mesh> load_meshes(const std::string& path, bool split_instances) {
     t += p.triangles.cols();
   }
   return {std::move(all)};
+}
+
+const aiScene* checked(const aiScene* scene, const Assimp::Importer& importer) {
+  if (!scene || !scene->mRootNode) {
+    const std::string why = importer.GetErrorString();
+    throw MeshError(why.empty() ? "unknown format" : why);
+  }
+  return scene;
+}
+
+/// The vertices assimp returned, in its mesh order (a PLY has one mesh).
+Eigen::Matrix<float, 3, Eigen::Dynamic> raw_vertices(const aiScene* scene) {
+  Eigen::Index n = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) n += scene->mMeshes[m]->mNumVertices;
+  Eigen::Matrix<float, 3, Eigen::Dynamic> out(3, n);
+  n = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+    for (unsigned v = 0; v < scene->mMeshes[m]->mNumVertices; ++v, ++n) {
+      const aiVector3D& x = scene->mMeshes[m]->mVertices[v];
+      out.col(n) << x.x, x.y, x.z;
+    }
+  return out;
+}
+
+std::vector<Mesh> read_ply(std::string_view bytes, bool split_instances) {
+  const PlyFile ply = check_ply(bytes);
+  Assimp::Importer importer;
+  const aiScene* scene =
+      checked(importer.ReadFileFromMemory(ply.for_assimp.data(), ply.for_assimp.size(), 0, "ply"),
+              importer);
+  check_ply_read(ply, raw_vertices(scene));
+  return meshes_of(scene, split_instances);
+}
+
+/// Why `path` cannot be read as a mesh file, or empty when it is a regular file.
+std::string path_problem(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    const int err = errno;
+    struct stat link {};
+    if (err == ENOENT && ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode))
+      return "it is a dangling symbolic link";
+    if (err == ENOENT) return "no such file";
+    if (err == ELOOP) return "it is a symbolic link loop (too many levels of symbolic links)";
+    return std::strerror(err);
+  }
+  if (S_ISREG(st.st_mode)) return {};
+  if (S_ISDIR(st.st_mode)) return "it is a directory, not a mesh file";
+  if (S_ISFIFO(st.st_mode)) return "it is a FIFO (named pipe), not a regular file";
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "it is a device, not a regular file";
+  if (S_ISSOCK(st.st_mode)) return "it is a socket, not a regular file";
+  return "it is not a regular file";
+}
+
+/// The whole file, or its first `limit` bytes.
+std::string read_bytes(const std::string& path, size_t limit = std::string::npos) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw MeshError(std::strerror(errno));
+  std::string out;
+  char buf[1 << 16];
+  while (out.size() < limit) {
+    const ssize_t r = ::read(fd, buf, std::min(sizeof buf, limit - out.size()));
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) {
+      const int err = errno;
+      ::close(fd);
+      throw MeshError(std::strerror(err));
+    }
+    if (r == 0) break;
+    out.append(buf, size_t(r));
+  }
+  ::close(fd);
+  return out;
+}
+
+}  // namespace
+
+std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
+                              bool split_instances) {
+  if (looks_like_ply(bytes)) return read_ply(bytes, split_instances);
+  Assimp::Importer importer;
+  // Only positions are needed; no post-processing that could move vertices.
+  const aiScene* scene = checked(
+      importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, extension.c_str()), importer);
+  return meshes_of(scene, split_instances);
+}
+
+std::vector<Mesh> load_meshes(const std::string& path, bool split_instances) {
+  const std::string problem = path_problem(path);
+  if (!problem.empty()) throw MeshError("cannot read mesh file " + path + ": " + problem);
+  try {
+    // A PLY is read from memory, checked and maybe rewritten; other formats
+    // from the path, so a glTF finds its external buffers.
+    if (looks_like_ply(read_bytes(path, 4))) return read_ply(read_bytes(path), split_instances);
+    Assimp::Importer importer;
+    // Only positions are needed; no post-processing that could move vertices.
+    return meshes_of(checked(importer.ReadFile(path, 0), importer), split_instances);
+  } catch (const MeshError& e) {
+    throw MeshError("cannot load mesh file " + path + ": " + e.what());
+  }
 }
 
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances) {

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -16,12 +17,22 @@ class MeshError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Every mesh instance in a file with its triangles, node transforms applied
+/// Every mesh instance in a file (read in this process) with its triangles, node transforms applied
 /// (world = node · v, accumulated in double precision: assimp stores float32).
 /// With split_instances, one mesh per (node, mesh) instance; else one mesh
 /// (triangle indices offset to the concatenated vertices). Faces of more than
 /// three vertices are fanned; points and lines contribute vertices only.
 std::vector<Mesh> load_meshes(const std::string& path, bool split_instances);
+
+/// Reads a mesh file's bytes in this process (no time limit, no isolation: for
+/// the loader process and for fuzzing): a PLY (recognized by its first line,
+/// whatever the hint) is checked and, where Debian's assimp 5.2.5 would misread
+/// it, handed over rewritten (scene/ply_check.h); then assimp reads from memory.
+/// `extension` is the format hint for assimp ("stl", "obj", "ply", "glb", …).
+/// Returns what load_meshes returns; throws MeshError with the reason (the
+/// caller names the file). A glTF with external buffers needs load_meshes.
+std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
+                              bool split_instances);
 
 /// The vertices of load_meshes, without triangles.
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances);
