@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -58,14 +59,14 @@ std::string write_temp(const std::string& name, const std::string& text) {
 }
 
 // Two tetrahedra that overlap near the origin, every coordinate with the
-// exponent suffix `e` ("" for unit size, "e250" for huge).
+// exponent suffix `e` ("" for unit size, "e250" for huge), the tolerance too.
 std::string overlapping_pair(const std::string& e) {
   auto v = [&](const char* x, const char* y, const char* z) {
     return "[" + std::string(x) + e + "," + y + e + "," + z + e + "]";
   };
-  return "{\"tolerance\": 1e-300, \"parts\": [{\"id\": \"a\", \"vertices\": [" + v("0", "0", "0") +
-         "," + v("1", "0", "0") + "," + v("0", "1", "0") + "," + v("0", "0", "1") +
-         "]}, {\"id\": \"b\", \"vertices\": [" + v("0.1", "0.1", "0.1") + "," +
+  return "{\"tolerance\": 0.01" + e + ", \"parts\": [{\"id\": \"a\", \"vertices\": [" +
+         v("0", "0", "0") + "," + v("1", "0", "0") + "," + v("0", "1", "0") + "," +
+         v("0", "0", "1") + "]}, {\"id\": \"b\", \"vertices\": [" + v("0.1", "0.1", "0.1") + "," +
          v("2", "0.1", "0.1") + "," + v("0.1", "2", "0.1") + "," + v("0.1", "0.1", "2") +
          "]}], \"pairs\": [[\"a\", \"b\"]]}";
 }
@@ -99,4 +100,42 @@ TEST(CliNumbers, HugeCoordinatesNeverAbortTheRun) {
       EXPECT_TRUE(p["depth"].is_number()) << p.dump();
     }
   }
+}
+
+// The depth of a pair scales with its coordinates, from 1e-300 to 1e307: the
+// same interference at every scale, against the exact reference at scale 1.
+// Beyond 1e154 the squares in the frame's diagonal used to overflow: both parts
+// became "a single point" and the interference was missed (exit 0).
+TEST(CliNumbers, DepthScalesWithCoordinatesToTheEdgeOfTheDoubleRange) {
+  const std::string unit = write_temp("num_unit.json", overlapping_pair(""));
+  const CliRun ref = pdcheck(unit + " --quiet -j 1 --method exact");
+  ASSERT_EQ(ref.code, 1) << ref.err;
+  const double depth = json::parse(ref.out)["pairs"][0]["depth"];
+  ASSERT_GT(depth, 0.1);
+  for (const int e : {-300, -160, 160, 250, 307}) {
+    const std::string scene =
+        write_temp("num_scaled.json", overlapping_pair("e" + std::to_string(e)));
+    for (const char* method : {"mlsl", "exact"}) {
+      const CliRun r = pdcheck(scene + " --quiet -j 1 --method " + method);
+      ASSERT_EQ(r.code, 1) << "1e" << e << " " << method << ": " << r.err << r.out;
+      const json p = json::parse(r.out)["pairs"][0];
+      ASSERT_EQ(p["status"], "interference") << "1e" << e << " " << method << ": " << p.dump();
+      EXPECT_NEAR(p["depth"].get<double>() / std::pow(10.0, e), depth, 1e-9 * depth)
+          << "1e" << e << " " << method;
+    }
+  }
+}
+
+// Beyond the double range no frame holds the part: it is an error on the part,
+// named, with the reason, and the run says something was not checked (exit 3).
+TEST(CliNumbers, APartBeyondTheDoubleRangeIsAnErrorNotAPoint) {
+  const std::string scene =
+      write_temp("num_beyond.json",
+                 "{\"tolerance\": 1, \"parts\": [{\"id\": \"vast\", \"vertices\": [[-1.7e308,0,0], "
+                 "[1.7e308,0,0], [0,1.7e308,0], [0,0,1.7e308]]}, {\"id\": \"unit\", \"vertices\": "
+                 "[[0,0,0], [1,0,0], [0,1,0], [0,0,1]]}]}");
+  const CliRun r = pdcheck(scene + " -j 1");
+  ASSERT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("part \"vast\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("too large"), std::string::npos) << r.err;
 }

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "batch/run.h"
+#include "geometry/hull.h"
 
 namespace {
 
@@ -114,7 +115,7 @@ TEST(PairResultCodec, AnUnreadableWorkerAnswerIsAnErrorOnItsPairOnly) {
       true, pd::encode_pair_result(with_every_double(2.0)), 3, 7, "mlsl");
   EXPECT_EQ(good.status, pd::Status::kInterference);
   EXPECT_EQ(good.depth, 2.0);
-  for (const std::string payload :
+  for (const std::string& payload :
        {std::string(), std::string("{\"d\": null}"), std::string("\x85garbage")}) {
     const PairResult r = pd::pair_result_from_worker(true, payload, 4, 9, "exact");
     EXPECT_EQ(r.status, pd::Status::kError);
@@ -126,4 +127,25 @@ TEST(PairResultCodec, AnUnreadableWorkerAnswerIsAnErrorOnItsPairOnly) {
   const PairResult crashed = pd::pair_result_from_worker(false, "worker crashed", 1, 2, "mlsl");
   EXPECT_EQ(crashed.status, pd::Status::kError);
   EXPECT_EQ(crashed.error, "worker crashed");
+}
+
+// The hull's dimension test works in the frame of the point set: its scale
+// must not overflow (coordinates beyond ~1e154 squared) or underflow.
+TEST(HugeCoordinates, HullDimensionIsScaleFree) {
+  pd::Points tet(3, 5);
+  tet << 0, 1, 0, 0, 0.2,  //
+      0, 0, 1, 0, 0.2,     //
+      0, 0, 0, 1, 0.2;
+  for (const double s : {1e-300, 1e-160, 1.0, 1e160, 1e250, 1e307}) {
+    const pd::Hull h = pd::convex_hull(tet * s);
+    EXPECT_EQ(h.dimension, 3) << s;
+    EXPECT_EQ(h.vertices.cols(), 4) << s;
+    EXPECT_TRUE(h.warnings.empty()) << s;
+  }
+  // A set whose box half-diagonal exceeds the double range has no frame.
+  pd::Points vast(3, 4);
+  vast << -1.7e308, 1.7e308, 0, 0,  //
+      0, 0, 1.7e308, 0,             //
+      0, 0, 0, 1.7e308;
+  EXPECT_THROW(pd::convex_hull(vast), std::invalid_argument);
 }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "batch/motion_sweep.h"
 #include "solve/methods.h"
@@ -70,6 +71,15 @@ double static_distance(const Part& a, const Part& b, const Vec3& dir, const Solv
   return d;
 }
 
+// The largest coordinate plus the box diagonal, without overflow in the
+// diagonal's squares (for boxes beyond ~1e154); infinite only when the sum
+// itself is beyond the double range.
+double rounding_scale(const Aabb& box) {
+  double diag = (box.hi - box.lo).norm();
+  if (!std::isfinite(diag)) diag = 2 * (0.5 * box.hi - 0.5 * box.lo).stableNorm();
+  return box.hi.cwiseAbs().cwiseMax(box.lo.cwiseAbs()).maxCoeff() + diag;
+}
+
 // The first number of a result that is not finite, or nullptr: such a result
 // comes from arithmetic that overflowed and must not pass as a finding.
 const char* non_finite_field(const PairResult& r) {
@@ -118,9 +128,11 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     }
     // Rounding scale of the pair: input coordinates were rounded at their absolute
     // magnitude, so the box's distance from the origin counts as well as its size.
-    const Aabb box = a.box.merged(b.box);
-    const double size =
-        box.hi.cwiseAbs().cwiseMax(box.lo.cwiseAbs()).maxCoeff() + (box.hi - box.lo).norm();
+    const double size = rounding_scale(a.box.merged(b.box));
+    if (!std::isfinite(size))
+      throw std::runtime_error(
+          "the pair's coordinates are too large for double-precision arithmetic (its box "
+          "reaches beyond 1e307)");
     r.status = classify(r.depth, tolerance, size);
     r.margin = tolerance - r.depth;
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();

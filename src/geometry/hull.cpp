@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "geometry/frame.h"
@@ -66,6 +67,12 @@ Hull convex_hull(const Points& pts) {
   Hull h;
   // Principal axes of the centred, scaled set decide the dimension robustly.
   const Frame f = points_frame(pts);
+  // Beyond the double range the frame cannot shrink the set to the unit ball:
+  // every point would land on the centre and the part pass for a single point.
+  if (!std::isfinite(f.scale))
+    throw std::invalid_argument(
+        "coordinates too large for double-precision arithmetic: the part's bounding box "
+        "half-diagonal exceeds 1.8e308");
   const Points local = f.to_local(pts);
   const Vec3 mean = local.rowwise().mean();
   const Points c = local.colwise() - mean;
