@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "batch/piece_pairs.h"
 #include "solve/signed_distance.h"
 
 namespace pd {
@@ -24,19 +25,25 @@ MotionSweep sweep_pair(const Part& a, const Part& b, const MotionCheck& check,
   bool any_overlap = false;
   for (long k = 0; k < tr.steps; ++k) {
     const double t = check.grid.time(k);
-    double value = -std::numeric_limits<double>::infinity();
-    Vec3 dir = Vec3::UnitZ();
-    for (size_t i = 0; i < np; ++i) {
-      for (size_t j = 0; j < nq; ++j) {
-        const SignedSolution r =
-            signed_distance(placed(a, a.pieces[i], t), placed(b, b.pieces[j], t), s, ipopt,
-                            warm ? last[i * nq + j] : std::nullopt);
-        last[i * nq + j] = r.direction;
-        out.stats += r.stats;
-        if (!r.fallback.empty()) out.fallback = r.fallback + " at t = " + std::to_string(t);
-        if (r.value > value) value = r.value, dir = r.direction;
-      }
-    }
+    std::vector<Points> pa(np), pb(nq);
+    std::vector<Aabb> ba(np), bb(nq);
+    for (size_t i = 0; i < np; ++i) ba[i] = Aabb::of(pa[i] = placed(a, a.pieces[i], t));
+    for (size_t j = 0; j < nq; ++j) bb[j] = Aabb::of(pb[j] = placed(b, b.pieces[j], t));
+    const PiecePairsResult c = solve_piece_pairs(ba, bb, [&](int i, int j) {
+      const SignedSolution r =
+          signed_distance(pa[i], pb[j], s, ipopt, warm ? last[i * nq + j] : std::nullopt);
+      last[i * nq + j] = r.direction;
+      PieceOutcome o =
+          make_outcome(i, j, std::max(0.0, r.value), r.direction, std::max(0.0, -r.value));
+      o.value = r.value;
+      o.stats = r.stats;
+      if (!r.fallback.empty()) o.fallback = r.fallback + " at t = " + std::to_string(t);
+      return o;
+    });
+    out.stats += c.stats;
+    if (!c.fallback.empty()) out.fallback = c.fallback;
+    const double value = c.value;
+    const Vec3 dir = c.direction;
     if (check.series) tr.series.emplace_back(t, value);
     if (value > 0 && (!any_overlap || value > tr.max_depth)) {
       any_overlap = true;

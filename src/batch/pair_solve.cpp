@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "batch/motion_sweep.h"
+#include "batch/piece_pairs.h"
 #include "solve/methods.h"
 #include "solve/signed_distance.h"
 #include "tolerances.h"
@@ -35,40 +36,47 @@ Status classify(double depth, double tolerance, double pair_size) {
 
 namespace {
 
-// The static check: every piece pair, the deepest one counts.
+std::vector<Aabb> piece_boxes(const Part& p) {
+  std::vector<Aabb> boxes;
+  for (const Hull& h : p.pieces) boxes.push_back(Aabb::of(h.vertices));
+  return boxes;
+}
+
+// The static check: the deepest piece pair counts (combine_piece_outcomes).
 void solve_static(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt,
                   PairResult& r) {
-  bool first = true;
-  for (const Hull& pa : a.pieces) {
-    for (const Hull& pb : b.pieces) {
-      if (a.pieces.size() * b.pieces.size() > 1 &&
-          !Aabb::of(pa.vertices).overlaps(Aabb::of(pb.vertices)))
-        continue;  // pieces whose boxes are apart cannot overlap
-      const DepthSolution d = solve_convex_pair(pa.vertices, pb.vertices, s, ipopt);
-      r.stats += d.stats;
-      if (!d.fallback.empty()) r.fallback = d.fallback;
-      if (first || d.depth > r.depth) {
-        r.depth = d.depth;
-        r.direction = d.direction;
-        r.distance = d.distance;
-        first = false;
-      }
-    }
-  }
+  const PiecePairsResult c = solve_piece_pairs(piece_boxes(a), piece_boxes(b), [&](int i, int j) {
+    const DepthSolution d = solve_convex_pair(a.pieces[i].vertices, b.pieces[j].vertices, s, ipopt);
+    PieceOutcome o = make_outcome(i, j, d.depth, d.direction, d.distance);
+    o.stats = d.stats;
+    o.fallback = d.fallback;
+    return o;
+  });
+  r.stats += c.stats;
+  if (!c.fallback.empty()) r.fallback = c.fallback;
+  r.depth = c.depth;
+  r.direction = c.direction;
+  r.distance = c.distance;
 }
 
 // The separation distance of a separated pair: the smallest over its piece
 // pairs, each warm-started from the static solve's separating direction.
-double static_distance(const Part& a, const Part& b, const Vec3& dir, const SolverSettings& s,
-                       IpoptLocalSolver& ipopt, SolveStats& stats) {
-  double d = std::numeric_limits<double>::infinity();
-  for (const Hull& pa : a.pieces)
-    for (const Hull& pb : b.pieces) {
-      const SignedSolution r = signed_distance(pa.vertices, pb.vertices, s, ipopt, dir);
-      stats += r.stats;
-      d = std::min(d, std::max(0.0, -r.value));
-    }
-  return d;
+void static_distance(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt,
+                     PairResult& r) {
+  const Vec3 warm = r.direction;
+  const PiecePairsResult c = solve_piece_pairs(piece_boxes(a), piece_boxes(b), [&](int i, int j) {
+    const SignedSolution d =
+        signed_distance(a.pieces[i].vertices, b.pieces[j].vertices, s, ipopt, warm);
+    PieceOutcome o =
+        make_outcome(i, j, std::max(0.0, d.value), d.direction, std::max(0.0, -d.value));
+    o.stats = d.stats;
+    return o;
+  });
+  r.stats += c.stats;
+  r.distance = c.distance;
+  // One piece pair: the static direction already separates it (kept, so a convex
+  // pair reports as before); several: the closest piece pair's direction.
+  if (a.pieces.size() * b.pieces.size() > 1) r.direction = c.direction;
 }
 
 // The largest coordinate plus the box diagonal, without overflow in the
@@ -100,6 +108,8 @@ const char* non_finite_field(const PairResult& r) {
 
 }  // namespace
 
+double pair_size(const Part& a, const Part& b) { return rounding_scale(a.box.merged(b.box)); }
+
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
                            double tolerance, IpoptLocalSolver& ipopt, const PairChecks& checks) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -128,7 +138,7 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     }
     // Rounding scale of the pair: input coordinates were rounded at their absolute
     // magnitude, so the box's distance from the origin counts as well as its size.
-    const double size = rounding_scale(a.box.merged(b.box));
+    const double size = pair_size(a, b);
     if (!std::isfinite(size))
       throw std::runtime_error(
           "the pair's coordinates are too large for double-precision arithmetic (its box "
@@ -137,7 +147,7 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     r.margin = tolerance - r.depth;
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
-      if (!checks.motion) r.distance = static_distance(a, b, r.direction, s, ipopt, r.stats);
+      if (!checks.motion) static_distance(a, b, s, ipopt, r);
       // Touching (distance within rounding of 0) is contact, as for depths.
       if (r.distance && *r.distance > tol::kTouch * size && *r.distance < *checks.clearance)
         r.status = Status::kClearanceViolation;

@@ -15,6 +15,11 @@ struct PairChecks {
   const MotionCheck* motion = nullptr;  ///< set when a part of the pair moves
 };
 
+/// The rounding scale of a pair: input coordinates were rounded at their absolute
+/// magnitude, so the box's distance from the origin counts as well as its size
+/// (infinite when beyond the double range).
+double pair_size(const Part& a, const Part& b);
+
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
                            double tolerance, IpoptLocalSolver& ipopt,
                            const PairChecks& checks = {});
