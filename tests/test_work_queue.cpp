@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-#include "batch/work_queue.h"
+#include "work_queue.h"
 
 using namespace pd;
 

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       "interferences."};
   app.footer(kExamples);
   std::string scene_arg, output, format = "json", method_arg, units_arg;
-  double tolerance = 0.0, pair_timeout = 0.0;
+  double tolerance = 0.0, pair_timeout = 0.0, load_timeout = pd::kDefaultLoadTimeout;
   int jobs = 0;
   std::uint64_t seed = 0;
   bool quiet = false;
@@ -68,6 +68,10 @@ int main(int argc, char** argv) {
                  "seconds one pair may take before its worker is killed and the pair reported as "
                  "an error (default: none)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--load-timeout", load_timeout,
+                 "seconds one mesh file may take to read before its loader process is killed and "
+                 "its parts reported as errors (default: " +
+                     std::to_string(int(pd::kDefaultLoadTimeout)) + "; 0: none)");
   app.add_flag("-q,--quiet", quiet, "no progress and no summary line on stderr");
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
   try {
@@ -77,6 +81,10 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitUsage;
   }
 
+  if (!(load_timeout >= 0 && load_timeout <= 1e6)) {
+    std::cerr << "pdcheck: error: --load-timeout: must be a number of seconds from 0 to 1e6\n";
+    return kExitUsage;
+  }
   if (jobs <= 0) jobs = static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
   pd::SceneSpec scene;
   pd::SolverSettings solver;
@@ -124,6 +132,7 @@ int main(int argc, char** argv) {
   opt.tolerance = *scene.tolerance;
   opt.jobs = jobs;
   opt.pair_timeout = pair_timeout;
+  opt.load_timeout = load_timeout;
   opt.quiet = quiet;
   const bool jsonl = format == "jsonl";
   if (jsonl && output.empty()) {

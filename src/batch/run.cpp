@@ -13,7 +13,7 @@
 #include "batch/motion_sweep.h"
 #include "batch/pair_solve.h"
 #include "batch/progress.h"
-#include "batch/work_queue.h"
+#include "work_queue.h"
 
 namespace pd {
 
@@ -126,7 +126,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   RunResult out;
   {
     Progress progress(scene.parts.size(), options.quiet, "parts");
-    out.parts = build_parts(scene, options.jobs, [&](size_t n) { progress.tick(n); });
+    out.parts = build_parts(
+        scene, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout);
     progress.finish();
   }
   out.stages.parts = lap(t);
@@ -182,7 +183,9 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     // (and the exit code); its pairs cannot be formed without geometry.
     for (const auto& [i, j] : overlapping_boxes(boxes, reach))
       pairs.emplace_back(usable[i], usable[j]);
-    out.culled = out.all_pairs - static_cast<long>(pairs.size());
+    const long usable_pairs = static_cast<long>(usable.size()) * (long(usable.size()) - 1) / 2;
+    out.unchecked = out.all_pairs - usable_pairs;  // not the broad phase's doing
+    out.culled = usable_pairs - static_cast<long>(pairs.size());
   }
 
   out.stages.broad_phase = lap(t);

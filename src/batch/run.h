@@ -18,6 +18,8 @@ struct RunOptions {
   int jobs = 1;
   double pair_timeout = 0.0;  ///< seconds, 0 = none
   bool quiet = false;         ///< no progress on stderr
+  /// Seconds one mesh file may take to read (in a loader process), 0 = none.
+  double load_timeout = kDefaultLoadTimeout;
   /// Called in the parent as each pair ends (completion order), e.g. for JSON Lines.
   std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;
 };
@@ -34,6 +36,7 @@ struct RunResult {
   std::vector<PairResult> pairs;  ///< in (a, b) order: deterministic whatever the jobs
   long all_pairs = 0;             ///< n(n − 1)/2, or the listed pairs
   long culled = 0;                ///< removed by the broad phase
+  long unchecked = 0;             ///< never formed: a part of theirs is unusable
   double seconds = 0.0;
   StageTimes stages;
   std::vector<std::string> simulated;  ///< "interference", then "clearance", "motion" if asked

@@ -7,7 +7,7 @@ namespace pd {
 using json = nlohmann::ordered_json;
 
 int Summary::exit_code() const {
-  if (error > 0 || part_errors > 0) return 3;
+  if (error > 0 || part_errors > 0 || unchecked > 0) return 3;
   return interference > 0 || clearance_violation > 0 ? 1 : 0;
 }
 
@@ -17,6 +17,7 @@ Summary summarize(const RunResult& r) {
   for (const Part& p : r.parts) s.part_errors += p.error ? 1 : 0;
   s.all_pairs = r.all_pairs;
   s.culled = r.culled;
+  s.unchecked = r.unchecked;
   s.candidates = static_cast<long>(r.pairs.size());
   for (const auto& what : r.simulated) s.clearance_checked |= what == "clearance";
   for (const PairResult& p : r.pairs) {
@@ -88,6 +89,7 @@ json summary_json(const Summary& s) {
             {"part_errors", s.part_errors},
             {"pairs", s.all_pairs},
             {"culled", s.culled},
+            {"unchecked", s.unchecked},
             {"candidate_pairs", s.candidates},
             {"separated", s.separated},
             {"false_positive", s.false_positive},
@@ -150,9 +152,11 @@ std::string summary_line(const Summary& s, double seconds) {
   char buf[512];
   std::snprintf(
       buf, sizeof buf,
-      "pdcheck: %ld parts, %ld candidate pairs (%ld culled): %ld interference, %s%ld "
+      "pdcheck: %ld parts, %ld candidate pairs (%ld culled%s): %ld interference, %s%ld "
       "false_positive, %ld separated, %ld error%s in %.2f s",
-      s.parts, s.candidates, s.culled, s.interference,
+      s.parts, s.candidates, s.culled,
+      s.unchecked ? (", " + std::to_string(s.unchecked) + " unchecked").c_str() : "",
+      s.interference,
       s.clearance_checked
           ? (std::to_string(s.clearance_violation) + " clearance_violation, ").c_str()
           : "",

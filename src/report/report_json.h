@@ -19,6 +19,7 @@ struct ReportContext {
 /// Counts per status, parts that failed, and the exit code they imply.
 struct Summary {
   long parts = 0, part_errors = 0, all_pairs = 0, culled = 0, candidates = 0;
+  long unchecked = 0;  ///< pairs of an unusable part, never formed
   long separated = 0, false_positive = 0, interference = 0, error = 0;
   long clearance_violation = 0;
   bool clearance_checked = false;

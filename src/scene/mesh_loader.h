@@ -1,6 +1,7 @@
 // Mesh files through assimp (STL, OBJ, PLY, glTF, …).
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -33,6 +34,30 @@ std::vector<Mesh> load_meshes(const std::string& path, bool split_instances);
 /// caller names the file). A glTF with external buffers needs load_meshes.
 std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
                               bool split_instances);
+
+/// Default limit, in seconds, on reading one mesh file in a loader process
+/// (--load-timeout). Generous: assimp reads STL at tens of MB/s and a large
+/// CAD part is rarely over 100 MB; a reader stuck in a loop is what it stops.
+constexpr double kDefaultLoadTimeout = 60.0;
+
+/// One file for load_meshes_isolated.
+struct MeshRequest {
+  std::string path;
+  bool split_instances = false;
+};
+
+/// What load_meshes returned, or why the file cannot be used (names the file).
+struct LoadedMeshes {
+  std::vector<Mesh> meshes;
+  std::optional<std::string> error;
+};
+
+/// load_meshes on each file in up to `jobs` loader processes: a file whose
+/// reader crashes, or runs longer than `timeout` seconds (0 = no limit), gets
+/// an error and costs nothing else. Forks: call it from a process with one
+/// thread (see mesh_loader_processes.cpp).
+std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
+                                               double timeout = kDefaultLoadTimeout);
 
 /// The vertices of load_meshes, without triangles.
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances);

@@ -45,12 +45,14 @@ std::string load_error(const PartSpec& spec, const std::exception& e) {
                                                   : e.what());
 }
 
-// A mesh file as its instances share it: read once, each piece reduced to the
-// vertices of its hull. An affine map sends extreme points among the images of
+// A mesh file as its instances share it: read once (in a loader process,
+// before the hulls start), each piece reduced to the vertices of its hull by
+// the first instance. An affine map sends extreme points among the images of
 // extreme points, so an instance hulls the placed reduced set and gets the
 // hull of the placed file.
 struct MeshFile {
   std::once_flag loaded;
+  LoadedMeshes read;            ///< as the loader returned it; freed once reduced
   std::vector<Points> reduced;  ///< per piece, file coordinates
   std::vector<long> counts;     ///< vertices per piece as read
   std::optional<std::string> error;
@@ -58,14 +60,16 @@ struct MeshFile {
 
 void load(const PartSpec& spec, MeshFile& f) {
   try {
-    for (Points& p : load_mesh_vertices(*spec.mesh, spec.pieces == Pieces::kMeshes)) {
-      f.counts.push_back(p.cols());
-      f.reduced.push_back(convex_hull(p).vertices);
+    if (f.read.error) throw MeshError(*f.read.error);
+    for (const Mesh& m : f.read.meshes) {
+      f.counts.push_back(m.vertices.cols());
+      f.reduced.push_back(convex_hull(m.vertices).vertices);
     }
   } catch (const std::exception& e) {
     f.reduced.clear();
     f.error = load_error(spec, e);
   }
+  f.read = {};
 }
 
 /// One part from its spec; `file` is its mesh file, shared with other instances.
@@ -74,7 +78,7 @@ Part build_part(const PartSpec& spec, MeshFile* file) {
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
   if (file) {
-    std::call_once(file->loaded, [&] { load(spec, *file); });  // the first instance reads it
+    std::call_once(file->loaded, [&] { load(spec, *file); });  // the first instance reduces it
     if (file->error) {
       part.error = file->error;
       return part;
@@ -105,7 +109,7 @@ Part build_part(const PartSpec& spec, MeshFile* file) {
 }  // namespace
 
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
-                              const std::function<void(size_t)>& on_built) {
+                              const std::function<void(size_t)>& on_built, double load_timeout) {
   // Distinct geometry first: the same mesh file under the same units,
   // transform and pieces is hulled once, and read once under any transform.
   // Inline parts are distinct.
@@ -138,6 +142,16 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   // instance of a mesh file reads it; others of the same file wait for it.
   std::vector<Part> built(unique.size());
   std::vector<MeshFile> mesh_files(files.size());
+  // Every mesh file is read first, in loader processes: forked here, while
+  // this process has one thread (see mesh_loader_processes.cpp).
+  std::vector<MeshRequest> requests(files.size());
+  for (size_t u = 0; u < unique.size(); ++u)
+    if (file_of[u])
+      requests[*file_of[u]] = {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes};
+  if (!requests.empty()) {
+    std::vector<LoadedMeshes> read = load_meshes_isolated(requests, threads, load_timeout);
+    for (size_t f = 0; f < read.size(); ++f) mesh_files[f].read = std::move(read[f]);
+  }
   parallel_for(unique.size(), threads, [&](size_t u) {
     built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr);
     if (on_built) on_built(users[u]);

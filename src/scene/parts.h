@@ -9,6 +9,7 @@
 #include "geometry/aabb.h"
 #include "geometry/hull.h"
 #include "geometry/motion.h"
+#include "scene/mesh_loader.h"
 #include "scene/scene.h"
 
 namespace pd {
@@ -32,8 +33,12 @@ struct Part {
 /// same units, transform and pieces is hulled once. `threads` > 1 hulls distinct parts in
 /// parallel (the result does not depend on it); every thread has ended on return.
 /// `on_built(n)`, when given, is called (from the building thread) as the geometry
-/// of n scene parts is ready, for progress.
+/// of n scene parts is ready, for progress. Mesh files are read first, in up to
+/// `threads` loader processes, each file within `load_timeout` seconds (0 = no
+/// limit): a reader that hangs or crashes costs only its file's parts. Forks:
+/// call it from a process with one thread.
 std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
-                              const std::function<void(size_t)>& on_built = {});
+                              const std::function<void(size_t)>& on_built = {},
+                              double load_timeout = kDefaultLoadTimeout);
 
 }  // namespace pd

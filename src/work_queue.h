@@ -1,8 +1,8 @@
 // A process work queue: tasks run in forked worker processes fed from one queue.
 //
 // Processes, not threads: Debian's Ipopt 3.11 with MUMPS is not thread-safe, and
-// a crash in one solve must cost only that task. Workers are forked after the
-// parent has built everything the tasks need, so a task is sent as an index.
+// a crash or a hang in one solve or one mesh reader must cost only that task. Workers are forked
+// after the parent has built everything the tasks need, so a task is sent as an index.
 #pragma once
 
 #include <functional>

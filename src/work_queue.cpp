@@ -1,4 +1,4 @@
-#include "batch/work_queue.h"
+#include "work_queue.h"
 
 #include <poll.h>
 #include <signal.h>

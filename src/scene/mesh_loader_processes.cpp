@@ -1,0 +1,169 @@
+// Mesh files read in loader processes, under a time limit.
+//
+// Why processes: assimp can loop forever (5.2.5 spins at 100 % CPU on a PLY
+// cut inside its header) or crash on a damaged file, and a thread cannot be
+// stopped or survive a crash; a process can be killed and its death observed.
+//
+// Why the work queue, forked before any thread: build_parts hulls on a thread
+// pool, and a fork from a multithreaded process copies every lock another
+// thread holds at that instant (libstdc++'s locale mutex taken by any stream,
+// assimp's logger, the pool's own queue) into a child where no thread will
+// ever release it; glibc makes malloc safe across fork, nothing makes those
+// safe. So every file is read here, before the pool starts, by the process
+// work queue (src/work_queue.h): it forks its workers from this single-thread
+// process, replaces one that crashed or timed out the same way, and gives
+// each task its own time limit. Alternatives weighed: posix_spawn of our own
+// binary is as safe but needs the executable's path from every program that
+// links the library (tests, pdbench) and pays exec and dynamic linking per
+// loader; a fork server (a zygote forked at start) needs descriptor passing
+// for the same result. The cost here: the meshes cross a pipe once, and the
+// reads end before the hulls start (measured in docs/performance.md).
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#include "scene/mesh_loader.h"
+#include "work_queue.h"
+
+namespace pd {
+
+namespace {
+
+// A payload: 'E' and the reason, or 'M', the mesh count, then per mesh its
+// vertex and triangle counts and raw arrays (this machine's byte order: the
+// reader is a fork of the writer).
+template <class T>
+void put(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+std::string encode(const std::vector<Mesh>& meshes) {
+  size_t bytes = 1 + 8;
+  for (const Mesh& m : meshes)
+    bytes += 16 + m.vertices.size() * sizeof(double) + m.triangles.size() * sizeof(int);
+  std::string out;
+  out.reserve(bytes);
+  out += 'M';
+  put(out, std::uint64_t(meshes.size()));
+  for (const Mesh& m : meshes) {
+    put(out, std::int64_t(m.vertices.cols()));
+    put(out, std::int64_t(m.triangles.cols()));
+    out.append(reinterpret_cast<const char*>(m.vertices.data()),
+               m.vertices.size() * sizeof(double));
+    out.append(reinterpret_cast<const char*>(m.triangles.data()), m.triangles.size() * sizeof(int));
+  }
+  return out;
+}
+
+struct Reader {
+  const std::string& s;
+  size_t at = 1;
+  void take(void* to, size_t n) {
+    if (s.size() - at < n) throw std::runtime_error("short answer from the loader process");
+    std::memcpy(to, s.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  T get() {
+    T v;
+    take(&v, sizeof v);
+    return v;
+  }
+};
+
+LoadedMeshes decode(const std::string& payload) {
+  LoadedMeshes out;
+  if (payload.empty()) throw std::runtime_error("empty answer from the loader process");
+  if (payload[0] == 'E') {
+    out.error = payload.substr(1);
+    return out;
+  }
+  Reader r{payload};
+  const auto n = r.get<std::uint64_t>();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    const auto nv = r.get<std::int64_t>(), nt = r.get<std::int64_t>();
+    if (nv < 0 || nt < 0 || std::uint64_t(nv) > payload.size() ||
+        std::uint64_t(nt) > payload.size())
+      throw std::runtime_error("malformed answer from the loader process");
+    Mesh m;
+    m.vertices.resize(3, nv);
+    m.triangles.resize(3, nt);
+    r.take(m.vertices.data(), m.vertices.size() * sizeof(double));
+    r.take(m.triangles.data(), m.triangles.size() * sizeof(int));
+    out.meshes.push_back(std::move(m));
+  }
+  return out;
+}
+
+bool ends_with(const std::string& s, const char* tail) {
+  const size_t n = std::strlen(tail);
+  return n > 0 && s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
+}
+
+/// Runs in a loader process.
+std::string load_one(const MeshRequest& f) {
+  // Fault injection for the isolation tests: a loader that crashes or hangs
+  // on the file whose path ends with the given name.
+  if (const char* crash = std::getenv("PDCHECK_TEST_CRASH_MESH"); crash && ends_with(f.path, crash))
+    std::abort();
+  if (const char* hang = std::getenv("PDCHECK_TEST_HANG_MESH"); hang && ends_with(f.path, hang))
+    for (;;) pause();
+  try {
+    return encode(load_meshes(f.path, f.split_instances));
+  } catch (const MeshError& e) {
+    return std::string("E") + e.what();
+  } catch (const std::bad_alloc&) {
+    return "Emesh file " + f.path + ": out of memory while loading (corrupt file?)";
+  } catch (const std::exception& e) {
+    return "Emesh file " + f.path + ": " + e.what();
+  }
+}
+
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", s);
+  return b;
+}
+
+}  // namespace
+
+std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
+                                               double timeout) {
+  std::vector<LoadedMeshes> out(files.size());
+  // Largest files first: no loader idles at the end on a long tail.
+  std::vector<size_t> order(files.size());
+  std::vector<off_t> size(files.size(), 0);
+  for (size_t k = 0; k < order.size(); ++k) {
+    order[k] = k;
+    struct stat st {};
+    if (::stat(files[k].path.c_str(), &st) == 0) size[k] = st.st_size;
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return size[a] > size[b]; });
+  auto task = [&](size_t k) { return load_one(files[k]); };
+  auto done = [&](size_t k, bool ok, const std::string& payload) {
+    const std::string& path = files[k].path;
+    if (!ok) {
+      const bool late = payload.rfind("timed out", 0) == 0;
+      out[k].error = "cannot load mesh file " + path + ": " +
+                     (late ? "reading it took longer than the load limit of " + seconds(timeout) +
+                                 " s (--load-timeout); the loader was stopped"
+                           : "the loader process failed: " + payload);
+      return;
+    }
+    try {
+      out[k] = decode(payload);
+    } catch (const std::exception& e) {
+      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what()};
+    }
+  };
+  run_work_queue(order, {std::max(1, jobs), timeout}, task, done);
+  return out;
+}
+
+}  // namespace pd

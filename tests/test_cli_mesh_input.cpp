@@ -1,0 +1,145 @@
+// The pdcheck binary on bad mesh input: a loader that hangs or crashes, damaged
+// PLY files, paths that are not files. Each costs only its part.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using nlohmann::json;
+
+namespace {
+
+const std::string kBox = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/box_binary.stl";
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+  double seconds = 0;
+};
+
+CliRun pdcheck(const std::string& args, const std::string& env = "") {
+  const std::string err_file =
+      testing::TempDir() + "pdcheck_mesh_err_" + std::to_string(getpid()) + ".txt";
+  const std::string cmd =
+      env + " " + PDCHECK_BINARY + " " + args + " 2>" + err_file + " </dev/null";
+  CliRun r;
+  const auto t0 = std::chrono::steady_clock::now();
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_file);
+  std::stringstream ss;
+  ss << e.rdbuf();
+  r.err = ss.str();
+  return r;
+}
+
+/// A directory with a scene of three parts: "a" and "b" (the box, overlapping)
+/// and "c" from `c_name`, placed far away; `c_bytes` empty = a copy of the box.
+std::string scene_with(const std::string& c_name, const std::string& c_bytes = "") {
+  const std::string d = testing::TempDir() + "pdcheck_mesh_" + std::to_string(getpid()) + "_" +
+                        testing::UnitTest::GetInstance()->current_test_info()->name() + "/";
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  std::filesystem::copy_file(kBox, d + "box.stl");
+  if (c_bytes.empty())
+    std::filesystem::copy_file(kBox, d + c_name);
+  else
+    std::ofstream(d + c_name, std::ios::binary) << c_bytes;
+  std::ofstream(d + "scene.json")
+      << R"({"tolerance": 0.01, "parts": [
+    {"id": "a", "mesh": "box.stl"},
+    {"id": "b", "mesh": "box.stl", "transform": [1,0,0,1.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
+    {"id": "c", "mesh": ")" +
+             c_name + R"(", "transform": [1,0,0,0.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]})";
+  return d + "scene.json";
+}
+
+/// Part c failed with a message holding `says`; a and b were still checked.
+void expect_only_c_lost(const CliRun& r, const std::string& says) {
+  EXPECT_EQ(r.code, 3) << r.err;
+  const json rep = json::parse(r.out);
+  ASSERT_EQ(rep["parts"].size(), 3u);
+  EXPECT_FALSE(rep["parts"][0].contains("error"));
+  EXPECT_FALSE(rep["parts"][1].contains("error"));
+  ASSERT_TRUE(rep["parts"][2].contains("error")) << rep["parts"][2];
+  EXPECT_NE(rep["parts"][2]["error"].get<std::string>().find(says), std::string::npos)
+      << rep["parts"][2]["error"];
+  EXPECT_NE(r.err.find("part \"c\""), std::string::npos) << r.err;
+  ASSERT_EQ(rep["pairs"].size(), 1u);
+  EXPECT_EQ(rep["pairs"][0]["status"], "interference");
+}
+
+}  // namespace
+
+TEST(MeshIsolation, AHangingLoaderIsStoppedAtTheLimit) {
+  const CliRun r = pdcheck(scene_with("hang_me.stl") + " --quiet --load-timeout 1",
+                           "PDCHECK_TEST_HANG_MESH=hang_me.stl");
+  expect_only_c_lost(r, "load limit of 1 s");
+  EXPECT_LT(r.seconds, 30.0);  // bounded, not forever (the limit is 1 s)
+}
+
+TEST(MeshIsolation, ACrashingLoaderCostsOnlyItsPart) {
+  const CliRun r =
+      pdcheck(scene_with("crash_me.stl") + " --quiet -j 2", "PDCHECK_TEST_CRASH_MESH=crash_me.stl");
+  expect_only_c_lost(r, "loader process failed");
+  EXPECT_NE(r.err.find("crash_me.stl"), std::string::npos) << r.err;
+}
+
+TEST(MeshIsolation, PlyCutInItsHeaderIsAPartError) {
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 12\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  // Without end_header, and cut inside the header (an interrupted download):
+  // assimp 5.2.5 loops forever on both.
+  for (const std::string& bytes :
+       {header.substr(0, header.find("end_header")) + std::string(40, '\x01'),
+        header.substr(0, 50)}) {
+    const CliRun r = pdcheck(scene_with("cut.ply", bytes) + " --quiet --load-timeout 20");
+    expect_only_c_lost(r, "end_header");
+    EXPECT_NE(r.err.find("cut.ply"), std::string::npos) << r.err;
+    EXPECT_LT(r.seconds, 20.0);
+  }
+}
+
+TEST(MeshIsolation, LoadTimeoutMustBeANumberOfSeconds) {
+  for (const char* bad : {"-1", "nan", "inf", "1e300"}) {
+    const CliRun r = pdcheck(scene_with("c.stl") + " --quiet --load-timeout " + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--load-timeout"), std::string::npos) << r.err;
+  }
+}
+
+TEST(MeshPathsCli, APathThatIsNotAFileSaysWhatItIsAndItsPairsAreUnchecked) {
+  const std::string scene = scene_with("c.stl");
+  const std::string c = std::filesystem::path(scene).parent_path() / "c.stl";
+  const std::pair<std::function<void()>, const char*> cases[] = {
+      {[&] { std::filesystem::create_directory(c); }, "is a directory"},
+      {[&] { ASSERT_EQ(::mkfifo(c.c_str(), 0600), 0); }, "is a FIFO"},
+      {[&] { std::filesystem::create_symlink(c, c); }, "symbolic link loop"},
+  };
+  for (const auto& [make, says] : cases) {
+    std::filesystem::remove_all(c);
+    make();
+    const CliRun r = pdcheck(scene + " --quiet");
+    expect_only_c_lost(r, says);
+    const json s = json::parse(r.out)["summary"];
+    EXPECT_EQ(s["pairs"], 3);
+    EXPECT_EQ(s["unchecked"], 2) << s;  // a:c and b:c, not culled by the broad phase
+    EXPECT_EQ(s["culled"], 0) << s;
+    EXPECT_EQ(s["exit_code"], 3);
+  }
+}
