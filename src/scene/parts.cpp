@@ -139,7 +139,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
 
   // Hulls are independent: qhull_r keeps its state per run, each assimp
   // Importer its own, and build_part catches whatever it throws. The first
-  // instance of a mesh file reads it; others of the same file wait for it.
+  // instance of a mesh file reduces it; others of the same file wait for it.
   std::vector<Part> built(unique.size());
   std::vector<MeshFile> mesh_files(files.size());
   // Every mesh file is read first, in loader processes: forked here, while
