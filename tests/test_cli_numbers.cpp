@@ -139,3 +139,43 @@ TEST(CliNumbers, APartBeyondTheDoubleRangeIsAnErrorNotAPoint) {
   EXPECT_NE(r.err.find("part \"vast\""), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("too large"), std::string::npos) << r.err;
 }
+
+// Reading the scene threw out of main (SIGABRT): a number beyond the double
+// range, from a file or stdin, and a scene path that is a directory.
+TEST(CliNumbers, UnreadableSceneTextIsExit2WithThePlace) {
+  const std::string text = "{\"tolerance\": 1,\n \"parts\": [" + std::string(R"({"id": "a",
+    "vertices": [[0,0,0],[1,0,1e999]]}]})");
+  const std::string file = write_temp("num_overflow.json", text);
+  for (const auto& [args, input] : {std::pair<std::string, std::string>{file, ""}, {"-", text}}) {
+    const CliRun r = pdcheck(args + " -j 2", input);
+    EXPECT_EQ(r.signal, 0) << r.err;
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("line 3, column 35: parts[0].vertices[1][2]: number 1e999"),
+              std::string::npos)
+        << r.err;
+  }
+  const CliRun dir = pdcheck(testing::TempDir());
+  EXPECT_EQ(dir.signal, 0) << dir.err;
+  EXPECT_EQ(dir.code, 2) << dir.err;
+  EXPECT_NE(dir.err.find("is a directory"), std::string::npos) << dir.err;
+}
+
+// "parts" and "par\u0074s" in one scene: --jobs 1 and --jobs 2 read different
+// parts (the threaded splitter matched the raw key, the library the last
+// decoded one). Now both refuse the duplicate key, with its path.
+TEST(CliNumbers, DuplicateKeysAreRefusedWhateverTheJobs) {
+  const std::string tet = R"([[0,0,0],[1,0,0],[0,1,0],[0,0,1]])";
+  const std::string scene = write_temp(
+      "num_dup.json", R"({"tolerance": 1, "parts": [{"id": "a", "vertices": )" + tet +
+                          R"(}, {"id": "b", "vertices": )" + tet +
+                          R"(}], "par\u0074s": [{"id": "c", "vertices": )" + tet +
+                          R"(}, {"id": "d", "vertices": [[5,0,0],[6,0,0],[5,1,0],[5,0,1]]}]})");
+  std::string first;
+  for (const char* jobs : {"1", "2"}) {
+    const CliRun r = pdcheck(scene + " --quiet --jobs " + jobs);
+    EXPECT_EQ(r.code, 2) << jobs << ": " << r.err << r.out;
+    EXPECT_NE(r.err.find("parts: duplicate key \"parts\""), std::string::npos) << r.err;
+    if (first.empty()) first = r.err;
+    EXPECT_EQ(r.err, first);
+  }
+}

@@ -101,9 +101,10 @@ std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view
     if (s.peek() != '"') return std::nullopt;
     const std::size_t k0 = s.pos;
     if (!s.skip_string()) return std::nullopt;
-    // The raw key between the quotes: an escaped spelling of `key` is not
-    // recognized, and the whole-text parse then handles the document.
+    // The raw key between the quotes. A key with an escape may spell `key`
+    // ("par\u0074s"): the scan cannot tell, so the whole-text parse decides.
     const std::string_view name = text.substr(k0 + 1, s.pos - k0 - 2);
+    if (name.find('\\') != std::string_view::npos) return std::nullopt;
     if (!s.expect(':')) return std::nullopt;
     s.skip_space();
     if (name == key) {

@@ -21,8 +21,9 @@ struct ArraySpan {
 /// The array stored under `key` in the top-level object of `text`. A structural
 /// scan only (strings, escapes and bracket depth): it does not validate the
 /// elements, whose own parse does. std::nullopt when the document is not an
-/// object holding exactly one such key with an array value, or its structure
-/// is broken; the caller then parses the whole text, which reports the error.
+/// object holding exactly one such key with an array value, a top-level key
+/// has an escape, or its structure is broken; the caller then parses the whole
+/// text, which reports the error.
 std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view key);
 
 }  // namespace pd

@@ -2,11 +2,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "parallel_for.h"
 #include "scene/json_split.h"
+#include "scene/json_strict.h"
 #include "scene/scene.h"
 #include "scene/units.h"
 
@@ -270,11 +272,12 @@ namespace {
 
 json parse_json(const std::string& text, const std::string& path) {
   try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
+    return parse_json_strict(text);
+  } catch (const JsonTextError& e) {
     std::string msg = e.what();
     const auto pos = msg.find("error while parsing");
-    throw SceneError(path + ": invalid JSON at " + line_column(text, e.byte) + ": " +
+    throw SceneError(path + ": " + (e.byte ? "invalid JSON at " + line_column(text, e.byte) : "") +
+                     (e.byte && !e.path.empty() ? ": " : "") + e.path + ": " +
                      (pos == std::string::npos ? msg : msg.substr(pos)));
   }
 }
@@ -335,12 +338,13 @@ std::optional<SceneSpec> parse_in_slices(const std::string& text, const Ctx& c,
   const auto span = top_level_array(text, "parts");
   if (!span || span->elements.size() < 2) return std::nullopt;
   try {
-    const json doc = json::parse(text.substr(0, span->begin) + "[]" + text.substr(span->end));
+    const json doc = parse_json_strict(text.substr(0, span->begin) + "[]" + text.substr(span->end));
     SceneSpec s = scene_fields(c, doc, units);
     s.parts.resize(span->elements.size());
     parallel_for(s.parts.size(), threads, [&](size_t k) {
       const auto [b, e] = span->elements[k];
-      s.parts[k] = scene_part(c, json::parse(text.data() + b, text.data() + e), k, base_dir, s);
+      s.parts[k] =
+          scene_part(c, parse_json_strict(text.data() + b, text.data() + e), k, base_dir, s);
     });
     return s;
   } catch (const std::exception&) {
@@ -367,14 +371,39 @@ SceneSpec parse_scene_json(const std::string& text, const std::string& path,
   return std::move(*s);
 }
 
+namespace {
+
+/// The whole file: one read of its size when it is a regular file (scenes reach
+/// 100 MB), a streamed read otherwise (a FIFO such as `<(generate-scene)`).
+std::string read_scene_text(const std::string& path) {
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(st))
+    throw SceneError(path + ": is a directory, not a scene file");
+  std::string text;
+  if (std::filesystem::is_regular_file(st)) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) throw SceneError(path + ": cannot open the scene file");
+    const std::streamoff size = in.tellg();  // -1 when the file cannot be sized
+    if (size < 0) throw SceneError(path + ": cannot read the scene file");
+    text.resize(static_cast<size_t>(size));
+    in.seekg(0);
+    if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
+      throw SceneError(path + ": cannot read the scene file");
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path + ": cannot open the scene file");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) throw SceneError(path + ": cannot read the scene file");
+  }
+  return text;
+}
+
+}  // namespace
+
 SceneSpec load_scene_file(const std::string& path, const std::optional<std::string>& units,
                           int threads) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::string text(static_cast<size_t>(in.tellg()), '\0');  // one read: scenes reach 100 MB
-  in.seekg(0);
-  if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
-    throw SceneError(path + ": cannot read the scene file");
+  const std::string text = read_scene_text(path);
   const std::string base = std::filesystem::path(path).parent_path().string();
   return parse_scene_json(text, path, base, units, threads);
 }
