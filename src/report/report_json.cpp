@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "report/fingerprint.h"
+
 namespace pd {
 
 using json = nlohmann::ordered_json;
@@ -43,7 +45,10 @@ Summary summarize(const RunResult& r) {
 }
 
 json pair_json(const PairResult& r, const std::vector<Part>& parts) {
-  json j = {{"a", parts[r.a].id}, {"b", parts[r.b].id}, {"status", status_name(r.status)}};
+  json j = {{"a", parts[r.a].id},
+            {"b", parts[r.b].id},
+            {"fingerprint", pair_fingerprint(parts[r.a].id, parts[r.b].id)},
+            {"status", status_name(r.status)}};
   if (r.status == Status::kError) {
     j["error"] = r.error;
   } else {

@@ -1,0 +1,78 @@
+// Running the pdcheck binary and the external validators from tests.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace pd::test {
+
+inline const std::string kSource = PDCHECK_SOURCE_DIR;
+
+struct CliResult {
+  int code = -1;
+  std::string out, err;
+};
+
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+/// A shell command: exit code, stdout, and stderr (through a per-process file:
+/// ctest runs tests in parallel processes).
+inline CliResult shell(const std::string& cmd) {
+  const std::string err_file = testing::TempDir() + "cli_err_" + std::to_string(getpid()) + ".txt";
+  CliResult r;
+  FILE* p = popen((cmd + " 2>" + err_file + " </dev/null").c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = read_text(err_file);
+  return r;
+}
+
+inline CliResult pdcheck(const std::string& args) {
+  return shell(std::string(PDCHECK_BINARY) + " " + args);
+}
+
+inline bool have_command(const std::string& name) {
+  return shell("command -v " + name + " >/dev/null").code == 0;
+}
+
+/// JSON Schema validation by python3-jsonschema (tests/validate_json.py): ""
+/// when valid, else the errors. Sets `skip` when the validator is missing.
+inline std::string validate_json(const std::string& schema, const std::string& doc, bool& skip) {
+  const CliResult r = shell("python3 " + kSource + "/tests/validate_json.py " + schema + " " + doc);
+  skip = r.code == 77 || r.code == 127;
+  return r.code == 0 ? "" : r.err + " (exit " + std::to_string(r.code) + ")";
+}
+
+/// XSD validation by xmllint: "" when valid, else its messages.
+inline std::string validate_xml(const std::string& xsd, const std::string& doc) {
+  const CliResult r = shell("xmllint --noout --schema " + xsd + " " + doc);
+  return r.code == 0 ? "" : r.err + " (exit " + std::to_string(r.code) + ")";
+}
+
+}  // namespace pd::test
+
+/// Skips the current test, saying which tool is missing and what installs it.
+#define PD_REQUIRE_TOOL(ok, what)                                                          \
+  do {                                                                                     \
+    if (!(ok)) GTEST_SKIP() << what << " is not installed (scripts/setup.sh installs it)"; \
+  } while (0)
