@@ -56,4 +56,10 @@ inline constexpr double kActiveTight = 1e-10;
 /// this residual (smallest singular value of the active edge matrix).
 inline constexpr double kSnapResidual = 1e-9;
 
+/// --baseline: a finding of unchanged status is `updated` when its depth moved
+/// by more than both kBaselineDepthAbs · tolerance and kBaselineDepthRel · the
+/// old depth (docs/ci.md): solver and tessellation noise stays `unchanged`.
+inline constexpr double kBaselineDepthAbs = 0.1;
+inline constexpr double kBaselineDepthRel = 0.05;
+
 }  // namespace pd::tol

@@ -1,0 +1,39 @@
+#include "report/finding_text.h"
+
+#include <cstdio>
+
+namespace pd {
+
+std::string short_number(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", x + 0.0);  // no -0
+  return buf;
+}
+
+std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
+                         const PairReview& review, const std::string& units, double tolerance) {
+  const std::string& a = parts[r.a].id;
+  const std::string& b = parts[r.b].id;
+  std::string t = a + " / " + b + ": " + status_name(r.status);
+  if (r.status == Status::kError) return t + ": " + r.error;
+  const std::string dir = "(" + short_number(r.direction.x()) + ", " +
+                          short_number(r.direction.y()) + ", " + short_number(r.direction.z()) +
+                          ")";
+  if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance) {
+    t += ": distance " + short_number(*r.distance) + " " + units + " < required clearance " +
+         short_number(*r.clearance_min) + " " + units + "; separating normal " + dir;
+  } else if (r.status == Status::kSeparated) {
+    t += "; separating normal " + dir;
+  } else {
+    t += ": depth " + short_number(r.depth) + " " + units +
+         (r.status == Status::kInterference ? " > " : " <= ") + "tolerance " +
+         short_number(tolerance) + " " + units + "; moving " + b + " by the depth along " + dir +
+         " separates the pair";
+  }
+  if (review.baseline_state)
+    t += "; baseline: " + std::string(baseline_state_name(*review.baseline_state));
+  if (review.suppressed) t += "; suppressed: " + review.suppressed->reason;
+  return t;
+}
+
+}  // namespace pd

@@ -1,0 +1,14 @@
+// Bad input to the report stage (a baseline or suppressions file): exit code 2.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace pd {
+
+/// The message names the file and the JSON path: "s.json: $.suppressions[2].reason: …".
+struct ReportInputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace pd

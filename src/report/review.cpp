@@ -1,0 +1,121 @@
+#include "report/review.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "report/fingerprint.h"
+
+namespace pd {
+
+PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
+                       const ReviewOptions& options, FailOn bar) {
+  PairReview pr;
+  pr.fingerprint = pair_fingerprint(parts[r.a].id, parts[r.b].id);
+  if (!is_finding(r.status)) return pr;
+  if (options.baseline) {
+    const auto it = options.baseline->findings.find(pr.fingerprint);
+    pr.baseline_state =
+        compare_finding(it == options.baseline->findings.end() ? nullptr : &it->second, r.status,
+                        r.depth, options.tolerance);
+  }
+  if (options.suppressions) {
+    const auto it = options.suppressions->by_fingerprint.find(pr.fingerprint);
+    if (it != options.suppressions->by_fingerprint.end()) {
+      const Suppression& s = options.suppressions->entries[it->second];
+      const Hold h = check_suppression(s, r.depth, options.today);
+      if (h == Hold::kHolds)
+        pr.suppressed = &s;
+      else
+        pr.not_holding = h;
+    }
+  }
+  bool fails = reaches_bar(bar, r.status) && !pr.suppressed;
+  if (bar == FailOn::kNew)
+    fails = fails && pr.baseline_state &&
+            (*pr.baseline_state == BaselineState::kNew ||
+             *pr.baseline_state == BaselineState::kUpdated);
+  pr.fails = fails;
+  return pr;
+}
+
+FailOn effective_fail_on(const RunResult& run, const ReviewOptions& options) {
+  if (options.fail_on) return *options.fail_on;
+  return default_fail_on(std::count(run.simulated.begin(), run.simulated.end(), "clearance") > 0);
+}
+
+namespace {
+
+std::string depth_text(double d) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", d);
+  return buf;
+}
+
+}  // namespace
+
+Review review_run(const RunResult& run, const ReviewOptions& options, bool incomplete) {
+  Review rv;
+  rv.fail_on = effective_fail_on(run, options);
+  rv.baseline_used = options.baseline != nullptr;
+  rv.suppressions_used = options.suppressions != nullptr;
+  std::set<std::string> failed;  // fingerprints of pairs that could not be solved
+  for (const PairResult& r : run.pairs) {
+    PairReview pr = review_pair(r, run.parts, options, rv.fail_on);
+    if (pr.baseline_state) ++rv.state_count[static_cast<int>(*pr.baseline_state)];
+    rv.suppressed += pr.suppressed ? 1 : 0;
+    rv.failing += pr.fails ? 1 : 0;
+    if (r.status == Status::kError) failed.insert(pr.fingerprint);
+    if (pr.not_holding) {
+      const Suppression& s =
+          options.suppressions->entries[options.suppressions->by_fingerprint.at(pr.fingerprint)];
+      SuppressionIssue issue{&s, "", "", false};
+      if (*pr.not_holding == Hold::kExpired) {
+        issue.kind = "expired";
+        issue.detail = "expired on " + s.expires + "; the finding is reported as if unsuppressed";
+        issue.fails = !options.allow_stale;
+      } else {
+        issue.kind = "exceeded";
+        issue.detail = "depth " + depth_text(r.depth) + " exceeds max_depth " +
+                       depth_text(*s.max_depth) + "; the finding is reported as if unsuppressed";
+      }
+      rv.suppression_issues.push_back(issue);
+    }
+    rv.pairs.push_back(std::move(pr));
+  }
+  if (options.baseline) {
+    rv.gone = gone_findings(*options.baseline, run, options.listed);
+    for (const GoneFinding& g : rv.gone) ++rv.state_count[static_cast<int>(g.state)];
+  }
+  if (options.suppressions) {
+    std::set<std::string> matched;
+    for (const PairReview& pr : rv.pairs)
+      if (pr.suppressed || pr.not_holding) matched.insert(pr.fingerprint);
+    std::set<std::string> loaded;
+    for (const Part& p : run.parts)
+      if (!p.error) loaded.insert(p.id);
+    for (const Suppression& s : options.suppressions->entries) {
+      if (matched.count(s.fingerprint)) continue;
+      // An entry whose pair could not be checked is not stale: nobody knows.
+      const bool unchecked = failed.count(s.fingerprint) || !loaded.count(s.a) ||
+                             !loaded.count(s.b) ||
+                             (options.listed && !options.listed->count(s.fingerprint));
+      if (unchecked) {
+        rv.suppression_issues.push_back(
+            {&s, "unchecked", "the pair was not checked in this run: the entry is kept", false});
+      } else {
+        const bool expired = !s.expires.empty() && options.today > s.expires;
+        rv.suppression_issues.push_back(
+            {&s, expired ? "expired" : "unmatched",
+             std::string(expired ? "expired on " + s.expires + " and m" : "m") +
+                 "atched no finding: the pair is clean now; remove the entry",
+             !options.allow_stale});
+      }
+    }
+  }
+  const bool stale = std::any_of(rv.suppression_issues.begin(), rv.suppression_issues.end(),
+                                 [](const SuppressionIssue& i) { return i.fails; });
+  rv.exit_code = incomplete ? 3 : (rv.failing > 0 || stale) ? 1 : 0;
+  return rv;
+}
+
+}  // namespace pd

@@ -1,0 +1,66 @@
+// The CI view of a run: each finding's baseline state and suppression, the
+// --fail-on bar, and the exit code they imply. docs/ci.md.
+#pragma once
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "batch/run.h"
+#include "report/baseline.h"
+#include "report/fail_on.h"
+#include "report/suppressions.h"
+
+namespace pd {
+
+struct ReviewOptions {
+  std::optional<FailOn> fail_on;  ///< nullopt: default_fail_on
+  const Baseline* baseline = nullptr;
+  const Suppressions* suppressions = nullptr;
+  bool allow_stale = false;  ///< stale or expired suppressions do not fail the run
+  std::string today;         ///< YYYY-MM-DD, for `expires`
+  double tolerance = 0.0;    ///< scene units: the `updated` rule
+  /// The fingerprints of the scene's pair list, when it has one: other pairs were not checked.
+  std::optional<std::set<std::string>> listed;
+};
+
+/// One pair's review (for findings; clean and failed pairs have neither state nor suppression).
+struct PairReview {
+  std::string fingerprint;
+  std::optional<BaselineState> baseline_state;  ///< findings, with --baseline
+  const Suppression* suppressed = nullptr;      ///< the entry that holds for it
+  std::optional<Hold> not_holding;              ///< a matching entry that expired or was exceeded
+  bool fails = false;                           ///< at or above the bar, not suppressed
+};
+
+/// A suppressions entry that needs attention.
+struct SuppressionIssue {
+  const Suppression* entry = nullptr;
+  std::string kind;  ///< "unmatched", "expired", "exceeded", "unchecked"
+  std::string detail;
+  bool fails = false;  ///< unmatched or expired, without --allow-stale-suppressions
+};
+
+struct Review {
+  FailOn fail_on = FailOn::kInterference;
+  bool baseline_used = false, suppressions_used = false;
+  std::vector<PairReview> pairs;  ///< parallel to RunResult::pairs
+  std::vector<GoneFinding> gone;  ///< baseline findings that are no findings now
+  std::vector<SuppressionIssue> suppression_issues;
+  long state_count[5] = {0, 0, 0, 0, 0};  ///< by BaselineState, gone ones included
+  long suppressed = 0, failing = 0;
+  int exit_code = 0;  ///< 3 incomplete, else 1 if a finding fails or a suppression is stale, else 0
+};
+
+/// One pair alone (also for pairs streamed as they finish).
+PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
+                       const ReviewOptions& options, FailOn bar);
+
+/// The bar in force: --fail-on, or the default for this run.
+FailOn effective_fail_on(const RunResult& run, const ReviewOptions& options);
+
+/// The whole run. `incomplete`: some part or pair was not checked (exit 3 wins).
+Review review_run(const RunResult& run, const ReviewOptions& options, bool incomplete);
+
+}  // namespace pd

@@ -1,0 +1,130 @@
+// --junit FILE: JUnit XML for CI test views (GitLab, Jenkins). One suite per
+// scene, one test case per candidate pair named by its fingerprint; a failure
+// for each finding at or above --fail-on, skipped for a suppressed finding, an
+// error for a pair or part that could not be checked. docs/ci.md.
+#include <algorithm>
+#include <cstdio>
+
+#include "report/finding_text.h"
+#include "report/writer.h"
+
+namespace pd {
+
+namespace {
+
+/// XML 1.0 text and attribute escaping; control characters XML cannot carry become '?'.
+std::string xml(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out +=
+            (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') ? '?' : c;
+    }
+  }
+  return out;
+}
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", std::max(0.0, s));
+  return buf;
+}
+
+/// The stable, unique test name: the ids in bytewise order and the fingerprint.
+std::string case_name(const std::string& a, const std::string& b, const std::string& fp) {
+  return std::min(a, b) + " ~ " + std::max(a, b) + " [" + fp + "]";
+}
+
+}  // namespace
+
+std::string render_junit(const ReportInput& in) {
+  const RunResult& run = in.run;
+  const Review& rv = in.review;
+  const std::string& units = in.context.units;
+  const double tol = in.context.tolerance;
+  const std::string suite = in.context.scene_path == "-" ? "stdin" : in.context.scene_path;
+  const std::string classname = "pdcheck." + suite;
+  long failures = 0, errors = 0, skipped = 0, tests = 0;
+  std::string cases;
+  for (size_t k = 0; k < run.pairs.size(); ++k) {
+    const PairResult& r = run.pairs[k];
+    const PairReview& pr = rv.pairs[k];
+    const std::string text = finding_text(r, run.parts, pr, units, tol);
+    cases += "    <testcase classname=\"" + xml(classname) + "\" name=\"" +
+             xml(case_name(run.parts[r.a].id, run.parts[r.b].id, pr.fingerprint)) + "\" time=\"" +
+             seconds(r.time_ms / 1000.0) + "\"";
+    ++tests;
+    if (r.status == Status::kError) {
+      ++errors;
+      cases += ">\n      <error type=\"error\" message=\"" + xml(text) + "\">" + xml(text) +
+               "</error>\n    </testcase>\n";
+    } else if (pr.suppressed) {
+      ++skipped;
+      cases += ">\n      <skipped>" +
+               xml("suppressed (" + in.review_options.suppressions->path + " " +
+                   pr.suppressed->where + "): " + text) +
+               "</skipped>\n    </testcase>\n";
+    } else if (pr.fails) {
+      ++failures;
+      cases += ">\n      <failure type=\"" + std::string(status_name(r.status)) + "\" message=\"" +
+               xml(text) + "\">" + xml(text) + "</failure>\n    </testcase>\n";
+    } else {
+      cases += "/>\n";
+    }
+  }
+  for (const Part& p : run.parts) {
+    if (!p.error) continue;
+    ++tests;
+    ++errors;
+    const std::string text = "part " + p.id + " could not be used: " + *p.error;
+    cases += "    <testcase classname=\"" + xml(classname) + "\" name=\"" + xml("part " + p.id) +
+             "\">\n      <error type=\"part_error\" message=\"" + xml(text) + "\">" + xml(text) +
+             "</error>\n    </testcase>\n";
+  }
+  for (const SuppressionIssue& i : rv.suppression_issues) {
+    if (!i.fails) continue;
+    ++tests;
+    ++failures;
+    const std::string text = in.review_options.suppressions->path + " " + i.entry->where + " (" +
+                             i.entry->a + " / " + i.entry->b + "): " + i.kind + ": " + i.detail;
+    cases += "    <testcase classname=\"" + xml(classname) + "\" name=\"" +
+             xml("suppression " + case_name(i.entry->a, i.entry->b, i.entry->fingerprint)) +
+             "\">\n      <failure type=\"stale_suppression\" message=\"" + xml(text) + "\">" +
+             xml(text) + "</failure>\n    </testcase>\n";
+  }
+  const std::string counts = " tests=\"" + std::to_string(tests) + "\" failures=\"" +
+                             std::to_string(failures) + "\" errors=\"" + std::to_string(errors) +
+                             "\"";
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<testsuites name=\"pdcheck\"" + counts + " time=\"" + seconds(run.seconds) + "\">\n";
+  out += "  <testsuite name=\"" + xml(suite) + "\"" + counts + " skipped=\"" +
+         std::to_string(skipped) + "\" time=\"" + seconds(run.seconds) + "\">\n";
+  out += "    <properties>\n";
+  const std::pair<std::string, std::string> props[] = {
+      {"tolerance", short_number(tol) + " " + units},
+      {"fail_on", fail_on_name(rv.fail_on)},
+      {"exit_code", std::to_string(rv.exit_code)}};
+  for (const auto& [name, value] : props)
+    out += "      <property name=\"" + xml(name) + "\" value=\"" + xml(value) + "\"/>\n";
+  out += "    </properties>\n" + cases + "  </testsuite>\n</testsuites>\n";
+  return out;
+}
+
+}  // namespace pd
