@@ -6,7 +6,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
           nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev libgtest-dev
-          libcgal-dev libgmp-dev libmpfr-dev python3)
+          libcgal-dev libgmp-dev libmpfr-dev python3 python3-jsonschema libxml2-utils)
 # Callers may need more (accuracy_vs_time.sh: python3-matplotlib for its plot).
 read -r -a EXTRA <<<"${EXTRA_PACKAGES:-}"
 PACKAGES+=("${EXTRA[@]}")
@@ -20,6 +20,16 @@ if [ ${#missing[@]} -gt 0 ]; then
   [ "$(id -u)" -eq 0 ] || SUDO="sudo"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+# The SARIF multitool (npm; a self-contained .NET binary) reads the tests' SARIF back. Optional: when
+# npm or the registry is missing, that one test is skipped and says so.
+MT="$ROOT/build/tools/sarif-multitool"
+if [ ! -x "$MT/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool" ] && command -v npm >/dev/null; then
+  echo "pdcheck setup: installing the SARIF multitool (npm) into build/tools" >&2
+  npm install --prefix "$MT" --no-audit --no-fund --loglevel=error \
+      @microsoft/sarif-multitool-linux@5.7.0 >&2 ||
+    echo "pdcheck setup: the SARIF multitool could not be installed; its test will be skipped" >&2
 fi
 
 JOBS="$(nproc 2>/dev/null || echo 2)"

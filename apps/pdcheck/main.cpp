@@ -11,7 +11,11 @@
 
 #include "batch/run.h"
 #include "report/atomic_write.h"
+#include "report/fingerprint.h"
 #include "report/report_json.h"
+#include "report/review_json.h"
+#include "report/review_text.h"
+#include "report/writer.h"
 #include "scene/scene.h"
 #include "scene/units.h"
 
@@ -27,6 +31,10 @@ const char* kExamples = R"(Examples:
   pdcheck scene.json --quiet -o report.json || echo "exit $?"
                                           in CI: 0 clean, 1 genuine interference,
                                           2 bad input or usage, 3 some pair unchecked
+  pdcheck scene.json -o report.json --baseline last.json --suppressions accepted.json \
+      --fail-on new --junit junit.xml --sarif pdcheck.sarif
+                                          nightly CI: fail only on new or changed findings
+                                          (docs/ci.md)
 )";
 
 }  // namespace
@@ -42,6 +50,8 @@ int main(int argc, char** argv) {
   int jobs = 0;
   std::uint64_t seed = 0;
   bool quiet = false;
+  std::string baseline_path, suppressions_path, write_suppressions, fail_on_arg, junit, sarif;
+  bool allow_stale = false;
   app.add_option("scene", scene_arg,
                  "scene JSON file, or - for standard input (a scene JSON or "
                  "a part list: one mesh path per line, or id<TAB>path)")
@@ -56,10 +66,12 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "random seed of the stochastic methods (default 1)");
   app.add_option("-o,--output", output,
                  "write the report to this file (atomically) instead of stdout");
+  std::vector<std::string> format_names;
+  for (const auto& f : pd::report_formats()) format_names.push_back(f.name);
   app.add_option("--format", format,
-                 "report format: json (one document) or jsonl (a line per pair as it finishes, "
-                 "then a summary)")
-      ->check(CLI::IsMember({"json", "jsonl"}));
+                 "report format: json (one document), jsonl (a line per pair as it finishes, "
+                 "then a summary), junit or sarif")
+      ->check(CLI::IsMember(format_names));
   app.add_option(
          "-j,--jobs", jobs,
          "worker processes for the solves, threads for parsing and hulls (default: all cores)")
@@ -73,6 +85,26 @@ int main(int argc, char** argv) {
                  "its parts reported as errors (default: " +
                      std::to_string(int(pd::kDefaultLoadTimeout)) + "; 0: none)");
   app.add_flag("-q,--quiet", quiet, "no progress and no summary line on stderr");
+  std::vector<std::string> bars;
+  std::string bar_help = "which findings make the exit code 1:";
+  for (const auto& f : pd::kFailOnNames) {
+    bars.push_back(f.name);
+    bar_help += std::string(" ") + f.name + " (" + f.meaning + ");";
+  }
+  bar_help += " default: interference, or clearance when the scene checks clearance";
+  app.add_option("--fail-on", fail_on_arg, bar_help)->check(CLI::IsMember(bars));
+  app.add_option("--baseline", baseline_path,
+                 "a previous JSON report: mark each finding new, unchanged or updated and list "
+                 "the baseline's findings that are absent or unknown now");
+  app.add_option("--suppressions", suppressions_path,
+                 "reviewed suppressions (JSON, docs/ci.md): listed findings are reported as "
+                 "suppressed and do not fail the run");
+  app.add_flag("--allow-stale-suppressions", allow_stale,
+               "a suppression that matched nothing or expired does not fail the run");
+  app.add_option("--write-suppressions", write_suppressions,
+                 "write a starting suppressions file for this run's findings (reasons to fill in)");
+  app.add_option("--junit", junit, "also write JUnit XML to this file (atomically)");
+  app.add_option("--sarif", sarif, "also write SARIF 2.1.0 to this file (atomically)");
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
   try {
     app.parse(argc, argv);
@@ -125,6 +157,32 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
 
+  // The CI inputs are read before the run: a malformed file costs no solve.
+  std::optional<pd::Baseline> baseline;
+  std::optional<pd::Suppressions> suppressions;
+  pd::ReviewOptions review_opt;
+  try {
+    if (!baseline_path.empty()) baseline = pd::load_baseline(baseline_path);
+    if (!suppressions_path.empty()) suppressions = pd::load_suppressions(suppressions_path);
+  } catch (const pd::ReportInputError& e) {
+    std::cerr << "pdcheck: error: " << e.what() << "\n";
+    return kExitUsage;
+  }
+  if (!fail_on_arg.empty()) review_opt.fail_on = pd::parse_fail_on(fail_on_arg);
+  if (review_opt.fail_on == pd::FailOn::kNew && !baseline) {
+    std::cerr << "pdcheck: error: --fail-on new needs --baseline (a previous report)\n";
+    return kExitUsage;
+  }
+  review_opt.baseline = baseline ? &*baseline : nullptr;
+  review_opt.suppressions = suppressions ? &*suppressions : nullptr;
+  review_opt.allow_stale = allow_stale;
+  review_opt.today = pd::utc_today();
+  review_opt.tolerance = *scene.tolerance;
+  if (scene.pairs) {
+    review_opt.listed.emplace();
+    for (const auto& [a, b] : *scene.pairs) review_opt.listed->insert(pd::pair_fingerprint(a, b));
+  }
+
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   pd::RunOptions opt;
@@ -136,8 +194,11 @@ int main(int argc, char** argv) {
   opt.quiet = quiet;
   const bool jsonl = format == "jsonl";
   if (jsonl && output.empty()) {
-    opt.on_pair = [](const pd::PairResult& r, const std::vector<pd::Part>& parts) {
-      std::cout << pd::pair_json(r, parts).dump() << "\n" << std::flush;
+    opt.on_pair = [&review_opt](const pd::PairResult& r, const std::vector<pd::Part>& parts) {
+      auto j = pd::pair_json(r, parts);
+      // The bar does not show in a pair line: any will do before the run's end.
+      pd::add_pair_review(j, pd::review_pair(r, parts, review_opt, pd::FailOn::kNone));
+      std::cout << j.dump() << "\n" << std::flush;
     };
   }
   const pd::RunResult result = pd::run_scene(scene, opt);
@@ -145,22 +206,22 @@ int main(int argc, char** argv) {
   pd::ReportContext ctx{scene.path, scene.units.value_or("mm"), *scene.tolerance, solver,
                         load_seconds};
 
-  std::string text;
-  if (jsonl) {
-    if (!output.empty())  // a file gets the same lines, in deterministic order
-      for (const auto& p : result.pairs) text += pd::pair_json(p, result.parts).dump() + "\n";
-    nlohmann::ordered_json tail = {{"summary", pd::summary_json(summary)}};
-    for (const auto& p : result.parts)
-      if (p.error) tail["part_errors"].push_back({{"id", p.id}, {"error", *p.error}});
-    text += tail.dump() + "\n";
-  } else {
-    text = pd::report_json(ctx, result).dump(2) + "\n";
-  }
+  const pd::Review review = pd::review_run(result, review_opt, summary.exit_code() == 3);
+  const pd::ReportInput report{ctx, result, review, review_opt};
+
+  // Streamed lines are out already; a file gets the same lines in report order.
+  const std::string text = jsonl && output.empty() ? pd::jsonl_tail(report) + "\n"
+                                                   : pd::find_report_format(format)->render(report);
   try {
     if (output.empty())
       std::cout << text << std::flush;
     else
       pd::write_file_atomically(output, text);
+    if (!junit.empty()) pd::write_file_atomically(junit, pd::render_junit(report));
+    if (!sarif.empty()) pd::write_file_atomically(sarif, pd::render_sarif(report));
+    if (!write_suppressions.empty())
+      pd::write_file_atomically(write_suppressions,
+                                pd::suppressions_to_write(report, review_opt.today));
   } catch (const std::exception& e) {
     std::cerr << "pdcheck: error: " << e.what() << "\n";
     return kExitUsage;
@@ -171,6 +232,9 @@ int main(int argc, char** argv) {
         std::cerr << "pdcheck: warning: part \"" << p.id << "\": " << w << "\n";
     if (p.error) std::cerr << "pdcheck: error: part \"" << p.id << "\": " << *p.error << "\n";
   }
-  if (!quiet) std::cerr << pd::summary_line(summary, result.seconds) << "\n";
-  return summary.exit_code();
+  if (!quiet) {
+    std::cerr << pd::review_lines(report);
+    std::cerr << pd::summary_line(summary, result.seconds) << "\n";
+  }
+  return review.exit_code;
 }
