@@ -4,6 +4,7 @@
 // external suppressions. docs/ci.md.
 #include <unistd.h>
 
+#include <cctype>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -69,8 +70,9 @@ std::string path_uri(const std::string& path) {
 
 json locations(const std::vector<std::string>& files) {
   json locs = json::array();
-  for (const std::string& f : files) {
-    if (f.empty() || f == "-") continue;
+  for (size_t k = 0; k < files.size(); ++k) {
+    const std::string& f = files[k];
+    if (f.empty() || f == "-" || (k > 0 && f == files[0])) continue;  // one entry per file
     locs.push_back({{"physicalLocation", {{"artifactLocation", {{"uri", path_uri(f)}}}}}});
   }
   return locs;
