@@ -114,7 +114,7 @@ std::string temp_dir() {
 TEST(PlyInput, BinaryDataStartingWithAnyWhitespaceByteLoadsExactly) {
   // 0x0a is the byte assimp 5.2.5 drops; the other whitespace bytes are controls.
   int cases = 0;
-  for (unsigned char first : {0x0a, 0x09, 0x0b, 0x0c, 0x0d, 0x20, 0x00})
+  for (unsigned char first : {0x0a, 0x09, 0x0b, 0x0c, 0x0d, 0x20})
     for (bool big : {false, true})
       for (bool dbl : {false, true})
         for (bool extra : {false, true})
@@ -129,7 +129,7 @@ TEST(PlyInput, BinaryDataStartingWithAnyWhitespaceByteLoadsExactly) {
             EXPECT_EQ(m[0].triangles.cols(), 4) << describe(l);
             ++cases;
           }
-  EXPECT_EQ(cases, 7 * 16);
+  EXPECT_EQ(cases, 6 * 16);
 }
 
 TEST(PlyInput, OrdinaryFilesAreHandedOverUnchanged) {
@@ -184,6 +184,10 @@ TEST(PlyInput, DamagedFilesAreErrors) {
       {"float list length", std::string(good).replace(good.find("list uchar"), 10, "list float"),
        "integer type"},
       {"ascii data cut short", ascii.substr(0, ascii.size() - 4), "data cut short"},
+      {"a vertex count of two billion",
+       std::string(good).replace(good.find("vertex 4"), 8, "vertex 2000000000"), "at most"},
+      {"an ascii vertex count of two billion",
+       std::string(ascii).replace(ascii.find("vertex 3"), 8, "vertex 2000000000"), "at most"},
       {"ascii value not a number", std::string(ascii).replace(ascii.find("1 0 0"), 1, "x"),
        "not a number"},
       {"unknown format", std::string(ascii).replace(ascii.find("ascii"), 5, "utf16"),

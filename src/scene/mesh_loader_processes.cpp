@@ -18,6 +18,7 @@
 // loader; a fork server (a zygote forked at start) needs descriptor passing
 // for the same result. The cost here: the meshes cross a pipe once, and the
 // reads end before the hulls start (measured in docs/performance.md).
+#include <malloc.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -107,6 +108,12 @@ bool ends_with(const std::string& s, const char* tail) {
 
 /// Runs in a loader process.
 std::string load_one(const MeshRequest& f) {
+  // assimp's line readers (OBJ, PLY) allocate and fill buffers of 4 MB per
+  // line; glibc hands such blocks back to the kernel on free, so every read
+  // paid for fresh zeroed pages (about 25 ms a PLY). A loader keeps its heap.
+  static const bool tuned =
+      mallopt(M_MMAP_THRESHOLD, 32 << 20) && mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  (void)tuned;
   // Fault injection for the isolation tests: a loader that crashes or hangs
   // on the file whose path ends with the given name.
   if (const char* crash = std::getenv("PDCHECK_TEST_CRASH_MESH"); crash && ends_with(f.path, crash))

@@ -325,6 +325,18 @@ PlyFile check_ply(std::string_view bytes) {
   }
   if (!format) fail("header has no format line");
 
+  // Counts bounded by the data before anything is sized by them: an instance
+  // takes at least its fixed bytes (binary) or a digit and a separator per
+  // value (ASCII), so a damaged count cannot ask for gigabytes.
+  for (const Element& e : elements) {
+    size_t least = 0;
+    for (const Property& p : e.properties)
+      least += *format == Format::kAscii ? 2 : (p.count.size ? p.count.size : p.type.size);
+    if (least > 0 && e.count > (bytes.size() - data) / least)
+      fail("data cut short: element " + quoted(e.name) + " declares " + std::to_string(e.count) +
+           " instances, the data holds at most " + std::to_string((bytes.size() - data) / least));
+  }
+
   // The vertex element and its coordinates.
   size_t vertex_element = elements.size();
   int xyz[3] = {-1, -1, -1};

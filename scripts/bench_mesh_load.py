@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Times the parts stage (mesh files read, reduced and hulled) of pdcheck binaries.
+
+usage: bench_mesh_load.py OUT_DIR PDCHECK [PDCHECK ...] [--files 400] [--triangles 2000]
+                          [--format stl|ply] [--runs 5] [--jobs 2] [--scene SCENE.json]
+
+Writes OUT_DIR/scene.json: --files distinct binary STL (or PLY) files (UV
+spheres of about --triangles triangles each, jittered so no two are equal) on a
+lattice, touching nobody; or times the given --scene instead. Each binary is
+run --runs times in turn (interleaved, so load on the machine hits all alike)
+with --method exact and --quiet; the median of the report's
+stage_seconds.parts per binary, and the ratio to the first, are printed.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import statistics
+import struct
+import subprocess
+import sys
+
+
+def sphere_stl(path, triangles, rng):
+    rings = max(3, int(math.sqrt(triangles / 2)))
+    segs = max(3, triangles // (2 * rings))
+    pts = []
+    for i in range(rings + 1):
+        th = math.pi * i / rings
+        for j in range(segs):
+            ph = 2 * math.pi * j / segs
+            r = 1 + 0.01 * rng.random()
+            pts.append((r * math.sin(th) * math.cos(ph), r * math.sin(th) * math.sin(ph),
+                        r * math.cos(th)))
+    tris = []
+    for i in range(rings):
+        for j in range(segs):
+            a, b = i * segs + j, i * segs + (j + 1) % segs
+            c, d = a + segs, b + segs
+            tris += [(a, c, b), (b, c, d)]
+    if path.endswith(".ply"):
+        with open(path, "wb") as f:
+            f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+                     "property float y\nproperty float z\nelement face %d\n"
+                     "property list uchar int vertex_indices\nend_header\n"
+                     % (len(pts), len(tris))).encode())
+            for p in pts:
+                f.write(struct.pack("<3f", *p))
+            for t in tris:
+                f.write(struct.pack("<B3i", 3, *t))
+        return
+    with open(path, "wb") as f:
+        f.write(b"\0" * 80 + struct.pack("<I", len(tris)))
+        for t in tris:
+            f.write(struct.pack("<3f", 0, 0, 0))
+            for k in t:
+                f.write(struct.pack("<3f", *pts[k]))
+            f.write(b"\0\0")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("out")
+    ap.add_argument("binaries", nargs="+")
+    ap.add_argument("--files", type=int, default=400)
+    ap.add_argument("--triangles", type=int, default=2000)
+    ap.add_argument("--format", choices=["stl", "ply"], default="stl")
+    ap.add_argument("--runs", type=int, default=5)
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--scene")
+    a = ap.parse_args()
+    scene = a.scene
+    if not scene:
+        os.makedirs(a.out, exist_ok=True)
+        rng = random.Random(1)
+        parts = []
+        side = math.ceil(math.sqrt(a.files))
+        for k in range(a.files):
+            name = "m%04d.%s" % (k, a.format)
+            sphere_stl(os.path.join(a.out, name), a.triangles, rng)
+            parts.append({"id": "p%d" % k, "mesh": name,
+                          "transform": [1, 0, 0, 3 * (k % side), 0, 1, 0, 3 * (k // side),
+                                        0, 0, 1, 0, 0, 0, 0, 1]})
+        scene = os.path.join(a.out, "scene.json")
+        with open(scene, "w") as f:
+            json.dump({"tolerance": 0.01, "parts": parts}, f)
+    times = {b: [] for b in a.binaries}
+    for _ in range(a.runs):
+        for b in a.binaries:
+            r = subprocess.run([b, scene, "--quiet", "--method", "exact", "-j", str(a.jobs)],
+                               capture_output=True, text=True)
+            if r.returncode not in (0, 1, 3):
+                sys.exit("%s failed (%d): %s" % (b, r.returncode, r.stderr))
+            times[b].append(json.loads(r.stdout)["stage_seconds"]["parts"])
+    base = statistics.median(times[a.binaries[0]])
+    for b in a.binaries:
+        m = statistics.median(times[b])
+        print("%-50s parts stage median %.3f s (runs: %s), ratio %.2f" %
+              (b, m, " ".join("%.3f" % t for t in times[b]), m / base))
+
+
+if __name__ == "__main__":
+    main()
