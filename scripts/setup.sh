@@ -27,7 +27,7 @@ fi
 MT="$ROOT/build/tools/sarif-multitool"
 if [ ! -x "$MT/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool" ] && command -v npm >/dev/null; then
   echo "pdcheck setup: installing the SARIF multitool (npm) into build/tools" >&2
-  npm install --prefix "$MT" --no-audit --no-fund --loglevel=error \
+  npm install --prefix "$MT" --no-audit --no-fund --loglevel=error --fetch-timeout=60000 --fetch-retries=1 \
       @microsoft/sarif-multitool-linux@5.7.0 >&2 ||
     echo "pdcheck setup: the SARIF multitool could not be installed; its test will be skipped" >&2
 fi
