@@ -1,5 +1,6 @@
 #include "report/finding_text.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace pd {
@@ -16,9 +17,10 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
   const std::string& b = parts[r.b].id;
   std::string t = a + " / " + b + ": " + status_name(r.status);
   if (r.status == Status::kError) return t + ": " + r.error;
-  const std::string dir = "(" + short_number(r.direction.x()) + ", " +
-                          short_number(r.direction.y()) + ", " + short_number(r.direction.z()) +
-                          ")";
+  // A unit vector: components below 1e-12 are rounding noise, shown as 0.
+  auto c = [](double x) { return short_number(std::abs(x) < 1e-12 ? 0.0 : x); };
+  const std::string dir =
+      "(" + c(r.direction.x()) + ", " + c(r.direction.y()) + ", " + c(r.direction.z()) + ")";
   if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance) {
     t += ": distance " + short_number(*r.distance) + " " + units + " < required clearance " +
          short_number(*r.clearance_min) + " " + units + "; separating normal " + dir;

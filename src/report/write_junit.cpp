@@ -4,6 +4,7 @@
 // error for a pair or part that could not be checked. docs/ci.md.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "report/finding_text.h"
 #include "report/writer.h"
@@ -60,7 +61,10 @@ std::string render_junit(const ReportInput& in) {
   const std::string& units = in.context.units;
   const double tol = in.context.tolerance;
   const std::string suite = in.context.scene_path == "-" ? "stdin" : in.context.scene_path;
-  const std::string classname = "pdcheck." + suite;
+  // CI views split class names at dots into packages: the scene file's stem, dots replaced.
+  std::string stem = std::filesystem::path(suite).stem().string();
+  std::replace(stem.begin(), stem.end(), '.', '_');
+  const std::string classname = "pdcheck." + (stem.empty() ? "scene" : stem);
   long failures = 0, errors = 0, skipped = 0, tests = 0;
   std::string cases;
   for (size_t k = 0; k < run.pairs.size(); ++k) {
