@@ -52,6 +52,10 @@ inline constexpr long kNeighbourhoodPoints = 20000;
 inline constexpr double kActiveLoose = 1e-7;
 inline constexpr double kActiveTight = 1e-10;
 
+/// The loosest active-set band (unit frame) of the snap tried at a descent's end
+/// point, before any Ipopt call; tighter bands follow by factors of 10.
+inline constexpr double kDescentSnapBand = 1e-3;
+
 /// The facet snap accepts a plane when its normal fits the active vertices to
 /// this residual (smallest singular value of the active edge matrix).
 inline constexpr double kSnapResidual = 1e-9;

@@ -33,7 +33,7 @@ std::string encode_pair_result(const PairResult& r) {
             {"st",
              {r.stats.alpha_evaluations, r.stats.local_solves, r.stats.distinct_optima,
               r.stats.ipopt_iterations, r.stats.ipopt_calls, r.stats.ipopt_failures,
-              r.stats.mlsl_iterations}}};
+              r.stats.mlsl_iterations, int(r.stats.stop_reason)}}};
   if (r.distance) j["x"] = *r.distance;
   if (r.clearance_min) j["c"] = *r.clearance_min;
   if (r.motion) {
@@ -70,7 +70,7 @@ PairResult decode_pair_result(const std::string& s) {
   r.fallback = j["f"];
   r.error = j["e"];
   const auto& st = j["st"];
-  r.stats = {st[0], st[1], st[2], st[3], st[4], st[5], st[6]};
+  r.stats = {st[0], st[1], st[2], st[3], st[4], st[5], st[6], StopReason(st[7].get<int>())};
   if (j.contains("x")) r.distance = j["x"].get<double>();
   if (j.contains("c")) r.clearance_min = j["c"].get<double>();
   if (j.contains("mo")) {

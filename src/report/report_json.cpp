@@ -84,7 +84,8 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
                 {"alpha_evaluations", r.stats.alpha_evaluations},
                 {"ipopt_calls", r.stats.ipopt_calls},
                 {"ipopt_iterations", r.stats.ipopt_iterations},
-                {"ipopt_failures", r.stats.ipopt_failures}};
+                {"ipopt_failures", r.stats.ipopt_failures},
+                {"stop_reason", stop_reason_name(r.stats.stop_reason)}};
   j["time_ms"] = r.time_ms;
   return j;
 }

@@ -92,6 +92,15 @@ CapCover open_region_caps(const PairProblem& pr, double best, int grid, double m
     }
     if (!closed) open.push_back(k);
   }
+  // Fail fast: a cap of max_radius holds at most its area over the smallest
+  // cell's (a gnomonic cell is >= 0.3 of the mean area at any grid), so more
+  // open cells than max_caps such caps can hold cannot be covered.
+  const double cap_area = 2 * M_PI * (1 - std::cos(max_radius));
+  const double min_cell = 0.3 * 4 * M_PI / double(nc);
+  if (double(open.size()) > max_caps * cap_area / min_cell) {
+    out.ok = false;
+    return out;
+  }
   // Connected groups of open cells (cells whose caps touch), one cap each,
   // centred on the group's mean direction; a group too wide for one cap is
   // covered greedily from its lowest cell.

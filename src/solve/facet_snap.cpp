@@ -8,8 +8,12 @@
 
 namespace pd {
 
-std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& v) {
-  for (double t : {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight}) {
+namespace {
+
+// Tries the active-set tolerances in `bands` from loose to tight (see the header).
+std::optional<Vec3> snap_with(const Points& p, const Points& q, const Vec3& v,
+                              const std::vector<double>& bands) {
+  for (double t : bands) {
     const std::vector<int> a = near_extreme(p, v, t, true), b = near_extreme(q, v, t, false);
     if (a.size() + b.size() < 3) return std::nullopt;  // a vertex or an edge: no facet
     Eigen::MatrixXd edges(a.size() + b.size() - 2, 3);
@@ -25,6 +29,19 @@ std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& 
     return n.normalized();
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& v) {
+  return snap_with(p, q, v, {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight});
+}
+
+std::optional<Vec3> snap_from_descent(const Points& p, const Points& q, const Vec3& v) {
+  std::vector<double> bands;
+  for (double t = tol::kDescentSnapBand; t > tol::kActiveLoose * 1.5; t *= 0.1) bands.push_back(t);
+  for (double t : {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight}) bands.push_back(t);
+  return snap_with(p, q, v, bands);
 }
 
 }  // namespace pd

@@ -17,4 +17,10 @@ namespace pd {
 /// when the active vertices do not span a plane at any tried tolerance.
 std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& v);
 
+/// The same from a smooth descent's end point, which lies within about μ of the
+/// optimum: active sets from kDescentSnapBand down to the tight ones. On a
+/// contact (faces resting on faces) it lands on the contact facet without any
+/// Ipopt call. Only a candidate: the caller keeps it only if its gap is lower.
+std::optional<Vec3> snap_from_descent(const Points& p, const Points& q, const Vec3& v);
+
 }  // namespace pd

@@ -34,6 +34,24 @@ std::string method_name(Method m) {
   return "?";
 }
 
+const char* stop_reason_name(StopReason r) {
+  switch (r) {
+    case StopReason::kNone:
+      return "none";
+    case StopReason::kProvenSeparated:
+      return "proven_separated";
+    case StopReason::kContact:
+      return "contact";
+    case StopReason::kCertificate:
+      return "certificate";
+    case StopReason::kBayesian:
+      return "bayesian";
+    case StopReason::kCap:
+      return "cap";
+  }
+  return "none";
+}
+
 DepthSolution solve_convex_pair(const Points& a, const Points& b, const SolverSettings& s,
                                 IpoptLocalSolver& ipopt) {
   const PairProblem pr(a, b);

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "solve/certificate.h"
+#include "solve/facet_snap.h"
 #include "solve/local_search.h"
 #include "solve/neighbourhood.h"
 #include "tolerances.h"
@@ -94,8 +95,7 @@ void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<B
 
 }  // namespace
 
-bool certify_minimum(const PairProblem& pr, IpoptLocalSolver& ipopt, Vec3& v, double& gap,
-                     SolveStats& stats) {
+bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& stats) {
   for (int round = 0; round < 4; ++round) {
     const CapCover cover = open_region_caps(pr, gap, tol::kCertificateGrid,
                                             tol::kCertificateCapAngle, tol::kCertificateCaps);
@@ -115,8 +115,8 @@ bool certify_minimum(const PairProblem& pr, IpoptLocalSolver& ipopt, Vec3& v, do
       }
     }
     if (!improved) return true;
-    const LocalResult lr = polish(pr, ipopt, v, stats);
-    if (lr.converged && lr.gap <= gap) v = lr.v, gap = lr.gap;
+    // The cap's facet is a facet of P − Q, exact to rounding: no Ipopt polish;
+    // the next round certifies it with the lower bound.
   }
   return false;
 }
@@ -131,17 +131,43 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   std::vector<Basin> basins;
   Optimum best{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
   const double smoothing_excess = std::log(double(pr.p().cols())) + std::log(double(pr.q().cols()));
+  auto consider = [&](const Vec3& v, double g) {
+    if (g < best.gap) best = {v, g};
+  };
+  // A direction with gap <= 0 is a separating (or touching) plane: depth 0,
+  // proved. Within kTouch of 0 the depth is below the contact resolution.
+  auto settled = [&]() {
+    if (best.gap <= 0) return StopReason::kProvenSeparated;
+    if (best.gap <= tol::kTouch) return StopReason::kContact;
+    return StopReason::kNone;
+  };
+  auto stop = [&](StopReason why) {
+    stats.stop_reason = why;
+    return finish(pr, best, static_cast<int>(basins.size()), stats);
+  };
+  // The broad phase's overlap axes: gap(±e_k) is the overlap of the pair's boxes
+  // along axis k, so the box test's best axis is the first sample. On contacts
+  // of axis-aligned parts it is the contact normal.
+  for (int k = 0; k < 6; ++k) {
+    const Vec3 axis = (k % 2 ? -1.0 : 1.0) * Vec3::Unit(k / 2);
+    x.push_back(axis);
+    f.push_back(pr.gap(axis));
+    started.push_back(0);
+    consider(x.back(), f.back());
+  }
+  if (settled() != StopReason::kNone) return stop(settled());
 
+  bool tried_certificate = false;
+  StopReason why = StopReason::kCap;  // unless the Bayesian rule stops the loop
   for (int k = 1; k <= s.max_iterations; ++k) {
     stats.mlsl_iterations = k;
     for (int i = 0; i < s.samples; ++i) {
       x.push_back(rng.direction());
       f.push_back(pr.gap(x.back()));
       started.push_back(0);
-      if (f.back() < best.gap) best = {x.back(), f.back()};
+      consider(x.back(), f.back());
     }
-    // A direction with a negative gap is a separating plane: depth 0, certified.
-    if (best.gap < 0) return finish(pr, best, 0, stats);
+    if (settled() != StopReason::kNone) return stop(settled());
 
     const long kn = static_cast<long>(x.size());
     // Critical distance on the sphere (area 4π, dimension 2), as an angle.
@@ -166,23 +192,37 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
       if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
       started[i] = 1;
       const DescentOutcome d = descend(pr, x[i], stats);
-      const double end_gap = pr.gap(d.v);
-      if (end_gap < best.gap) best = {d.v, end_gap};
-      if (end_gap < 0) return finish(pr, best, 0, stats);
+      consider(d.v, pr.gap(d.v));
+      // The facet the descent came close to, exact, without Ipopt (a contact's).
+      if (const auto n = snap_from_descent(pr.p(), pr.q(), d.v)) consider(*n, pr.gap(*n));
+      if (settled() != StopReason::kNone) return stop(settled());
       add_basin(basins, d.v, d.smoothed - d.mu * smoothing_excess);
+      // Certificate first: once the best sample's basin is known, try to prove
+      // it global. When it holds, no more sampling and no Ipopt call is needed.
+      if (!tried_certificate) {
+        tried_certificate = true;
+        const bool certified = certify_minimum(pr, best.v, best.gap, stats);
+        if (settled() != StopReason::kNone) return stop(settled());
+        if (certified) return stop(StopReason::kCertificate);
+      }
     }
     // Every reduced-sample point is either a start or linked to one, so it counts
     // as a search whose optimum is known (Rinnooy Kan & Timmer, part II, §3).
     const int w = static_cast<int>(basins.size());
     const double wbar = expected_optima(w, reduced);
-    if (k >= s.min_iterations && w > 0 && w / wbar >= s.tau) break;
+    if (k >= s.min_iterations && w > 0 && w / wbar >= s.tau) {
+      why = StopReason::kBayesian;
+      break;
+    }
     if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
   }
   std::string last_failure;
   const Optimum before = best;
   const int distinct = static_cast<int>(basins.size());
   polish_basins(pr, ipopt, std::move(basins), best, stats, last_failure);
-  const bool certified = best.gap <= 0 || certify_minimum(pr, ipopt, best.v, best.gap, stats);
+  if (best.gap <= tol::kTouch) why = settled();
+  const bool certified = best.gap <= tol::kTouch || certify_minimum(pr, best.v, best.gap, stats);
+  stats.stop_reason = why;
   DepthSolution sol = finish(pr, best, distinct, stats);
   // Too many near-tied minima spread too widely (nearly concentric spheres, say):
   // solve_convex_pair lets the exact hull settle it, and the report says so.
@@ -206,8 +246,10 @@ DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
 
   for (int k = 1; double(optima.size()) / wbar < s.tau; ++k) {
     if (k > s.max_iterations * 10 || stats.local_solves >= s.max_local_solves * 10 ||
-        seconds_since(t0) > s.max_seconds)
+        seconds_since(t0) > s.max_seconds) {
+      stats.stop_reason = StopReason::kCap;
       break;  // caps far above the paper's typical run: it always stops
+    }
     stats.mlsl_iterations = k;
     const double kn = double(k) * N;
     const double rk =
@@ -248,6 +290,7 @@ DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
       if (k * M > w + 2) wbar = expected_optima(w, long(k) * M);
     }
   }
+  if (stats.stop_reason == StopReason::kNone) stats.stop_reason = StopReason::kBayesian;
   DepthSolution sol = finish(pr, best, static_cast<int>(optima.size()), stats);
   if (optima.empty()) sol.fallback = "no local solve converged (" + last_failure + ")";
   return sol;

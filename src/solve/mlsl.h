@@ -19,8 +19,7 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
 /// Proves that (v, gap) is the global minimum of the gap (solve/certificate.h),
 /// replacing it by a lower facet when one exists; false when the open region is
 /// too large to search locally.
-bool certify_minimum(const PairProblem& pr, IpoptLocalSolver& ipopt, Vec3& v, double& gap,
-                     SolveStats& stats);
+bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& stats);
 
 /// The paper's Algorithm 1 as printed (N, M, σ, τ; the (θ, φ) box; best M
 /// samples searched every iteration) with paper_local_search. The baseline.

@@ -1,12 +1,27 @@
 // What a depth solve returns, in the pair's unit frame.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
 #include "geometry/types.h"
 
 namespace pd {
+
+/// Why a depth solve stopped (docs/solver.md). Ordered from most to least
+/// conclusive: summed stats (pieces, motion steps) keep the least conclusive.
+enum class StopReason {
+  kNone,             ///< the method has no stop rule (exact, grid, gs-local)
+  kProvenSeparated,  ///< a direction with gap <= 0 was found: depth 0, proved
+  kContact,          ///< a direction with gap <= kTouch: depth within contact resolution
+  kCertificate,      ///< the certificate proved the best direction global (sampling stopped early)
+  kBayesian,         ///< the Bayesian rule stopped the sampling (then certified)
+  kCap,              ///< a cap on iterations, local solves or time stopped the sampling
+};
+
+/// The report's name of a stop reason ("proven_separated", …).
+const char* stop_reason_name(StopReason r);
 
 /// Work counters, reported per pair.
 struct SolveStats {
@@ -17,8 +32,10 @@ struct SolveStats {
   int ipopt_calls = 0;
   int ipopt_failures = 0;  ///< Ipopt calls that did not converge
   int mlsl_iterations = 0;
+  StopReason stop_reason = StopReason::kNone;
 
   SolveStats& operator+=(const SolveStats& s) {
+    stop_reason = std::max(stop_reason, s.stop_reason);
     alpha_evaluations += s.alpha_evaluations;
     local_solves += s.local_solves;
     distinct_optima += s.distinct_optima;

@@ -48,7 +48,7 @@ SignedSolution signed_distance(const Points& a, const Points& b, const SolverSet
     // Still apart: that α-free solve was the distance solve.
     if (g < 0) return separation(pr, lr, *warm, stats);
     // Overlapping: a local optimum from the warm start, proved global (or not).
-    if (certify_minimum(pr, ipopt, v, g, stats)) {
+    if (certify_minimum(pr, v, g, stats)) {
       SignedSolution out;
       out.value = pr.frame().length_to_world(std::max(0.0, g));
       out.direction = v;
