@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -284,12 +285,13 @@ int main(int argc, char** argv) {
     std::printf(
         "| method | pairs | median ms | p99 ms | max ms | median rel. err | max rel. err | median "
         "α evals "
-        "| median Ipopt calls | median Ipopt iters | fallbacks |\n");
-    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        "| median Ipopt calls | median Ipopt iters | fallbacks | stop reasons |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (const Config& cfg : all_configs()) {
       if (!selected(want_methods, cfg.name)) continue;
       std::vector<double> ms, err, evals, calls, iters;
       int fallbacks = 0;
+      std::map<std::string, int> stops;
       ordered_json points = ordered_json::array();
       const auto cell0 = std::chrono::steady_clock::now();
       for (size_t k = 0; k < cases.size(); ++k) {
@@ -302,6 +304,7 @@ int main(int argc, char** argv) {
         calls.push_back(s.stats.ipopt_calls);
         iters.push_back(s.stats.ipopt_iterations);
         fallbacks += !s.fallback.empty();
+        ++stops[stop_reason_name(s.stats.stop_reason)];
         if (verbose && err.back() > 1e-9)
           std::fprintf(stderr,
                        "%s / %s pair %zu: rel. err %.2e, %.3g rad from the exact direction\n",
@@ -311,10 +314,14 @@ int main(int argc, char** argv) {
         if (std::chrono::duration<double>(t1 - cell0).count() > budget) break;
       }
       const double max_err = *std::max_element(err.begin(), err.end());
-      std::printf("| %s | %zu | %.3g | %.3g | %.3g | %.1e | %.1e | %.0f | %.0f | %.0f | %d |\n",
-                  cfg.name.c_str(), ms.size(), median(ms), quantile(ms, 0.99),
-                  *std::max_element(ms.begin(), ms.end()), median(err), max_err, median(evals),
-                  median(calls), median(iters), fallbacks);
+      std::string stop_text;
+      for (const auto& [name, count] : stops)
+        stop_text += (stop_text.empty() ? "" : ", ") + name + " " + std::to_string(count);
+      std::printf(
+          "| %s | %zu | %.3g | %.3g | %.3g | %.1e | %.1e | %.0f | %.0f | %.0f | %d | %s |\n",
+          cfg.name.c_str(), ms.size(), median(ms), quantile(ms, 0.99),
+          *std::max_element(ms.begin(), ms.end()), median(err), max_err, median(evals),
+          median(calls), median(iters), fallbacks, stop_text.c_str());
       std::fflush(stdout);
       out.push_back({{"set", set.name},
                      {"method", cfg.name},
@@ -328,6 +335,7 @@ int main(int argc, char** argv) {
                      {"median_ipopt_calls", median(calls)},
                      {"median_ipopt_iterations", median(iters)},
                      {"fallbacks", fallbacks},
+                     {"stop_reasons", stops},
                      {"points", points}});
     }
   }

@@ -1,0 +1,150 @@
+// Contacts as CAD produces them (issue 12): mlsl gives the exact reference's
+// depth on every contact family, and stop_reason says how each solve ended.
+#include <gtest/gtest.h>
+
+#include "batch/run.h"
+#include "corpus/contacts.h"
+#include "solve/methods.h"
+#include "tolerances.h"
+
+using namespace pd;
+using testgen::Contact;
+
+namespace {
+
+DepthSolution solve(const testgen::PairCase& c, Method m, SolverSettings s = {}) {
+  static IpoptLocalSolver ipopt;
+  s.method = m;
+  return solve_convex_pair(c.a, c.b, s, ipopt);
+}
+
+// Depths at or below the contact resolution are contact for both methods;
+// above it mlsl must equal exact to 1e-9 relative (pdbench's measure).
+void expect_same_depth(const testgen::PairCase& c, const std::string& what) {
+  const DepthSolution e = solve(c, Method::kExact), m = solve(c, Method::kMlsl);
+  const double touch = tol::kTouch * pair_frame(c.a, c.b).scale;
+  SCOPED_TRACE(what + " exact " + std::to_string(e.depth) + " mlsl " + std::to_string(m.depth));
+  EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+  EXPECT_TRUE(std::isfinite(m.depth) && m.direction.allFinite());
+  if (e.depth <= touch) {
+    EXPECT_LE(m.depth, touch);
+  } else {
+    EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
+  }
+}
+
+Points box(const Vec3& lo, const Vec3& hi) {
+  Points p(3, 8);
+  for (int k = 0; k < 8; ++k)
+    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  return p;
+}
+
+}  // namespace
+
+TEST(Contacts, EveryFamilyGivesTheExactDepth) {
+  // Six pairs per family and size: each fit or gap in each placement (axes,
+  // rotated, float32 at x = 20,000 mm).
+  const std::pair<Contact, std::vector<int>> families[] = {{Contact::kPlates, {8, 30}},
+                                                           {Contact::kSeated, {8, 100}},
+                                                           {Contact::kShaft, {32, 128}},
+                                                           {Contact::kBall, {30, 100}},
+                                                           {Contact::kHairGap, {8, 30}}};
+  for (const auto& [family, sizes] : families)
+    for (int n : sizes) {
+      SphereSampler r(12 + n);
+      for (int k = 0; k < 9; ++k)
+        expect_same_depth(testgen::contact_case(r, family, n, k), testgen::contact_name(family) +
+                                                                      " n=" + std::to_string(n) +
+                                                                      " pair " + std::to_string(k));
+    }
+}
+
+TEST(Contacts, SeparatedPairStopsAsProvenSeparatedAtItsFirstSamples) {
+  SphereSampler r(4);
+  for (int k = 0; k < 5; ++k) {
+    const DepthSolution m = solve(testgen::apart_boxes_overlapping(r, 100), Method::kMlsl);
+    EXPECT_EQ(m.depth, 0.0);
+    EXPECT_STREQ(stop_reason_name(m.stats.stop_reason), "proven_separated");
+    // One batch of samples at most: no descent, no Ipopt, no certificate.
+    EXPECT_LE(m.stats.alpha_evaluations, 406);
+    EXPECT_EQ(m.stats.local_solves, 0);
+    EXPECT_EQ(m.stats.ipopt_calls, 0);
+  }
+}
+
+TEST(Contacts, AxisAlignedTouchingBoxesStopAtTheOverlapAxis) {
+  // The box test's overlap axis is the contact normal: gap 0 there, six evaluations.
+  const testgen::PairCase c{box(Vec3::Zero(), Vec3(4, 3, 1)), box(Vec3(1, 1, 1), Vec3(2, 2, 5))};
+  const DepthSolution m = solve(c, Method::kMlsl);
+  EXPECT_EQ(m.depth, 0.0);
+  EXPECT_EQ(m.stats.stop_reason, StopReason::kProvenSeparated);
+  EXPECT_LE(m.stats.alpha_evaluations, 6);
+}
+
+TEST(Contacts, RotatedTouchingPlatesNeedNoIpopt) {
+  // Off the axes the contact normal is found by one descent and the snap.
+  SphereSampler r(8);
+  for (int k = 0; k < 4; ++k) {
+    const auto c = testgen::place(r, testgen::plates_touching(r, 30), testgen::Placement::kRotated);
+    const DepthSolution m = solve(c, Method::kMlsl);
+    SCOPED_TRACE(k);
+    EXPECT_LE(m.depth, tol::kTouch * pair_frame(c.a, c.b).scale);
+    EXPECT_TRUE(m.stats.stop_reason == StopReason::kProvenSeparated ||
+                m.stats.stop_reason == StopReason::kContact)
+        << stop_reason_name(m.stats.stop_reason);
+    EXPECT_EQ(m.stats.ipopt_calls, 0);
+    EXPECT_LE(m.stats.local_solves, 2);
+  }
+}
+
+TEST(Contacts, InterferingShaftIsCertifiedAfterItsFirstBasin) {
+  SphereSampler r(21);
+  int certified = 0;
+  for (int k = 0; k < 6; ++k) {
+    const auto c = testgen::shaft_in_bore(r, 64, -0.05);
+    const DepthSolution e = solve(c, Method::kExact), m = solve(c, Method::kMlsl);
+    ASSERT_GT(e.depth, 0.04);
+    EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
+    if (m.stats.stop_reason == StopReason::kCertificate) {
+      ++certified;
+      EXPECT_EQ(m.stats.local_solves, 1);  // the sampling stopped at the first basin
+      EXPECT_EQ(m.stats.ipopt_calls, 0);
+    }
+  }
+  EXPECT_GE(certified, 5);
+}
+
+TEST(Contacts, StopReasonsOfTheSamplingRules) {
+  SphereSampler r(3);
+  const auto c = testgen::paper_like(r);
+  // The paper's method has only its Bayesian rule (and far caps).
+  EXPECT_EQ(solve(c, Method::kMlslPaper).stats.stop_reason, StopReason::kBayesian);
+  EXPECT_EQ(solve(c, Method::kExact).stats.stop_reason, StopReason::kNone);
+  // Nearly concentric spheres defeat the certificate; one iteration is the cap.
+  SphereSampler z(1);
+  const testgen::PairCase s{testgen::sphere_polytope(z, 300, Vec3::Zero(), 10),
+                            testgen::sphere_polytope(z, 300, Vec3(1e-3, 0, 0), 10)};
+  SolverSettings one;
+  one.max_iterations = 1;
+  const DepthSolution m = solve(s, Method::kMlsl, one);
+  EXPECT_EQ(m.stats.stop_reason, StopReason::kCap);
+  EXPECT_FALSE(m.fallback.empty());
+}
+
+TEST(Contacts, StopReasonCrossesTheWorkerPipe) {
+  for (StopReason why : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
+                         StopReason::kCertificate, StopReason::kBayesian, StopReason::kCap}) {
+    PairResult r;
+    r.stats.stop_reason = why;
+    EXPECT_EQ(decode_pair_result(encode_pair_result(r)).stats.stop_reason, why);
+  }
+  // Summed stats (pieces, motion steps) keep the least conclusive reason.
+  SolveStats a, b;
+  a.stop_reason = StopReason::kBayesian;
+  b.stop_reason = StopReason::kProvenSeparated;
+  a += b;
+  EXPECT_EQ(a.stop_reason, StopReason::kBayesian);
+  b += a;
+  EXPECT_EQ(b.stop_reason, StopReason::kBayesian);
+}
