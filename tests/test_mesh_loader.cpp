@@ -184,6 +184,12 @@ TEST(PlyInput, DamagedFilesAreErrors) {
       {"float list length", std::string(good).replace(good.find("list uchar"), 10, "list float"),
        "integer type"},
       {"ascii data cut short", ascii.substr(0, ascii.size() - 4), "data cut short"},
+      {"an ascii list length of 1e300",
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+       "float "
+       "z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 "
+       "0\n1e300 0 1 2\n",
+       "not a whole number"},
       {"a vertex count of two billion",
        std::string(good).replace(good.find("vertex 4"), 8, "vertex 2000000000"), "at most"},
       {"an ascii vertex count of two billion",

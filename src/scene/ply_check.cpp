@@ -240,7 +240,7 @@ void walk_ascii(std::string_view bytes, size_t pos, std::vector<Element>& elemen
         std::uint64_t items = 1;
         if (p.count.size) {
           const double n = number(token(el, i), el, i);
-          if (n < 0 || n != std::floor(n))
+          if (!(n >= 0 && n <= 1e15) || n != std::floor(n))
             fail(where(el, i) + ": list " + quoted(p.name) + " has length " + std::to_string(n) +
                  ", not a whole number >= 0");
           items = std::uint64_t(n);
