@@ -27,6 +27,12 @@ std::string assembly(const std::string& name, double lid_z, const json& extra = 
   return write_temp(name, json{{"units", "mm"}, {"tolerance", 0.1}, {"parts", parts}}.dump());
 }
 
+// The nightly loop's assembly adds a clip 0.3 into the frame's side: a known
+// interference that nobody suppressed.
+std::string loop_assembly(const std::string& name, double lid_z) {
+  return assembly(name, lid_z, json::array({cube("clip", -1.7, 6, 6, 2)}));
+}
+
 json read_json(const std::string& path) {
   return json::parse(read_text(path));
 }
@@ -59,36 +65,39 @@ size_t count(const std::string& text, const std::string& what) {
 TEST(CiLoop, NightlyLoopFailsOnlyOnTheNewFinding) {
   const std::string r1 = tmp("loop_r1.json"), sup = tmp("loop_sup.json");
   const CliResult run1 =
-      pdcheck(assembly("loop1.json", 10.0) + " -q -o " + r1 + " --write-suppressions " + sup);
+      pdcheck(loop_assembly("loop1.json", 10.0) + " -q -o " + r1 + " --write-suppressions " + sup);
   ASSERT_EQ(run1.code, 1) << run1.err;  // the press fit is an interference
   json s = read_json(sup);
-  ASSERT_EQ(s["suppressions"].size(), 1u) << s.dump();
+  ASSERT_EQ(s["suppressions"].size(), 2u) << s.dump();  // the bushing, then the clip
+  EXPECT_EQ(s["suppressions"][0]["b"], "bushing");
   EXPECT_EQ(s["suppressions"][0]["reason"], "");
   // An unreviewed file is rejected: the reason is required.
-  const CliResult unreviewed = pdcheck(assembly("loop1b.json", 10.0) + " -q --suppressions " + sup);
+  const CliResult unreviewed =
+      pdcheck(loop_assembly("loop1b.json", 10.0) + " -q --suppressions " + sup);
   EXPECT_EQ(unreviewed.code, 2);
   EXPECT_NE(unreviewed.err.find(sup + ": $.suppressions[0].reason: must say why"),
             std::string::npos)
       << unreviewed.err;
   s["suppressions"][0]["reason"] = "press fit of the bushing, drawing 4711";
   s["suppressions"][0]["owner"] = "mech-team";
+  s["suppressions"].erase(1);  // the clip is not accepted: it stays a finding
   std::ofstream(sup) << s.dump(2);
   bool no_validator = false;
   EXPECT_EQ(validate_json(kSource + "/docs/suppressions.schema.json", sup, no_validator), "");
 
   // Same geometry again: nothing new, the press fit is suppressed.
   const std::string same = tmp("loop_same.json");
-  const CliResult calm = pdcheck(assembly("loop2a.json", 10.0) + " -q -o " + same + " --baseline " +
-                                 r1 + " --suppressions " + sup + " --fail-on new");
+  const CliResult calm = pdcheck(loop_assembly("loop2a.json", 10.0) + " -q -o " + same +
+                                 " --baseline " + r1 + " --suppressions " + sup + " --fail-on new");
   EXPECT_EQ(calm.code, 0) << calm.err;
-  EXPECT_EQ(read_json(same)["summary"]["baseline"]["unchanged"], 1);
+  EXPECT_EQ(read_json(same)["summary"]["baseline"]["unchanged"], 2);
 
   // The lid sinks 1 mm into the frame.
   const std::string r2 = tmp("loop_r2.json"), junit = tmp("loop.junit.xml"),
                     sarif = tmp("loop.sarif");
   const CliResult run2 =
-      pdcheck(assembly("loop2.json", 9.0) + " -o " + r2 + " --baseline " + r1 + " --suppressions " +
-              sup + " --fail-on new --junit " + junit + " --sarif " + sarif);
+      pdcheck(loop_assembly("loop2.json", 9.0) + " -o " + r2 + " --baseline " + r1 +
+              " --suppressions " + sup + " --fail-on new --junit " + junit + " --sarif " + sarif);
   ASSERT_EQ(run2.code, 1) << run2.err;
   // stderr names the new finding and nothing else as failing.
   EXPECT_EQ(count(run2.err, "fails --fail-on new"), 1u) << run2.err;
@@ -102,6 +111,9 @@ TEST(CiLoop, NightlyLoopFailsOnlyOnTheNewFinding) {
   EXPECT_EQ(p.at("bushing/frame")["baseline_state"], "unchanged");
   EXPECT_EQ(p.at("bushing/frame")["suppressed"]["reason"],
             "press fit of the bushing, drawing 4711");
+  EXPECT_EQ(p.at("clip/frame")["status"], "interference");  // known, unsuppressed, not new
+  EXPECT_EQ(p.at("clip/frame")["baseline_state"], "unchanged");
+  EXPECT_FALSE(p.at("clip/frame").contains("suppressed"));
   EXPECT_EQ(rep["summary"]["failing"], 1);
   EXPECT_EQ(rep["summary"]["exit_code"], 1);
   EXPECT_EQ(rep["summary"]["baseline"]["new"], 1);
