@@ -4,6 +4,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cmath>
+#include <stdexcept>
 
 #include "geometry/types.h"
 
@@ -24,11 +26,21 @@ struct RigidMotion {
   }
 };
 
+/// The most grid times a motion check may have (docs/scene-format.md).
+inline constexpr long kMaxTimeSteps = 1000000;
+
 /// The time grid of a motion check: t0, t0 + dt, …, up to t1 (inclusive, within
 /// rounding).
 struct TimeGrid {
   double t0 = 0.0, t1 = 0.0, dt = 1.0;
-  long steps() const { return static_cast<long>(std::floor((t1 - t0) / dt + 1e-9)) + 1; }
+  /// At most kMaxTimeSteps (scenes are checked when read): a larger count is
+  /// refused, never cast out of range (that wrapped and skipped the check).
+  long steps() const {
+    const double n = std::floor((t1 - t0) / dt + 1e-9) + 1;
+    if (!(n >= 1 && n <= kMaxTimeSteps))
+      throw std::domain_error("the time grid has no or more than 1,000,000 steps");
+    return static_cast<long>(n);
+  }
   double time(long k) const { return t0 + dt * static_cast<double>(k); }
 };
 

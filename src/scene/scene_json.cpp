@@ -2,9 +2,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 
 #include "parallel_for.h"
 #include "scene/json_split.h"
@@ -162,6 +164,26 @@ double positive(const Ctx& c, const json& j, const std::string& at) {
   return v;
 }
 
+// The step count in double precision: a cast of more than 2^63 steps to an
+// integer is undefined (it wrapped below the cap and skipped the check).
+void time_grid_limits(const Ctx& c, const TimeGrid& g, const std::string& at) {
+  const double span = g.t1 - g.t0;
+  if (!std::isfinite(span)) c.fail(at + ".t1", "t1 - t0 is beyond the double range");
+  const double steps = std::floor(span / g.dt + 1e-9) + 1;
+  if (!(steps <= kMaxTimeSteps)) {
+    std::ostringstream n;
+    n << std::setprecision(3) << steps;
+    c.fail(at + ".dt", "gives " + n.str() + " time steps, more than " +
+                           std::to_string(kMaxTimeSteps) + ": use a larger dt");
+  }
+  // Grid times must differ: t + dt == t when dt is below the spacing of
+  // doubles at t, and the grid would repeat one time.
+  const double t = std::max(std::abs(g.t0), std::abs(g.t1));
+  if (steps > 1 && !(t + g.dt > t))
+    c.fail(at + ".dt", "below the resolution of double-precision times at |t| = " +
+                           (std::ostringstream() << t).str() + ": use a larger dt or shift t0");
+}
+
 Checks checks(const Ctx& c, const json& j) {
   if (!j.is_object()) c.fail("checks", std::string("expected an object, got ") + type_name(j));
   only_keys(c, j, "checks", {"clearance", "motion"});
@@ -202,7 +224,7 @@ Checks checks(const Ctx& c, const json& j) {
     m.grid.t1 = number(c, mj["t1"], at + ".t1");
     if (m.grid.t1 < m.grid.t0) c.fail(at + ".t1", "must be >= t0");
     if (mj.contains("dt")) m.grid.dt = positive(c, mj["dt"], at + ".dt");
-    if (m.grid.steps() > 1000000) c.fail(at, "more than 1,000,000 time steps");
+    time_grid_limits(c, m.grid, at);
     if (mj.contains("series")) {
       if (!mj["series"].is_boolean()) c.fail(at + ".series", "expected true or false");
       m.series = mj["series"].get<bool>();
@@ -224,12 +246,11 @@ SolverOverrides solver(const Ctx& c, const json& j) {
       c.fail(at + ".method",
              "unknown method \"" + m + "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
   }
-  auto positive_int = [&](const char* key) -> std::optional<int> {
+  auto positive_int = [&](const char* key, int max) -> std::optional<int> {
     if (!j.contains(key)) return std::nullopt;
     const std::string ak = at + "." + key;
-    if (!j[key].is_number_integer() || j[key].get<long long>() < 1 ||
-        j[key].get<long long>() > 100000)
-      c.fail(ak, "expected an integer from 1 to 100000");
+    if (!j[key].is_number_integer() || j[key].get<long long>() < 1 || j[key].get<long long>() > max)
+      c.fail(ak, "expected an integer from 1 to " + std::to_string(max));
     return j[key].get<int>();
   };
   if (j.contains("seed")) {
@@ -240,9 +261,9 @@ SolverOverrides solver(const Ctx& c, const json& j) {
     o.tau = number(c, j["tau"], at + ".tau");
     if (!(*o.tau > 0 && *o.tau < 1)) c.fail(at + ".tau", "expected 0 < tau < 1");
   }
-  o.samples = positive_int("samples");
-  o.grid = positive_int("grid");
-  o.gs_local = positive_int("gs_local");
+  o.samples = positive_int("samples", 100000);
+  o.grid = positive_int("grid", kMaxGrid);
+  o.gs_local = positive_int("gs_local", kMaxGsLocal);
   return o;
 }
 

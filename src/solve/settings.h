@@ -36,4 +36,10 @@ struct SolverSettings {
   int gs_local = 3;  ///< gs-local: a k×k grid of Ipopt starts (the paper's GS-SQP)
 };
 
+/// Largest k a scene may give: GS-1000 is 2,002,000 directions (~0.6 s for a
+/// tetrahedron pair), gs-local 10 is 100 Ipopt solves (~7 s); beyond, one pair
+/// takes minutes to hours (docs/scene-format.md).
+inline constexpr int kMaxGrid = 1000;
+inline constexpr int kMaxGsLocal = 10;
+
 }  // namespace pd
