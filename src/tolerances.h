@@ -66,4 +66,11 @@ inline constexpr double kSnapResidual = 1e-9;
 inline constexpr double kBaselineDepthAbs = 0.1;
 inline constexpr double kBaselineDepthRel = 0.05;
 
+/// Nonconvex parts (geometry/convexity.h, decompose.h). Absolute, not relative:
+/// the concavity tolerance is this fraction of the scene's tolerance (scene
+/// units). A part is convex, and a piece accepted, when its hull lies within it
+/// of the part; two hull excesses at a contact add up, so at 0.25 an exact fit
+/// scores at most half the tolerance and stays a false positive.
+inline constexpr double kConcavityFraction = 0.25;
+
 }  // namespace pd::tol

@@ -220,3 +220,23 @@ TEST(MeshIntersect, BadMeshesAreRejected) {
   bad.triangles(0, 3) = 99;
   EXPECT_THROW(PreparedMesh{bad}, std::invalid_argument);
 }
+
+TEST(MeshIntersect, OutsideDistanceAgreesWithTheRayTest) {
+  // The oriented fast path (side of the nearest face) and the ray test must
+  // agree everywhere, also on an inward-oriented copy (ray test only) and on
+  // the hollow box's inward cavity shell.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-25.0, 25.0);
+  for (const Mesh& m : {plate_with_hole(40, 6, 5, 16), flipped(plate_with_hole(40, 6, 5, 16)),
+                        translated(hollow_box({0, 0, 0}, {20, 20, 20}, 2), Vec3(-10, -10, -7))}) {
+    const PreparedMesh p(m);
+    int inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+      const Vec3 x(u(rng), u(rng), 0.4 * u(rng));
+      const double want = p.inside(x) ? 0.0 : p.distance(x);
+      inside += want == 0.0;
+      ASSERT_NEAR(p.outside_distance(x), want, 1e-12) << x.transpose();
+    }
+    EXPECT_GT(inside, 50);
+  }
+}

@@ -125,22 +125,69 @@ Mesh cylinder(const Vec2& centre, double radius, double z0, double z1, int segme
   return prism(circle(centre, radius, segments), z0, z1);
 }
 
-Mesh plate_with_hole(double side, double thickness, double hole_radius, int segments) {
-  if (segments % 8 != 0) throw std::invalid_argument("plate_with_hole: segments % 8 != 0");
-  const double h = side / 2;
-  std::vector<Vec2> outer(segments);
-  for (int i = 0; i < segments; ++i) {
-    const double a = 2.0 * M_PI * i / segments, c = std::cos(a), s = std::sin(a);
-    const double m = std::max(std::abs(c), std::abs(s));
-    // Central projection of the hole's direction onto the square; snap the
-    // coordinate on the square's side (and both at a corner) to ±h exactly.
-    auto coord = [&](double u) {
-      const double r = u / m;
-      return std::abs(r) > 1 - 1e-12 ? std::copysign(h, r) : h * r;
-    };
-    outer[i] = Vec2(coord(c), coord(s));
+namespace {
+
+// The square [-h, h]² sampled where the rays at angles 2πi/n meet it (n a
+// multiple of 8, so the corners are samples). Built from one table of tangents
+// by symmetry, so neighbouring squares share their edge samples bit for bit.
+std::vector<Vec2> square_outline(const Vec2& c, double h, int n) {
+  if (n % 8 != 0) throw std::invalid_argument("square outline: segments % 8 != 0");
+  auto tan_k = [&](int k) {  // tan(2πk/n) for |k| <= n/8, odd in k, ±1 at the ends
+    const int a = std::abs(k);
+    const double t = 8 * a == n ? 1.0 : std::tan(2.0 * M_PI * a / n);
+    return k < 0 ? -t : t;
+  };
+  std::vector<Vec2> out(n);
+  for (int i = 0; i < n; ++i) {
+    const int e = n / 8;
+    if (i <= e || i >= n - e)
+      out[i] = c + Vec2(h, h * tan_k(i <= e ? i : i - n));  // right edge
+    else if (i <= 3 * e)
+      out[i] = c + Vec2(h * tan_k(n / 4 - i), h);  // top
+    else if (i <= 5 * e)
+      out[i] = c + Vec2(-h, h * tan_k(n / 2 - i));  // left
+    else
+      out[i] = c + Vec2(h * tan_k(i - 3 * n / 4), -h);  // bottom
   }
-  return ring_prism(outer, circle({0, 0}, hole_radius, segments), 0.0, thickness);
+  return out;
+}
+
+}  // namespace
+
+Mesh plate_with_hole(double side, double thickness, double hole_radius, int segments) {
+  return ring_prism(square_outline({0, 0}, side / 2, segments),
+                    circle({0, 0}, hole_radius, segments), 0.0, thickness);
+}
+
+Mesh drilled_board(int nx, int ny, double pitch, double thickness, double hole_radius,
+                   int segments) {
+  Builder b;
+  const double h = pitch / 2;
+  const int n = segments;
+  for (int cx = 0; cx < nx; ++cx)
+    for (int cy = 0; cy < ny; ++cy) {
+      const Vec2 c(pitch * cx + h, pitch * cy + h);
+      const std::vector<Vec2> outer = square_outline(c, h, n), inner = circle(c, hole_radius, n);
+      std::vector<int> ob(n), ot(n), ib(n), it(n);
+      for (int i = 0; i < n; ++i) {
+        ob[i] = b.add({outer[i].x(), outer[i].y(), 0.0});
+        ot[i] = b.add({outer[i].x(), outer[i].y(), thickness});
+        ib[i] = b.add({inner[i].x(), inner[i].y(), 0.0});
+        it[i] = b.add({inner[i].x(), inner[i].y(), thickness});
+      }
+      for (int i = 0; i < n; ++i) {
+        const int j = (i + 1) % n;
+        b.quad(ot[i], ot[j], it[j], it[i]);
+        b.quad(ob[j], ob[i], ib[i], ib[j]);
+        b.quad(ib[j], ib[i], it[i], it[j]);
+        // Outer walls only on the board's boundary: inside, cells share edges.
+        const Vec2 mid = 0.5 * (outer[i] + outer[j]);
+        const bool boundary =
+            mid.x() == 0.0 || mid.y() == 0.0 || mid.x() == pitch * nx || mid.y() == pitch * ny;
+        if (boundary) b.quad(ob[i], ob[j], ot[j], ot[i]);
+      }
+    }
+  return b.mesh();
 }
 
 Mesh l_bracket(double a, double t, double width) {

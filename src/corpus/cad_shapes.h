@@ -32,6 +32,12 @@ Mesh cylinder(const Vec2& centre, double radius, double z0, double z1, int segme
 /// multiple of 8 (the square's corners are outline vertices at 45°, 135°, …).
 Mesh plate_with_hole(double side, double thickness, double hole_radius, int segments);
 
+/// A board [0, nx·pitch] × [0, ny·pitch] × [0, thickness] with a round hole
+/// (circle of hole_radius, `segments`, a multiple of 8) in the centre of each
+/// pitch × pitch cell, as one watertight mesh (cells share their edge vertices).
+Mesh drilled_board(int nx, int ny, double pitch, double thickness, double hole_radius,
+                   int segments);
+
 /// An L-bracket: the L { [0, a]×[0, t] ∪ [0, t]×[0, a] } in (x, y), extruded
 /// over z in [0, width]. Its inner corner is at (t, t).
 Mesh l_bracket(double a, double t, double width);

@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
 #include <CGAL/box_intersection_d.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,8 +48,9 @@ struct PreparedMesh::Impl {
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
   CGAL::Bbox_3 box;
-  Tree tree;            // over faces
-  bool parity = false;  // closed and has faces: points can be located
+  Tree tree;              // over faces
+  bool parity = false;    // closed and has faces: points can be located
+  bool oriented = false;  // closed, each edge as often u→v as v→u, outward (volume > 0)
 
   CGAL::Bounded_side side(const Point3& p) const {
     if (p.x() < box.xmin() || p.x() > box.xmax() || p.y() < box.ymin() || p.y() > box.ymax() ||
@@ -138,6 +140,25 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
         m.segments.emplace_back(r, p);
     }
   }
+  {
+    std::map<std::pair<int, int>, int> balance;
+    double volume = 0.0;
+    const Point3& o = m.points[0];
+    for (const Triangle3& f : m.faces) {
+      volume += CGAL::scalar_product(f[0] - o, CGAL::cross_product(f[1] - o, f[2] - o));
+    }
+    for (long t = 0; t < mesh.triangles.cols(); ++t) {
+      const int v[3] = {m.merged[mesh.triangles(0, t)], m.merged[mesh.triangles(1, t)],
+                        m.merged[mesh.triangles(2, t)]};
+      if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int a = v[k], b = v[(k + 1) % 3];
+        balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+      }
+    }
+    m.oriented = volume > 0 && std::all_of(balance.begin(), balance.end(),
+                                           [](const auto& e) { return e.second == 0; });
+  }
   m.closed = !edge_uses.empty() && std::all_of(edge_uses.begin(), edge_uses.end(),
                                                [](const auto& e) { return e.second % 2 == 0; });
   for (int v = 0; v < static_cast<int>(m.points.size()); ++v)
@@ -160,6 +181,46 @@ bool PreparedMesh::closed() const {
 }
 int PreparedMesh::shells() const {
   return static_cast<int>(impl_->shell_vertex.size());
+}
+
+double PreparedMesh::distance(const Vec3& v) const {
+  const Point3 p(v.x(), v.y(), v.z());
+  return std::sqrt(CGAL::squared_distance(p, impl_->closest(p)));
+}
+
+Vec3 PreparedMesh::closest_point(const Vec3& v) const {
+  const Point3 q = impl_->closest(Point3(v.x(), v.y(), v.z()));
+  return {q.x(), q.y(), q.z()};
+}
+
+double PreparedMesh::outside_distance(const Vec3& v) const {
+  const Impl& m = *impl_;
+  const Point3 p(v.x(), v.y(), v.z());
+  if (!m.parity) return distance(v);
+  const auto [q, face] = m.tree.closest_point_and_primitive(p);
+  const double d2 = CGAL::squared_distance(p, q);
+  bool decided = m.oriented && d2 > 0;
+  for (const Segment3& s : m.segments) decided = decided && CGAL::squared_distance(p, s) > d2;
+  if (decided) {
+    // Barycentric coordinates of q in the nearest face: strictly inside it?
+    const Triangle3& t = *face;
+    const Vec3 a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()),
+        c(t[2].x(), t[2].y(), t[2].z()), x(q.x(), q.y(), q.z());
+    const Vec3 e0 = b - a, e1 = c - a, e2 = x - a;
+    const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0),
+                 d21 = e2.dot(e1), den = d00 * d11 - d01 * d01;
+    const double l1 = (d11 * d20 - d01 * d21) / den, l2 = (d00 * d21 - d01 * d20) / den;
+    const double margin = 1e-6;
+    if (den > 0 && l1 > margin && l2 > margin && 1 - l1 - l2 > margin) {
+      const Vec3 n = e0.cross(e1);
+      return n.dot(Vec3(v - x)) > 0 ? std::sqrt(d2) : 0.0;
+    }
+  }
+  return m.side(p) == CGAL::ON_BOUNDED_SIDE ? 0.0 : distance(v);
+}
+
+bool PreparedMesh::inside(const Vec3& v) const {
+  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_BOUNDED_SIDE;
 }
 
 namespace {

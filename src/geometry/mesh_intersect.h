@@ -29,6 +29,18 @@ class PreparedMesh {
 
   bool closed() const;
   int shells() const;  ///< connected components (triangles sharing a vertex)
+  /// Distance from p to the surface (the nearest triangle), scene units.
+  double distance(const Vec3& p) const;
+  /// The point of the surface nearest to p.
+  Vec3 closest_point(const Vec3& p) const;
+  /// p strictly inside the closed mesh (even-odd rule); always false when open.
+  bool inside(const Vec3& p) const;
+  /// Distance from p to the part: 0 strictly inside a closed mesh, else the
+  /// distance to the surface. On consistently oriented closed meshes the side
+  /// of the nearest face decides when the nearest point is inside that face
+  /// (exact then: the segment to it crosses no other face); the ray test only
+  /// at edges and vertices, or when orientation is unknown.
+  double outside_distance(const Vec3& p) const;
 
   struct Impl;
   const Impl& impl() const { return *impl_; }

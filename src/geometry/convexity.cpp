@@ -1,0 +1,238 @@
+#include "geometry/convexity.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numeric>
+
+#include "geometry/hull.h"
+#include "geometry/mesh_intersect.h"
+
+namespace pd {
+
+namespace {
+
+struct Facets {
+  HullFacets f;
+  std::vector<double> area;
+  double volume = 0.0, total_area = 0.0;
+};
+
+// Facets of hull(p) with p already centred; false when p is flat or smaller.
+bool facets_of(const Points& p, Facets& out) {
+  if (p.cols() < 4 || !hull_facets(p, out.f)) return false;
+  for (std::size_t i = 0; i < out.f.triangles.size(); ++i) {
+    const auto& t = out.f.triangles[i];
+    const double a = 0.5 * (p.col(t[1]) - p.col(t[0])).cross(p.col(t[2]) - p.col(t[0])).norm();
+    out.area.push_back(a);
+    out.total_area += a;
+    out.volume += a * -out.f.offsets[i] / 3.0;  // pyramids from the origin (signed)
+  }
+  return out.volume > 0;
+}
+
+}  // namespace
+
+Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
+                         double missing_volume, const Points& surface, int samples) {
+  Concavity c;
+  Facets h;
+  // qhull works on centred coordinates; distances are taken back in the part's.
+  const Vec3 centre = points.rowwise().mean();
+  const Points p = points.colwise() - centre;
+  if (!facets_of(p, h)) return c;
+  auto consider = [&](const Vec3& x) {
+    const double d = part.outside_distance(x + centre);
+    if (d > c.value) c.value = d, c.witness = x + centre;
+  };
+
+  // A lattice on every facet: k subdivisions of its longest edge, spacing s
+  // chosen so that the lattices hold about `samples` points in all.
+  double sum_l2 = 0.0;
+  std::vector<double> longest(h.f.triangles.size());
+  for (std::size_t i = 0; i < h.f.triangles.size(); ++i) {
+    const auto& t = h.f.triangles[i];
+    longest[i] = std::max({(p.col(t[1]) - p.col(t[0])).norm(), (p.col(t[2]) - p.col(t[1])).norm(),
+                           (p.col(t[0]) - p.col(t[2])).norm()});
+    sum_l2 += longest[i] * longest[i];
+  }
+  const double s = std::sqrt(sum_l2 / (2.0 * std::max(samples, 1)));
+  for (std::size_t i = 0; i < h.f.triangles.size(); ++i) {
+    const auto& t = h.f.triangles[i];
+    const int k = std::max(1, static_cast<int>(std::ceil(longest[i] / s)));
+    const Vec3 a = p.col(t[0]), ab = p.col(t[1]) - a, ac = p.col(t[2]) - a;
+    for (int u = 0; u <= k; ++u)
+      for (int v = 0; u + v <= k; ++v) consider(a + (double(u) / k) * ab + (double(v) / k) * ac);
+    // Any point of a lattice cell is within its longest edge / √3 of a corner.
+    c.resolution = std::max(c.resolution, longest[i] / k / std::sqrt(3.0));
+  }
+
+  // Surface points projected onto their nearest facet (from inside the hull).
+  const Vec3 lo = p.rowwise().minCoeff(), hi = p.rowwise().maxCoeff();
+  for (long i = 0; i < surface.cols(); ++i) {
+    const Vec3 y = surface.col(i) - centre;
+    if ((y.array() < lo.array()).any() || (y.array() > hi.array()).any()) continue;
+    std::size_t near = 0;
+    double best = -INFINITY;
+    for (std::size_t f = 0; f < h.f.normals.size(); ++f) {
+      const double s = h.f.normals[f].dot(y) + h.f.offsets[f];
+      if (s > best) best = s, near = f;
+    }
+    if (best >= 0) continue;  // on the hull already
+    const Vec3 x = y - best * h.f.normals[near];
+    bool in = true;
+    for (std::size_t f = 0; f < h.f.normals.size() && in; ++f)
+      in = h.f.normals[f].dot(x) + h.f.offsets[f] <= 1e-12 * (hi - lo).norm();
+    if (in) consider(x);
+  }
+
+  // Enclosed voids: only a void holding a ball of radius void_radius matters,
+  // and that needs at least the ball's volume missing.
+  const double ball = 4.0 / 3.0 * M_PI * std::pow(void_radius, 3);
+  if (missing_volume < 0 || missing_volume > ball) {
+    const double g = std::cbrt((hi - lo).prod() / std::max(samples, 1));
+    if (g > 0) {
+      for (double x = lo.x() + g / 2; x < hi.x(); x += g)
+        for (double y = lo.y() + g / 2; y < hi.y(); y += g)
+          for (double z = lo.z() + g / 2; z < hi.z(); z += g) {
+            const Vec3 q(x, y, z);
+            bool in = true;
+            for (std::size_t i = 0; i < h.f.normals.size() && in; ++i)
+              in = h.f.normals[i].dot(q) + h.f.offsets[i] <= 0;
+            if (!in) continue;
+            // Cheap first: only a point farther than the best can raise it.
+            if (part.distance(q + centre) <= c.value) continue;
+            consider(q);
+          }
+      c.resolution = std::max(c.resolution, g * std::sqrt(3.0) / 2);
+    }
+  }
+  if (c.value > 0) c.closest = part.closest_point(c.witness);
+  return c;
+}
+
+double mesh_volume(const Mesh& m) {
+  if (m.vertices.cols() == 0) return 0.0;
+  const Vec3 centre = m.vertices.rowwise().mean();
+  double v = 0.0;
+  for (long t = 0; t < m.triangles.cols(); ++t) {
+    const Vec3 a = m.vertices.col(m.triangles(0, t)) - centre,
+               b = m.vertices.col(m.triangles(1, t)) - centre,
+               c = m.vertices.col(m.triangles(2, t)) - centre;
+    v += a.dot(b.cross(c));
+  }
+  return std::abs(v) / 6.0;
+}
+
+std::vector<std::vector<int>> shell_triangles(const Mesh& m) {
+  const long n = m.vertices.cols();
+  // Vertices with equal coordinates are one (STL repeats each corner).
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (int v = 0; v < n; ++v) {
+    auto [it, fresh] = first.emplace(
+        std::array<double, 3>{m.vertices(0, v), m.vertices(1, v), m.vertices(2, v)}, v);
+    if (!fresh) parent[root(v)] = root(it->second);
+  }
+  for (long t = 0; t < m.triangles.cols(); ++t) {
+    parent[root(m.triangles(1, t))] = root(m.triangles(0, t));
+    parent[root(m.triangles(2, t))] = root(m.triangles(0, t));
+  }
+  std::map<int, int> shell_of_root;
+  std::vector<std::vector<int>> tris;
+  for (long t = 0; t < m.triangles.cols(); ++t) {
+    const int r = root(m.triangles(0, t));
+    auto [it, fresh] = shell_of_root.emplace(r, static_cast<int>(tris.size()));
+    if (fresh) tris.emplace_back();
+    tris[it->second].push_back(static_cast<int>(t));
+  }
+  return tris;
+}
+
+std::vector<Mesh> mesh_shells(const Mesh& m) {
+  const std::vector<std::vector<int>> tris = shell_triangles(m);
+  std::vector<Mesh> shells;
+  for (const auto& ts : tris) {
+    std::map<int, int> local;
+    Mesh s;
+    s.triangles.resize(3, static_cast<long>(ts.size()));
+    std::vector<int> cols;
+    for (std::size_t i = 0; i < ts.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int v = m.triangles(k, ts[i]);
+        auto [it, fresh] = local.emplace(v, static_cast<int>(cols.size()));
+        if (fresh) cols.push_back(v);
+        s.triangles(k, static_cast<long>(i)) = it->second;
+      }
+    s.vertices.resize(3, static_cast<long>(cols.size()));
+    for (std::size_t i = 0; i < cols.size(); ++i) s.vertices.col(i) = m.vertices.col(cols[i]);
+    shells.push_back(std::move(s));
+  }
+  return shells;
+}
+
+namespace {
+
+// Shell i lies inside shell j (even-odd rule of shell j alone).
+bool nested(const std::vector<Mesh>& shells) {
+  std::vector<Vec3> lo, hi;
+  for (const Mesh& s : shells)
+    lo.push_back(s.vertices.rowwise().minCoeff()), hi.push_back(s.vertices.rowwise().maxCoeff());
+  for (std::size_t j = 0; j < shells.size(); ++j) {
+    std::unique_ptr<PreparedMesh> pj;
+    for (std::size_t i = 0; i < shells.size(); ++i) {
+      if (i == j || (lo[i].array() < lo[j].array()).any() || (hi[i].array() > hi[j].array()).any())
+        continue;
+      if (!pj) pj = std::make_unique<PreparedMesh>(shells[j]);
+      if (pj->inside(shells[i].vertices.col(0))) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Convexity measure_convexity(const Mesh& m, double concavity_tol) {
+  Convexity r;
+  const PreparedMesh part(m);
+  r.closed = part.closed();
+  r.shells = part.shells();
+  const Vec3 centre = m.vertices.rowwise().mean();
+  Facets h;
+  if (facets_of(m.vertices.colwise() - centre, h)) {
+    r.hull_volume = h.volume;
+    r.hull_area = h.total_area;
+  }
+  if (r.closed) {
+    r.volume = mesh_volume(m);
+    if (r.hull_area > 0) r.screen = std::max(0.0, r.hull_volume - r.volume) / r.hull_area;
+  }
+  r.concavity = hull_concavity(m.vertices, part, concavity_tol,
+                               r.closed ? r.hull_volume - r.volume : -1.0, m.vertices);
+  r.convex = r.concavity.value <= concavity_tol;
+  if (!r.convex && r.shells > 1) {
+    const std::vector<Mesh> shells = mesh_shells(m);
+    r.nested_shells = nested(shells);
+    r.shells_convex =
+        !r.nested_shells && std::all_of(shells.begin(), shells.end(), [&](const Mesh& s) {
+          const PreparedMesh ps(s);
+          Facets hs;
+          const Vec3 c = s.vertices.rowwise().mean();
+          const double hv = facets_of(s.vertices.colwise() - c, hs) ? hs.volume : 0.0;
+          return hull_concavity(s.vertices, ps, concavity_tol,
+                                ps.closed() ? hv - mesh_volume(s) : -1.0, s.vertices)
+                     .value <= concavity_tol;
+        });
+  }
+  return r;
+}
+
+}  // namespace pd

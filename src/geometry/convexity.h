@@ -1,0 +1,74 @@
+// How far a part is from its convex hull, measured once per mesh: the
+// pipeline keeps a part's hull as its single piece when it is convex within a
+// concavity tolerance, and decomposes it otherwise.
+#pragma once
+
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "geometry/types.h"
+
+namespace pd {
+
+class PreparedMesh;
+
+/// Estimated concavity of a point set's hull against a part: the largest
+/// distance from a point of hull(points) to the part (its closed solid, or its
+/// surface when open), in scene units. Sampled: a lattice on the hull's facets
+/// (about `samples` points in all), the projections of `surface` points (the
+/// part's vertices there) onto their nearest hull facet (so a shallow notch
+/// between lattice points is still measured at its deepest vertex), and, when
+/// the hull encloses more than a ball of radius `void_radius` of volume the
+/// part does not fill, a grid inside the hull (enclosed voids). The true value
+/// can exceed the estimate by about `resolution` (the lattice spacing), never
+/// fall below it. `witness` is the sample realising it, `closest` its nearest
+/// point on the part.
+struct Concavity {
+  double value = 0.0;
+  double resolution = 0.0;
+  Vec3 witness = Vec3::Zero(), closest = Vec3::Zero();
+};
+/// `points` need at least 4 affinely independent points (else value 0: a flat
+/// or smaller hull lies on the part). `missing_volume` is hull volume − the
+/// part's volume inside the hull, or a negative value when unknown (then the
+/// interior grid always runs).
+Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
+                         double missing_volume, const Points& surface, int samples = 4000);
+
+/// A mesh's nonconvexity (scene units throughout).
+struct Convexity {
+  bool closed = false;       ///< every edge shared by an even number of triangles
+  int shells = 0;            ///< connected components
+  double volume = 0.0;       ///< enclosed volume (closed meshes; 0 when open)
+  double hull_volume = 0.0;  ///< volume of the convex hull of the vertices
+  double hull_area = 0.0;
+  /// (hull_volume − volume) / hull_area: the mean thickness of what the hull
+  /// adds to the part (a cheap screen; 0 for open meshes, where volume is unknown).
+  double screen = 0.0;
+  Concavity concavity;  ///< of the whole mesh's hull against the mesh
+  bool convex = false;  ///< concavity.value <= the tolerance: the hull is the part
+  /// More than one shell, none inside another, each convex within the
+  /// tolerance: the pieces are the shells (a part in the gap between two
+  /// shells is not in the mesh's material, but is in its hull).
+  bool shells_convex = false;
+  /// Some shell lies inside another (a cavity): measured only when not convex.
+  bool nested_shells = false;
+};
+
+/// Measures m once. A convex (within concavity_tol) single-shell mesh is its
+/// own piece. Open meshes: the concavity is against the surface, volume 0.
+/// Coordinates are centred before any arithmetic (parts sit at x ≈ 20,000 mm).
+Convexity measure_convexity(const Mesh& m, double concavity_tol);
+
+/// The connected components of m (triangles sharing a vertex; vertices with
+/// equal coordinates are one), each with its own compact vertex list.
+std::vector<Mesh> mesh_shells(const Mesh& m);
+
+/// The triangle columns of each connected component of m, in column order.
+std::vector<std::vector<int>> shell_triangles(const Mesh& m);
+
+/// Enclosed volume of a closed, consistently oriented mesh (absolute value of
+/// the divergence sum, computed about the vertices' centre).
+double mesh_volume(const Mesh& m);
+
+}  // namespace pd

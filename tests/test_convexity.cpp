@@ -1,0 +1,106 @@
+// Nonconvexity measures (geometry/convexity.h) against values known by construction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "corpus/cad_shapes.h"
+#include "geometry/convexity.h"
+
+using namespace pd;
+using namespace pd::shapes;
+
+namespace {
+const Vec3 kFar(20000.0, -3000.0, 500.0);
+
+// The estimate never exceeds the true concavity and misses it by at most its resolution.
+void expect_concavity(const Concavity& c, double truth) {
+  EXPECT_LE(c.value, truth + 1e-9);
+  EXPECT_GE(c.value, truth - c.resolution - 1e-9);
+  EXPECT_LT(c.resolution, 0.25 * truth);  // the estimate says something
+}
+}  // namespace
+
+TEST(Convexity, BoxIsConvex) {
+  const Convexity c = measure_convexity(translated(box({0, 0, 0}, {10, 20, 30}), kFar), 1e-6);
+  EXPECT_TRUE(c.closed);
+  EXPECT_EQ(c.shells, 1);
+  EXPECT_NEAR(c.volume, 6000, 1e-7);
+  EXPECT_NEAR(c.hull_volume, 6000, 1e-7);
+  EXPECT_NEAR(c.hull_area, 2 * (200 + 300 + 600), 1e-7);
+  EXPECT_NEAR(c.screen, 0.0, 1e-12);
+  EXPECT_LE(c.concavity.value, 1e-9);
+  EXPECT_TRUE(c.convex);
+}
+
+TEST(Convexity, Float32CylinderFarAwayIsConvexWithinTheTolerance) {
+  // float32 at x ≈ 20,000 moves vertices by up to ~0.001: not exactly convex.
+  const Mesh cyl = float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFar));
+  const Convexity c = measure_convexity(cyl, 0.01);
+  EXPECT_TRUE(c.convex);
+  EXPECT_LT(c.concavity.value, 0.004);
+  EXPECT_NEAR(c.volume, 64 * 0.5 * 25 * std::sin(2 * M_PI / 64) * 30, 0.5);
+}
+
+TEST(Convexity, PlateWithHoleConcavityIsTheHoleInradius) {
+  for (int segments : {16, 64}) {
+    const Convexity c = measure_convexity(plate_with_hole(40, 6, 5, segments), 0.01);
+    EXPECT_TRUE(c.closed);
+    EXPECT_FALSE(c.convex);
+    expect_concavity(c.concavity, 5 * std::cos(M_PI / segments));
+    const double hole = 0.5 * segments * 25 * std::sin(2 * M_PI / segments) * 6;
+    EXPECT_NEAR(c.hull_volume - c.volume, hole, 1e-9);
+    EXPECT_NEAR(c.screen, hole / c.hull_area, 1e-12);
+  }
+}
+
+TEST(Convexity, LBracketConcavityIsTheCornerGap) {
+  // The hull fills the triangle (5,5)-(40,5)-(5,40); its point farthest from
+  // the L is (22.5, 22.5) on the hull's slanted face, 17.5 from both legs.
+  const Convexity c = measure_convexity(float32(translated(l_bracket(40, 5, 20), kFar)), 0.01);
+  EXPECT_FALSE(c.convex);
+  expect_concavity(c.concavity, 17.5);
+  EXPECT_NEAR((c.concavity.witness - c.concavity.closest).norm(), c.concavity.value, 1e-9);
+}
+
+TEST(Convexity, HollowBoxCavityIsFoundByTheInteriorGrid) {
+  // The hull's surface lies on the outer shell; only the cavity's centre is
+  // far (4) from material.
+  const Convexity c = measure_convexity(hollow_box({0, 0, 0}, {10, 10, 10}, 1), 0.01);
+  EXPECT_EQ(c.shells, 2);
+  EXPECT_NEAR(c.volume, 1000 - 512, 1e-9);
+  EXPECT_FALSE(c.convex);
+  expect_concavity(c.concavity, 4.0);
+  EXPECT_FALSE(c.shells_convex);  // nested shells are one solid with a void
+}
+
+TEST(Convexity, SeparateConvexShellsArePieces) {
+  const Mesh two = joined({box({0, 0, 0}, {1, 1, 1}), cylinder({5, 0}, 1, 0, 2, 32)});
+  const Convexity c = measure_convexity(two, 0.01);
+  EXPECT_EQ(c.shells, 2);
+  EXPECT_FALSE(c.convex);
+  EXPECT_TRUE(c.shells_convex);
+  const std::vector<Mesh> s = mesh_shells(two);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].vertices.cols(), 8);
+  EXPECT_EQ(s[1].vertices.cols(), 64);
+  // One convex shell and one L: not pieces as they are.
+  EXPECT_FALSE(measure_convexity(joined({box({0, 0, 0}, {1, 1, 1}), l_bracket(4, 1, 1)}), 0.01)
+                   .shells_convex);
+}
+
+TEST(Convexity, OpenMeshHasNoVolume) {
+  Mesh open = box({0, 0, 0}, {10, 10, 10});
+  open.triangles.conservativeResize(3, 10);
+  const Convexity c = measure_convexity(open, 0.01);
+  EXPECT_FALSE(c.closed);
+  EXPECT_EQ(c.volume, 0.0);
+  EXPECT_EQ(c.screen, 0.0);
+  // Against the surface: the open side's centre is 5 from the walls.
+  expect_concavity(c.concavity, 5.0);
+}
+
+TEST(Convexity, MeshVolumeIsTranslationInvariant) {
+  const Mesh b = hollow_box({0, 0, 0}, {3, 4, 5}, 0.5);
+  EXPECT_NEAR(mesh_volume(translated(b, kFar)), mesh_volume(b), 1e-9);
+  EXPECT_NEAR(mesh_volume(b), 60 - 2 * 3 * 4, 1e-12);
+}
