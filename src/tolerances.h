@@ -72,5 +72,11 @@ inline constexpr double kBaselineDepthRel = 0.05;
 /// of the part; two hull excesses at a contact add up, so at 0.25 an exact fit
 /// scores at most half the tolerance and stays a false positive.
 inline constexpr double kConcavityFraction = 0.25;
+/// Limits of one decomposition (beyond them: not complete, pairs unconfirmed),
+/// and the samples of a piece's concavity estimate (a fifth of them to rank
+/// candidate cuts).
+inline constexpr int kDecomposeMaxPieces = 256;
+inline constexpr int kDecomposeMaxDepth = 24;
+inline constexpr int kDecomposeSamples = 1000;
 
 }  // namespace pd::tol

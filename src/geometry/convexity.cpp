@@ -81,8 +81,9 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
       const double s = h.f.normals[f].dot(y) + h.f.offsets[f];
       if (s > best) best = s, near = f;
     }
-    if (best >= 0) continue;  // on the hull already
-    const Vec3 x = y - best * h.f.normals[near];
+    const double on = 1e-12 * (hi - lo).norm();
+    if (best > on) continue;  // outside this hull
+    const Vec3 x = best >= -on ? y : Vec3(y - best * h.f.normals[near]);
     bool in = true;
     for (std::size_t f = 0; f < h.f.normals.size() && in; ++f)
       in = h.f.normals[f].dot(x) + h.f.offsets[f] <= 1e-12 * (hi - lo).norm();
