@@ -137,7 +137,7 @@ const std::pair<int, int> kPaperProblems[14] = {{8, 8},  {6, 9},  {14, 5}, {8, 1
                                                 {8, 11}, {10, 6}, {10, 8}, {103, 93}};
 
 testgen::PairCase paper_problem(SphereSampler& r, int k) {
-  const auto [np, nq] = kPaperProblems[k];
+  const int np = kPaperProblems[k].first, nq = kPaperProblems[k].second;  // captured below
   const double scale = k == 13 ? 1000.0 : 1.0;  // problem 14: coordinates in the thousands
   return testgen::overlapping(r, [&](SphereSampler& g) {
     const double ra = scale * (10 + 40 * g.uniform()), rb = scale * (10 + 40 * g.uniform());

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The test suite under AddressSanitizer + UBSan (halting on the first error),
+# with the fuzz targets built for libFuzzer and run briefly: a clang build in
+# build-asan/ (docs/reliability.md, "Sanitizers"). Called by scripts/test.sh;
+# arguments go to ctest (e.g. -R fuzz_ for the fuzz tests only).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if ! command -v clang++ >/dev/null 2>&1; then
+  echo "sanitize: SKIPPED: clang++ not found (scripts/setup.sh installs clang and libclang-rt-14-dev)" >&2
+  exit 0
+fi
+start=$(date +%s)
+JOBS="$(nproc 2>/dev/null || echo 2)"
+BUILD="$ROOT/build-asan"
+# -O1 compiles faster than -O3 and keeps ASan's reports exact; line tables
+# give the reports file:line.
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only -DNDEBUG" \
+  -DPDCHECK_SANITIZE=ON -DPDCHECK_FUZZ=ON >/dev/null
+cmake --build "$BUILD" -j "$JOBS" >&2
+built=$(date +%s)
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$ROOT/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+(cd "$BUILD" && ctest --output-on-failure -j "$JOBS" "$@")
+end=$(date +%s)
+echo "sanitize: build $((built - start)) s, tests $((end - built)) s" >&2
