@@ -44,7 +44,10 @@ case "$mode" in
     rc=$?
     set -e
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
-    echo "fuzz $target: ${execs:-?} executions in ${seconds}s max, exit $rc; log $log"
+    # -fork=N prints no final stats: its last status line counts every job's executions.
+    [ -n "$execs" ] || execs=$(grep -o "#[0-9]*: cov:" "$log" | tr -dc "0-9\n" | sort -n | tail -n 1)
+    crashes=$(ls "$work/artifacts" | wc -l)
+    echo "fuzz $target: ${execs:-?} executions in ${seconds}s max, exit $rc, $crashes files in $work/artifacts; log $log"
     if [ $rc -ne 0 ]; then
       grep -E "ERROR|SUMMARY|oracle failed|Test unit written|timeout" "$log" | head -n 20 >&2
       exit 1
