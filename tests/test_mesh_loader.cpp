@@ -236,7 +236,7 @@ TEST(MeshPaths, WhatIsNotAFileIsNamed) {
       {d + "missing.stl", "no such file"},
   };
   for (const auto& [path, says] : cases) {
-    const std::string e = error_of([&] { load_meshes(path, false); });
+    const std::string e = error_of([&, p = path] { load_meshes(p, false); });
     EXPECT_NE(e.find(says), std::string::npos) << e;
     EXPECT_NE(e.find(path), std::string::npos) << e;
   }
