@@ -179,3 +179,26 @@ TEST(CliNumbers, DuplicateKeysAreRefusedWhateverTheJobs) {
     EXPECT_EQ(r.err, first);
   }
 }
+
+// A 1-unit part crossing the face of a part 1e30 units large by 0.5: in double
+// precision the overlap is below any resolvable depth, and the pair read
+// `separated`, depth 0, with no sign of it. Now the pair says so; a pair whose
+// tolerance is resolvable carries no warning.
+TEST(CliNumbers, ADepthBelowTheResolvableScaleIsFlagged) {
+  const std::string scene = write_temp("num_deep.json", R"({"tolerance": 0.1, "parts": [
+    {"id": "big", "vertices": [[-2e30,-1e30,-1e30],[0,-1e30,-1e30],[-2e30,1e30,-1e30],
+      [0,1e30,-1e30],[-2e30,-1e30,1e30],[0,-1e30,1e30],[-2e30,1e30,1e30],[0,1e30,1e30]]},
+    {"id": "small", "vertices": [[-0.5,0,0],[1,0,0],[0,1,0],[0,0,1]]}]})");
+  for (const char* method : {"mlsl", "exact"}) {
+    const CliRun r = pdcheck(scene + " --quiet -j 1 --method " + method);
+    ASSERT_EQ(r.signal, 0) << r.err;
+    const json p = json::parse(r.out)["pairs"][0];
+    ASSERT_TRUE(p.contains("warnings")) << method << ": " << p.dump();
+    EXPECT_NE(p["warnings"][0].get<std::string>().find("below the resolvable scale"),
+              std::string::npos)
+        << p.dump();
+  }
+  const std::string unit = write_temp("num_unit2.json", overlapping_pair(""));
+  const CliRun r = pdcheck(unit + " --quiet -j 1");
+  EXPECT_FALSE(json::parse(r.out)["pairs"][0].contains("warnings")) << r.out;
+}

@@ -65,6 +65,7 @@ PairResult with_every_double(double x) {
   m.t_min_distance = x;
   m.series = {{x, x}, {1.0, x}};
   r.motion = m;
+  r.warnings = {"first", "second"};
   return r;
 }
 
@@ -97,6 +98,7 @@ TEST(PairResultCodec, KeepsEveryDoubleBitForBit) {
     ASSERT_EQ(r.motion->series.size(), 2u);
     EXPECT_EQ(bits(r.motion->series[0].first), bits(x));
     EXPECT_EQ(bits(r.motion->series[1].second), bits(x));
+    EXPECT_EQ(r.warnings, (std::vector<std::string>{"first", "second"}));
   }
 }
 

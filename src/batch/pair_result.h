@@ -37,6 +37,7 @@ struct PairResult {
   std::string error;
   std::optional<double> clearance_min;  ///< the required clearance, when checked
   std::optional<MotionTrace> motion;    ///< when a part of the pair moves
+  std::vector<std::string> warnings;    ///< e.g. a tolerance below the pair's resolution
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

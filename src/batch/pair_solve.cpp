@@ -2,6 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "batch/motion_sweep.h"
@@ -88,6 +91,21 @@ double rounding_scale(const Aabb& box) {
   return box.hi.cwiseAbs().cwiseMax(box.lo.cwiseAbs()).maxCoeff() + diag;
 }
 
+// Depths up to kTouch of the pair's rounding scale cannot be told from contact
+// (a 1-unit part against one 1e30 units large): when the tolerance is below
+// that, a shallow interference reads as separated or a false positive, and the
+// report must say the depth was not resolvable.
+std::optional<std::string> unresolved_tolerance(double tolerance, double size, Status status) {
+  const double resolution = tol::kTouch * size;
+  if (!(tolerance < resolution) || status == Status::kInterference) return std::nullopt;
+  std::ostringstream w;
+  w << std::setprecision(3) << "depth below the resolvable scale: the pair's coordinates span "
+    << size << ", so depths up to " << resolution
+    << " (1e-11 of that) cannot be told from contact, and the tolerance " << tolerance
+    << " is smaller: an interference this shallow is not seen";
+  return w.str();
+}
+
 // The first number of a result that is not finite, or nullptr: such a result
 // comes from arithmetic that overflowed and must not pass as a finding.
 const char* non_finite_field(const PairResult& r) {
@@ -108,7 +126,9 @@ const char* non_finite_field(const PairResult& r) {
 
 }  // namespace
 
-double pair_size(const Part& a, const Part& b) { return rounding_scale(a.box.merged(b.box)); }
+double pair_size(const Part& a, const Part& b) {
+  return rounding_scale(a.box.merged(b.box));
+}
 
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
                            double tolerance, IpoptLocalSolver& ipopt, const PairChecks& checks) {
@@ -145,6 +165,7 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
           "reaches beyond 1e307)");
     r.status = classify(r.depth, tolerance, size);
     r.margin = tolerance - r.depth;
+    if (const auto w = unresolved_tolerance(tolerance, size, r.status)) r.warnings.push_back(*w);
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
       if (!checks.motion) static_distance(a, b, s, ipopt, r);

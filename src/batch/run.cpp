@@ -36,6 +36,7 @@ std::string encode_pair_result(const PairResult& r) {
               r.stats.mlsl_iterations, int(r.stats.stop_reason)}}};
   if (r.distance) j["x"] = *r.distance;
   if (r.clearance_min) j["c"] = *r.clearance_min;
+  if (!r.warnings.empty()) j["w"] = r.warnings;
   if (r.motion) {
     const MotionTrace& m = *r.motion;
     j["mo"] = {{"n", m.steps},
@@ -73,6 +74,7 @@ PairResult decode_pair_result(const std::string& s) {
   r.stats = {st[0], st[1], st[2], st[3], st[4], st[5], st[6], StopReason(st[7].get<int>())};
   if (j.contains("x")) r.distance = j["x"].get<double>();
   if (j.contains("c")) r.clearance_min = j["c"].get<double>();
+  if (j.contains("w")) r.warnings = j["w"].get<std::vector<std::string>>();
   if (j.contains("mo")) {
     const auto& mo = j["mo"];
     MotionTrace m;

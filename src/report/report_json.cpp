@@ -79,6 +79,7 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
   }
   j["method"] = r.method;
   if (!r.fallback.empty()) j["fallback"] = r.fallback;
+  if (!r.warnings.empty()) j["warnings"] = r.warnings;
   j["stats"] = {{"local_solves", r.stats.local_solves},
                 {"distinct_optima", r.stats.distinct_optima},
                 {"alpha_evaluations", r.stats.alpha_evaluations},
