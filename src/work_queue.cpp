@@ -1,16 +1,22 @@
 #include "work_queue.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <climits>
 #include <cstdint>
 #include <cstring>
 #include <deque>
 #include <stdexcept>
+
+#include "worker_limit.h"
+#include "termination.h"
 
 namespace pd {
 
@@ -65,12 +71,28 @@ struct Worker {
   Clock::time_point started;  ///< when the front task began (its answer clock)
 };
 
+/// Starts a worker; throws std::runtime_error (with errno's reason) if it cannot.
 Worker spawn(const TaskFn& task, const std::vector<Worker>& others) {
   int down[2], up[2];
-  if (pipe(down) != 0 || pipe(up) != 0) throw std::runtime_error("pipe() failed");
+  if (pipe2(down, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("pipe() failed: ") + std::strerror(errno));
+  if (pipe2(up, O_CLOEXEC) != 0) {
+    const int err = errno;
+    close(down[0]);
+    close(down[1]);
+    throw std::runtime_error(std::string("pipe() failed: ") + std::strerror(err));
+  }
+  // Signals blocked until the child is tracked: a termination signal finds
+  // every worker, and a child never runs the parent's handler.
+  const TerminationBlocked blocked;
   const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork() failed");
+  if (pid < 0) {
+    const int err = errno;
+    for (int fd : {down[0], down[1], up[0], up[1]}) close(fd);
+    throw std::runtime_error(std::string("fork() failed: ") + std::strerror(err));
+  }
   if (pid == 0) {
+    blocked.reset_in_child();
     close(down[1]);
     close(up[0]);
     for (const Worker& w : others) {  // a worker holds only its own pipes
@@ -79,6 +101,7 @@ Worker spawn(const TaskFn& task, const std::vector<Worker>& others) {
     }
     worker_loop(down[0], up[1], task);
   }
+  track_child(pid);
   close(down[0]);
   close(up[1]);
   Worker w;
@@ -96,7 +119,11 @@ std::string reap(Worker& w, bool kill_it, std::deque<size_t>& retry) {
   close(w.from);
   int status = 0;
   std::string why = "worker exited";
-  if (waitpid(w.pid, &status, 0) == w.pid) {
+  pid_t r;
+  while ((r = waitpid(w.pid, &status, 0)) < 0 && errno == EINTR) {
+  }
+  untrack_child(w.pid);
+  if (r == w.pid) {
     if (WIFSIGNALED(status))
       why = std::string("worker crashed (") + strsignal(WTERMSIG(status)) + ")";
     else if (WIFEXITED(status))
@@ -109,6 +136,11 @@ std::string reap(Worker& w, bool kill_it, std::deque<size_t>& retry) {
 
 }  // namespace
 
+int poll_timeout_ms(double seconds_left) {
+  if (!(seconds_left > 0)) return 0;
+  return static_cast<int>(std::min(seconds_left * 1000.0 + 1.0, static_cast<double>(INT_MAX)));
+}
+
 void run_work_queue(const std::vector<size_t>& order, const QueueOptions& options,
                     const TaskFn& task, const DoneFn& done) {
   if (order.empty()) return;
@@ -118,9 +150,33 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
   struct sigaction previous {};
   sigaction(SIGPIPE, &ignore, &previous);
 
-  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(order.size())));
+  int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(order.size())));
+  std::string why;
+  jobs = workers_within_fd_limit(jobs, why);
   std::vector<Worker> workers;
-  for (int k = 0; k < jobs; ++k) workers.push_back(spawn(task, workers));
+  // Ends every worker if this function is left by an exception (a `done`
+  // that throws, e.g. on a closed output): none is left solving on its own.
+  struct Cleanup {
+    std::vector<Worker>& workers;
+    const struct sigaction& previous;
+    ~Cleanup() {
+      std::deque<size_t> none;
+      for (Worker& w : workers)
+        if (w.pid >= 0) reap(w, true, none);
+      sigaction(SIGPIPE, &previous, nullptr);
+    }
+  } cleanup{workers, previous};
+  for (int k = 0; k < jobs; ++k) {
+    try {
+      workers.push_back(spawn(task, workers));
+    } catch (const std::runtime_error& e) {
+      if (workers.empty()) throw;  // not even one: the caller must know
+      why = "could start only " + std::to_string(workers.size()) + " of " + std::to_string(jobs) +
+            " worker processes (" + e.what() + ")";
+      break;
+    }
+  }
+  if (!why.empty() && options.warn) options.warn(why);
   size_t next = 0, finished = 0;
   std::deque<size_t> retry;  // sent to a worker that died before starting them
   auto pending = [&] { return !retry.empty() || next < order.size(); };
@@ -157,7 +213,7 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
       if (options.task_timeout > 0) {
         const double left =
             options.task_timeout - std::chrono::duration<double>(now - workers[k].started).count();
-        const int ms = std::max(0, static_cast<int>(left * 1000.0) + 1);
+        const int ms = poll_timeout_ms(left);
         wait_ms = wait_ms < 0 ? ms : std::min(wait_ms, ms);
       }
     }
@@ -201,7 +257,6 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
   std::deque<size_t> none;
   for (Worker& w : workers)
     if (w.pid >= 0) reap(w, false, none);  // closing its input ends the worker's loop
-  sigaction(SIGPIPE, &previous, nullptr);
 }
 
 }  // namespace pd

@@ -22,7 +22,7 @@ Ended run(size_t n, int jobs, double timeout, const TaskFn& task) {
   std::vector<size_t> order(n);
   for (size_t k = 0; k < n; ++k) order[k] = n - 1 - k;  // not in index order
   Ended e;
-  run_work_queue(order, {jobs, timeout}, task, [&](size_t k, bool ok, const std::string& s) {
+  run_work_queue(order, {jobs, timeout, {}}, task, [&](size_t k, bool ok, const std::string& s) {
     ++e.calls;
     (ok ? e.payload : e.reason)[k] = s;
   });

@@ -1,5 +1,6 @@
 // pdcheck: batch interference checking with penetration depths.
 // The CLI only parses options, calls the library and sets the exit code.
+#include <signal.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -8,20 +9,32 @@
 #include <iostream>
 #include <iterator>
 #include <mutex>
+#include <optional>
+#include <sstream>
 
 #include "batch/run.h"
-#include "report/atomic_write.h"
+#include "printable.h"
 #include "report/fingerprint.h"
+#include "report/output_file.h"
 #include "report/report_json.h"
 #include "report/review_json.h"
 #include "report/review_text.h"
 #include "report/writer.h"
 #include "scene/scene.h"
 #include "scene/units.h"
+#include "termination.h"
 
 namespace {
 
 constexpr int kExitUsage = 2;
+// The report could not be delivered (path, full disk, closed pipe): like bad
+// usage, the run's findings are not known to the caller.
+constexpr int kExitOutput = 2;
+
+// One line on stderr; input text in it (ids, paths) cannot forge another line.
+void say(const char* level, const std::string& message) {
+  std::cerr << "pdcheck: " << level << ": " << pd::printable(message) << "\n";
+}
 
 const char* kExamples = R"(Examples:
   pdcheck scene.json                      check a scene, JSON report on stdout
@@ -63,7 +76,10 @@ int main(int argc, char** argv) {
                  "length unit of the scene and the report: mm, cm, m, in, ft");
   app.add_option("--method", method_arg,
                  "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
-  app.add_option("--seed", seed, "random seed of the stochastic methods (default 1)");
+  app.add_option("--seed", seed, "random seed of the stochastic methods (default 1)")
+      ->check(CLI::Validator(
+          [](std::string& v) { return std::string(v.rfind("-", 0) == 0 ? "must be >= 0" : ""); },
+          "UINT"));
   app.add_option("-o,--output", output,
                  "write the report to this file (atomically) instead of stdout");
   std::vector<std::string> format_names;
@@ -112,9 +128,30 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : kExitUsage;
   }
+  // Write errors are reported as errors (EPIPE), not a silent death; a
+  // terminated run takes its workers and temporary files with it.
+  signal(SIGPIPE, SIG_IGN);
+  pd::install_termination_handlers();
+  if (!std::isfinite(pair_timeout)) {
+    say("error", "--pair-timeout: must be a finite number of seconds (0 = none)");
+    return kExitUsage;
+  }
+  // Every output path is checked before the run: a bad one fails now, not
+  // after hours of solving.
+  std::optional<pd::OutputFile> out_file, junit_file, sarif_file, suppressions_file;
+  try {
+    if (app.count("--output")) out_file = pd::check_output_file("-o", output);
+    if (app.count("--junit")) junit_file = pd::check_output_file("--junit", junit);
+    if (app.count("--sarif")) sarif_file = pd::check_output_file("--sarif", sarif);
+    if (app.count("--write-suppressions"))
+      suppressions_file = pd::check_output_file("--write-suppressions", write_suppressions);
+  } catch (const pd::OutputError& e) {
+    say("error", e.what());
+    return kExitOutput;
+  }
 
   if (!(load_timeout >= 0 && load_timeout <= 1e6)) {
-    std::cerr << "pdcheck: error: --load-timeout: must be a number of seconds from 0 to 1e6\n";
+    say("error", "--load-timeout: must be a number of seconds from 0 to 1e6");
     return kExitUsage;
   }
   if (jobs <= 0) jobs = static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
@@ -153,7 +190,7 @@ int main(int argc, char** argv) {
     }
     if (app.count("--seed")) solver.seed = seed;
   } catch (const pd::SceneError& e) {
-    std::cerr << "pdcheck: error: " << e.what() << "\n";
+    say("error", e.what());
     return kExitUsage;
   }
 
@@ -165,12 +202,12 @@ int main(int argc, char** argv) {
     if (!baseline_path.empty()) baseline = pd::load_baseline(baseline_path);
     if (!suppressions_path.empty()) suppressions = pd::load_suppressions(suppressions_path);
   } catch (const pd::ReportInputError& e) {
-    std::cerr << "pdcheck: error: " << e.what() << "\n";
+    say("error", e.what());
     return kExitUsage;
   }
   if (!fail_on_arg.empty()) review_opt.fail_on = pd::parse_fail_on(fail_on_arg);
   if (review_opt.fail_on == pd::FailOn::kNew && !baseline) {
-    std::cerr << "pdcheck: error: --fail-on new needs --baseline (a previous report)\n";
+    say("error", "--fail-on new needs --baseline (a previous report)");
     return kExitUsage;
   }
   review_opt.baseline = baseline ? &*baseline : nullptr;
@@ -192,16 +229,24 @@ int main(int argc, char** argv) {
   opt.pair_timeout = pair_timeout;
   opt.load_timeout = load_timeout;
   opt.quiet = quiet;
+  if (!quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
   const bool jsonl = format == "jsonl";
-  if (jsonl && output.empty()) {
+  if (jsonl && !out_file) {
+    // A failed write (the reader gone) throws: the run stops and its workers end.
     opt.on_pair = [&review_opt](const pd::PairResult& r, const std::vector<pd::Part>& parts) {
       auto j = pd::pair_json(r, parts);
       // The bar does not show in a pair line: any will do before the run's end.
       pd::add_pair_review(j, pd::review_pair(r, parts, review_opt, pd::FailOn::kNone));
-      std::cout << j.dump() << "\n" << std::flush;
+      pd::write_stdout(j.dump() + "\n");
     };
   }
-  const pd::RunResult result = pd::run_scene(scene, opt);
+  pd::RunResult result;
+  try {
+    result = pd::run_scene(scene, opt);
+  } catch (const pd::OutputError& e) {
+    say("error", std::string(e.what()) + "; the run stopped");
+    return kExitOutput;
+  }
   const pd::Summary summary = pd::summarize(result);
   pd::ReportContext ctx{scene.path, scene.units.value_or("mm"), *scene.tolerance, solver,
                         load_seconds};
@@ -210,30 +255,31 @@ int main(int argc, char** argv) {
   const pd::ReportInput report{ctx, result, review, review_opt};
 
   // Streamed lines are out already; a file gets the same lines in report order.
-  const std::string text = jsonl && output.empty() ? pd::jsonl_tail(report) + "\n"
-                                                   : pd::find_report_format(format)->render(report);
+  const std::string text = jsonl && !out_file ? pd::jsonl_tail(report) + "\n"
+                                              : pd::find_report_format(format)->render(report);
   try {
-    if (output.empty())
-      std::cout << text << std::flush;
+    if (out_file)
+      pd::write_output_file(*out_file, text);
     else
-      pd::write_file_atomically(output, text);
-    if (!junit.empty()) pd::write_file_atomically(junit, pd::render_junit(report));
-    if (!sarif.empty()) pd::write_file_atomically(sarif, pd::render_sarif(report));
-    if (!write_suppressions.empty())
-      pd::write_file_atomically(write_suppressions,
-                                pd::suppressions_to_write(report, review_opt.today));
-  } catch (const std::exception& e) {
-    std::cerr << "pdcheck: error: " << e.what() << "\n";
-    return kExitUsage;
+      pd::write_stdout(text);
+    if (junit_file) pd::write_output_file(*junit_file, pd::render_junit(report));
+    if (sarif_file) pd::write_output_file(*sarif_file, pd::render_sarif(report));
+    if (suppressions_file)
+      pd::write_output_file(*suppressions_file,
+                            pd::suppressions_to_write(report, review_opt.today));
+  } catch (const pd::OutputError& e) {
+    say("error", e.what());
+    return kExitOutput;
   }
   for (const auto& p : result.parts) {
     if (!quiet)
-      for (const auto& w : p.warnings)
-        std::cerr << "pdcheck: warning: part \"" << p.id << "\": " << w << "\n";
-    if (p.error) std::cerr << "pdcheck: error: part \"" << p.id << "\": " << *p.error << "\n";
+      for (const auto& w : p.warnings) say("warning", "part \"" + p.id + "\": " + w);
+    if (p.error) say("error", "part \"" + p.id + "\": " + *p.error);
   }
   if (!quiet) {
-    std::cerr << pd::review_lines(report);
+    std::istringstream review_text(pd::review_lines(report));  // ids in it: escaped line by line
+    for (std::string line; std::getline(review_text, line);)
+      std::cerr << pd::printable(line) << "\n";
     std::cerr << pd::summary_line(summary, result.seconds) << "\n";
   }
   return review.exit_code;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <thread>
 
 #include "batch/broad_phase.h"
 #include "batch/motion_sweep.h"
@@ -207,10 +208,14 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   // Fault injection for the crash-isolation test: the worker that takes the
   // named pair dies as a solver crash would.
   const char* crash = std::getenv("PDCHECK_TEST_CRASH_PAIR");
+  // And for the signal and broken-pipe tests: every pair takes this long.
+  const char* slow = std::getenv("PDCHECK_TEST_PAIR_SLEEP_MS");
+  const long slow_ms = slow ? std::atol(slow) : 0;
   auto task = [&](size_t k) {
     if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
     const auto [a, b] = pairs[k];
     if (crash && parts[a].id + ":" + parts[b].id == crash) std::abort();
+    if (slow_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(slow_ms));
     return encode_pair_result(solve_part_pair(a, parts[a], b, parts[b], options.solver,
                                               options.tolerance, *ipopt, pair_checks(a, b)));
   };
@@ -221,7 +226,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     if (options.on_pair) options.on_pair(r, parts);
     progress.tick();
   };
-  run_work_queue(order, {options.jobs, options.pair_timeout}, task, done);
+  run_work_queue(order, {options.jobs, options.pair_timeout, options.on_warning}, task, done);
   progress.finish();
   out.stages.solve = lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();

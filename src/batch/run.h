@@ -22,6 +22,9 @@ struct RunOptions {
   double load_timeout = kDefaultLoadTimeout;
   /// Called in the parent as each pair ends (completion order), e.g. for JSON Lines.
   std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;
+  /// Called with a note on how the run went that the user should know (fewer
+  /// workers than asked for, ...). None when empty.
+  std::function<void(const std::string&)> on_warning;
 };
 
 /// Wall time of each stage of run_scene, in seconds.

@@ -169,7 +169,7 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
       out[k] = {{}, "cannot load mesh file " + path + ": " + e.what()};
     }
   };
-  run_work_queue(order, {std::max(1, jobs), timeout}, task, done);
+  run_work_queue(order, {std::max(1, jobs), timeout, {}}, task, done);
   return out;
 }
 
