@@ -1,0 +1,59 @@
+// Running the pdcheck binary from a shell script in the tests: exit code,
+// stdout and stderr, and a scratch directory under the build tree.
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace pd_test {
+
+struct ShellRun {
+  int code = -1;  ///< exit code, or 128 + signal as a shell reports it
+  std::string out, err;
+};
+
+inline const std::string kPdcheck = PDCHECK_BINARY;
+inline const std::string kDemo = std::string(PDCHECK_SOURCE_DIR) + "/testdata/demo/scene.json";
+
+/// A fresh empty directory for one test, under the build tree.
+inline std::string scratch_dir(const std::string& name) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(kPdcheck).parent_path().parent_path() / "test-scratch" /
+                       (name + "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Runs `script` with /bin/sh in `dir`; "$PDCHECK" and "$DEMO" name the binary
+/// and the demo scene. Stdin is /dev/null unless the script redirects it.
+inline ShellRun shell(const std::string& dir, const std::string& script) {
+  const std::string err_file = dir + "/.stderr";
+  const std::string cmd = "cd '" + dir + "' && PDCHECK='" + kPdcheck + "' DEMO='" + kDemo +
+                          "' /bin/sh -c '" + script + "' 2>'" + err_file + "' </dev/null";
+  ShellRun r;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = read_text(err_file);
+  std::remove(err_file.c_str());
+  return r;
+}
+
+}  // namespace pd_test
