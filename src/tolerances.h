@@ -66,6 +66,10 @@ inline constexpr double kSnapResidual = 1e-9;
 inline constexpr double kBaselineDepthAbs = 0.1;
 inline constexpr double kBaselineDepthRel = 0.05;
 
+/// Time box of one mesh file's convex decomposition, seconds. Past it the
+/// decomposer's fallback pieces are used and the part's pairs say so.
+inline constexpr double kDecomposeSeconds = 20.0;
+
 /// Nonconvex parts (geometry/convexity.h, decompose.h). Absolute, not relative:
 /// the concavity tolerance is this fraction of the scene's tolerance (scene
 /// units). A part is convex, and a piece accepted, when its hull lies within it

@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "batch/decomposition_cache.h"
 #include "batch/run.h"
 #include "printable.h"
 #include "report/fingerprint.h"
@@ -58,7 +59,8 @@ int main(int argc, char** argv) {
       "& Smith's MLSL + Ipopt), separating tessellation false positives from genuine "
       "interferences."};
   app.footer(kExamples);
-  std::string scene_arg, output, format = "json", method_arg, units_arg;
+  std::string scene_arg, output, format = "json", method_arg, units_arg, pieces_arg, cache_dir;
+  bool no_cache = false;
   double tolerance = 0.0, pair_timeout = 0.0, load_timeout = pd::kDefaultLoadTimeout;
   int jobs = 0;
   std::uint64_t seed = 0;
@@ -76,6 +78,14 @@ int main(int argc, char** argv) {
                  "length unit of the scene and the report: mm, cm, m, in, ft");
   app.add_option("--method", method_arg,
                  "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
+  app.add_option("--pieces", pieces_arg,
+                 "convex pieces of every mesh part, overriding the scene: hull (default), "
+                 "auto (the hull, refined where the hull stage flags a nonconvex part; opt-in, "
+                 "slow: docs/performance.md), meshes, decompose");
+  app.add_option("--cache", cache_dir,
+                 "directory of cached decompositions (default: $XDG_CACHE_HOME/pdcheck or "
+                 "~/.cache/pdcheck)");
+  app.add_flag("--no-cache", no_cache, "neither read nor write cached decompositions");
   app.add_option("--seed", seed, "random seed of the stochastic methods (default 1)")
       ->check(CLI::Validator(
           [](std::string& v) { return std::string(v.rfind("-", 0) == 0 ? "must be >= 0" : ""); },
@@ -189,6 +199,13 @@ int main(int argc, char** argv) {
       solver.method = *m;
     }
     if (app.count("--seed")) solver.seed = seed;
+    if (!pieces_arg.empty()) {
+      const auto p = pd::parse_pieces(pieces_arg);
+      if (!p)
+        throw pd::SceneError("--pieces: unknown value \"" + pieces_arg + "\" (use " +
+                             pd::kPiecesNames + ")");
+      pd::override_pieces(scene, *p);
+    }
   } catch (const pd::SceneError& e) {
     say("error", e.what());
     return kExitUsage;
@@ -230,6 +247,7 @@ int main(int argc, char** argv) {
   opt.load_timeout = load_timeout;
   opt.quiet = quiet;
   if (!quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
+  if (!no_cache) opt.cache_dir = cache_dir.empty() ? pd::default_cache_dir() : cache_dir;
   const bool jsonl = format == "jsonl";
   if (jsonl && !out_file) {
     // A failed write (the reader gone) throws: the run stops and its workers end.

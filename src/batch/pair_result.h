@@ -1,6 +1,7 @@
 // The outcome of checking one pair of parts.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -38,6 +39,12 @@ struct PairResult {
   std::optional<double> clearance_min;  ///< the required clearance, when checked
   std::optional<MotionTrace> motion;    ///< when a part of the pair moves
   std::vector<std::string> warnings;    ///< e.g. a tolerance below the pair's resolution
+  // Nonconvex parts (docs/solver.md): what the depth rests on.
+  std::optional<std::array<int, 2>> pieces;           ///< the piece pair realising depth/direction
+  std::string depth_source = "hull";                  ///< hull, pieces, vertex, mesh-test
+  std::optional<double> hull_depth;                   ///< the hull stage's depth, when refined
+  std::optional<std::array<double, 2>> depth_bounds;  ///< [lower, upper] when they differ
+  std::optional<bool> confirmed;  ///< pairs of a nonconvex part: decided on its own geometry
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

@@ -60,6 +60,7 @@ void solve_static(const Part& a, const Part& b, const SolverSettings& s, IpoptLo
   r.depth = c.depth;
   r.direction = c.direction;
   r.distance = c.distance;
+  if (a.pieces.size() * b.pieces.size() > 1) r.pieces = {c.piece_a, c.piece_b};
 }
 
 // The separation distance of a separated pair: the smallest over its piece
@@ -79,7 +80,10 @@ void static_distance(const Part& a, const Part& b, const SolverSettings& s, Ipop
   r.distance = c.distance;
   // One piece pair: the static direction already separates it (kept, so a convex
   // pair reports as before); several: the closest piece pair's direction.
-  if (a.pieces.size() * b.pieces.size() > 1) r.direction = c.direction;
+  if (a.pieces.size() * b.pieces.size() > 1) {
+    r.direction = c.direction;
+    r.pieces = {c.piece_a, c.piece_b};
+  }
 }
 
 // The largest coordinate plus the box diagonal, without overflow in the

@@ -14,6 +14,7 @@
 #include "batch/motion_sweep.h"
 #include "batch/pair_solve.h"
 #include "batch/progress.h"
+#include "batch/refine.h"
 #include "work_queue.h"
 
 namespace pd {
@@ -38,6 +39,7 @@ std::string encode_pair_result(const PairResult& r) {
   if (r.distance) j["x"] = *r.distance;
   if (r.clearance_min) j["c"] = *r.clearance_min;
   if (!r.warnings.empty()) j["w"] = r.warnings;
+  if (r.pieces) j["pc"] = *r.pieces;
   if (r.motion) {
     const MotionTrace& m = *r.motion;
     j["mo"] = {{"n", m.steps},
@@ -76,6 +78,7 @@ PairResult decode_pair_result(const std::string& s) {
   if (j.contains("x")) r.distance = j["x"].get<double>();
   if (j.contains("c")) r.clearance_min = j["c"].get<double>();
   if (j.contains("w")) r.warnings = j["w"].get<std::vector<std::string>>();
+  if (j.contains("pc")) r.pieces = j["pc"].get<std::array<int, 2>>();
   if (j.contains("mo")) {
     const auto& mo = j["mo"];
     MotionTrace m;
@@ -220,15 +223,19 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
                                               options.tolerance, *ipopt, pair_checks(a, b)));
   };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
-    const PairResult r = pair_result_from_worker(ok, payload, pairs[k].first, pairs[k].second,
+    PairResult r = pair_result_from_worker(ok, payload, pairs[k].first, pairs[k].second,
                                                  method_name(options.solver.method));
+    note_hull_stage(r, parts[r.a], parts[r.b]);
     out.pairs[k] = r;
-    if (options.on_pair) options.on_pair(r, parts);
+    // A pair the refinement takes on is reported when it is decided.
+    if (options.on_pair && !needs_refinement(r, parts[r.a], parts[r.b])) options.on_pair(r, parts);
     progress.tick();
   };
   run_work_queue(order, {options.jobs, options.pair_timeout, options.on_warning}, task, done);
   progress.finish();
   out.stages.solve = lap(t);
+  refine_nonconvex_pairs(out.parts, pairs, out.pairs, options, pair_checks);
+  out.stages.refine = lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();
   return out;
 }

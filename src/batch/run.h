@@ -20,6 +20,7 @@ struct RunOptions {
   bool quiet = false;         ///< no progress on stderr
   /// Seconds one mesh file may take to read (in a loader process), 0 = none.
   double load_timeout = kDefaultLoadTimeout;
+  std::string cache_dir;  ///< cached decompositions (batch/decomposition_cache.h); "" = none
   /// Called in the parent as each pair ends (completion order), e.g. for JSON Lines.
   std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;
   /// Called with a note on how the run went that the user should know (fewer
@@ -32,6 +33,7 @@ struct StageTimes {
   double parts = 0.0;        ///< meshes loaded, transformed and hulled
   double broad_phase = 0.0;  ///< candidate pairs found
   double solve = 0.0;        ///< every pair solved (the work queue)
+  double refine = 0.0;       ///< nonconvex pairs: mesh tests, decompositions, piece pairs
 };
 
 struct RunResult {

@@ -57,6 +57,11 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
                       r.direction.z() + 0.0};  // no -0
     j["margin"] = r.margin;
     if (r.distance) j["distance"] = *r.distance;
+    j["depth_source"] = r.depth_source;
+    if (r.hull_depth) j["hull_depth"] = *r.hull_depth;
+    if (r.depth_bounds) j["depth_bounds"] = *r.depth_bounds;
+    if (r.confirmed) j["confirmed"] = *r.confirmed;
+    if (r.pieces) j["pieces"] = *r.pieces;
   }
   if (r.clearance_min && r.status != Status::kError) {
     json c = {{"min", *r.clearance_min}};
@@ -115,8 +120,14 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
               {"source", p.source},
               {"vertices", p.vertex_count},
               {"hull_vertices", p.hull_vertex_count()},
-              {"pieces", p.pieces.size()},
+              {"pieces", p.decomposition ? p.decomposition->pieces.size() : p.pieces.size()},
               {"warnings", p.warnings}};
+    if (p.convex) j["convex"] = *p.convex;
+    if (p.decomposition) {
+      j["decomposition_seconds"] = p.decomposition->seconds;
+      j["cached"] = p.decomposition->cached;
+      if (!p.decomposition->complete) j["decomposition_note"] = p.decomposition->note;
+    }
     if (p.error) j["error"] = *p.error;
     parts.push_back(j);
   }
@@ -150,7 +161,8 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
            {{"load", ctx.load_seconds},
             {"parts", r.stages.parts},
             {"broad_phase", r.stages.broad_phase},
-            {"solve", r.stages.solve}}},
+            {"solve", r.stages.solve},
+            {"refine", r.stages.refine}}},
           {"parts", parts},
           {"pairs", pairs}};
 }

@@ -1,13 +1,18 @@
 #include "scene/parts.h"
 
+#include <Eigen/SVD>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <new>
 #include <optional>
 #include <sstream>
 
+#include "geometry/convexity.h"
+#include "hash.h"
 #include "parallel_for.h"
 #include "scene/mesh_loader.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -56,29 +61,86 @@ struct MeshFile {
   std::vector<Points> reduced;  ///< per piece, file coordinates
   std::vector<long> counts;     ///< vertices per piece as read
   std::optional<std::string> error;
+  // Pieces auto/decompose: the surface and its nonconvexity, once per file.
+  std::shared_ptr<const Mesh> mesh;
+  std::string hash;
+  double concavity = 0.0;  ///< file units
+  bool closed = false;
 };
 
-void load(const PartSpec& spec, MeshFile& f) {
+bool keeps_surface(Pieces p) {
+  return p == Pieces::kAuto || p == Pieces::kDecompose;
+}
+
+std::string file_content_hash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return content_hash(bytes);
+}
+
+// The largest factor by which the placement stretches a length.
+double stretch(const Mat4& placement) {
+  return Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues()(0);
+}
+
+// File coordinates to scene units: the unit conversion, then the transform.
+Mat4 placement(const PartSpec& spec) {
+  Mat4 m = spec.transform;
+  m.topLeftCorner<3, 3>() *= spec.to_scene_units;
+  return m;
+}
+
+void load(const PartSpec& spec, MeshFile& f, double concavity_tol) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
-    for (const Mesh& m : f.read.meshes) {
+    const std::vector<Mesh>& meshes = f.read.meshes;
+    if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
+      f.mesh = std::make_shared<const Mesh>(meshes[0]);
+      // Measured once, in file units, at the first instance's tolerance; each
+      // instance scales the value by its own stretch.
+      const auto c = measure_convexity(*f.mesh, concavity_tol / stretch(placement(spec)));
+      f.concavity = c.concavity.value;
+      f.closed = c.closed;
+      f.hash = file_content_hash(*spec.mesh);
+    }
+    for (const Mesh& m : meshes) {
       f.counts.push_back(m.vertices.cols());
       f.reduced.push_back(convex_hull(m.vertices).vertices);
     }
   } catch (const std::exception& e) {
     f.reduced.clear();
+    f.mesh.reset();
     f.error = load_error(spec, e);
   }
   f.read = {};
 }
 
+PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
+  PartSurface s;
+  s.file_mesh = f.mesh;
+  s.file_hash = f.hash;
+  s.placement = placement(spec);
+  s.stretch = stretch(s.placement);
+  s.concavity = f.concavity * s.stretch;
+  s.closed = f.closed;
+  if (!convex || spec.pieces == Pieces::kDecompose) {  // only what a refinement can use
+    Mesh placed;
+    placed.vertices = place(f.mesh->vertices, spec);
+    placed.triangles = f.mesh->triangles;
+    s.mesh = std::make_shared<const Mesh>(std::move(placed));
+  }
+  return s;
+}
+
 /// One part from its spec; `file` is its mesh file, shared with other instances.
-Part build_part(const PartSpec& spec, MeshFile* file) {
+Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol) {
   Part part;
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
+  part.mode = spec.pieces;
   if (file) {
-    std::call_once(file->loaded, [&] { load(spec, *file); });  // the first instance reduces it
+    std::call_once(file->loaded,
+                   [&] { load(spec, *file, concavity_tol); });  // the first instance reduces it
     if (file->error) {
       part.error = file->error;
       return part;
@@ -99,8 +161,13 @@ Part build_part(const PartSpec& spec, MeshFile* file) {
       part.box = k == 0 ? b : part.box.merged(b);
       part.pieces.push_back(std::move(h));
     }
+    if (file && file->mesh) {
+      part.convex = file->concavity * stretch(placement(spec)) <= concavity_tol;
+      part.surface = surface_of(spec, *file, *part.convex);
+    }
   } catch (const std::exception& e) {
     part.pieces.clear();
+    part.surface.reset();
     part.error = load_error(spec, e);
   }
   return part;
@@ -140,6 +207,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   // Hulls are independent: qhull_r keeps its state per run, each assimp
   // Importer its own, and build_part catches whatever it throws. The first
   // instance of a mesh file reduces it; others of the same file wait for it.
+  const double concavity_tol = tol::kConcavityFraction * scene.tolerance.value_or(0.0);
   std::vector<Part> built(unique.size());
   std::vector<MeshFile> mesh_files(files.size());
   // Every mesh file is read first, in loader processes: forked here, while
@@ -153,7 +221,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     for (size_t f = 0; f < read.size(); ++f) mesh_files[f].read = std::move(read[f]);
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
-    built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr);
+    built[u] =
+        build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr, concavity_tol);
     if (on_built) on_built(users[u]);
   });
 

@@ -2,17 +2,41 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/aabb.h"
 #include "geometry/hull.h"
+#include "geometry/mesh.h"
 #include "geometry/motion.h"
 #include "scene/mesh_loader.h"
 #include "scene/scene.h"
 
 namespace pd {
+
+/// A mesh part's surface, kept for the nonconvex refinement (pieces auto and
+/// decompose): the file's mesh in its own coordinates (shared by its instances),
+/// where it is placed, and its nonconvexity measured once per file.
+struct PartSurface {
+  std::shared_ptr<const Mesh> file_mesh;  ///< file coordinates
+  std::string file_hash;                  ///< content hash of the mesh file (cache key)
+  Mat4 placement = Mat4::Identity();      ///< file → scene units (units, then transform)
+  double stretch = 1.0;                   ///< the placement's largest stretch factor
+  double concavity = 0.0;                 ///< the file's measured nonconvexity, scene units
+  bool closed = false;                    ///< the file's mesh bounds a solid
+  std::shared_ptr<const Mesh> mesh;       ///< placed (scene units), when nonconvex
+};
+
+/// A part's convex decomposition, once the batch stage has made one (placed).
+struct PartDecomposition {
+  std::vector<Hull> pieces;
+  double seconds = 0.0;  ///< computing it (as first computed, when cached)
+  bool cached = false;   ///< read from the decomposition cache
+  bool complete = true;  ///< false: time box or failure; the pieces are a fallback
+  std::string note;
+};
 
 struct Part {
   std::string id;
@@ -23,6 +47,15 @@ struct Part {
   std::vector<std::string> warnings;
   std::optional<std::string> error;   ///< the part could not be used: its pairs are errors
   std::optional<RigidMotion> motion;  ///< moving parts only (checks.motion)
+  Pieces mode = Pieces::kHull;
+  std::optional<bool> convex;          ///< measured for pieces auto/decompose mesh parts
+  std::optional<PartSurface> surface;  ///< pieces auto/decompose mesh parts
+  std::optional<PartDecomposition> decomposition;  ///< set by the batch stage when used
+
+  /// Whether a pair flagged by the hull stage must look past this part's hull.
+  bool refinable() const {
+    return surface && (mode == Pieces::kDecompose || (mode == Pieces::kAuto && convex == false));
+  }
 
   long hull_vertex_count() const;
 };

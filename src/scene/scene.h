@@ -21,7 +21,14 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Pieces { kHull, kMeshes };
+/// How a part is cut into convex pieces (docs/scene-format.md, docs/solver.md):
+/// auto = its hull, refined where the hull stage flags a nonconvex part;
+/// hull = its hull only; meshes = each mesh instance's hull; decompose = its
+/// hull, refined where the hull stage flags it, whatever its measured convexity.
+enum class Pieces { kAuto, kHull, kMeshes, kDecompose };
+std::optional<Pieces> parse_pieces(const std::string& name);
+const char* pieces_name(Pieces p);
+inline constexpr const char* kPiecesNames = "auto, hull, meshes, decompose";
 
 struct PartSpec {
   std::string id;
@@ -30,7 +37,7 @@ struct PartSpec {
   std::optional<Points> vertices;   ///< inline vertices, in the part's units
   double to_scene_units = 1.0;      ///< part unit / scene unit
   Mat4 transform = Mat4::Identity();
-  Pieces pieces = Pieces::kHull;
+  Pieces pieces = Pieces::kHull;      ///< auto/decompose are opt-in (slow decompositions)
   std::optional<RigidMotion> motion;  ///< only with checks.motion
 };
 
@@ -95,6 +102,10 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path);
 SceneSpec parse_stdin_scene(const std::string& text,
                             const std::optional<std::string>& units = std::nullopt,
                             int threads = 1);
+
+/// The command line's --pieces: every mesh part takes `p` (inline parts are the
+/// hull of their vertices whatever the mode).
+void override_pieces(SceneSpec& s, Pieces p);
 
 /// Checks that ids are unique and pairs name known parts (throws SceneError).
 void validate_scene(const SceneSpec& s);

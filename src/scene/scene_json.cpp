@@ -131,13 +131,12 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
   if (j.contains("transform")) p.transform = transform(c, j["transform"], at + ".transform");
   if (j.contains("pieces")) {
     const std::string v = string(c, j["pieces"], at + ".pieces");
-    if (v == "hull")
-      p.pieces = Pieces::kHull;
-    else if (v == "meshes")
-      p.pieces = Pieces::kMeshes;
-    else
-      c.fail(at + ".pieces", "expected \"hull\" or \"meshes\", got \"" + v + "\"");
-    if (v == "meshes" && !has_mesh) c.fail(at + ".pieces", "\"meshes\" needs a mesh file");
+    const std::optional<Pieces> mode = parse_pieces(v);
+    if (!mode)
+      c.fail(at + ".pieces", "expected one of " + std::string(kPiecesNames) + ", got \"" + v + "\"");
+    p.pieces = *mode;
+    if ((p.pieces == Pieces::kMeshes || p.pieces == Pieces::kDecompose) && !has_mesh)
+      c.fail(at + ".pieces", "\"" + v + "\" needs a mesh file");
   }
   return p;
 }

@@ -1,0 +1,297 @@
+#include "batch/refine.h"
+
+#include <chrono>
+#include <map>
+#include <memory>
+
+#include "batch/decomposition_cache.h"
+#include "batch/progress.h"
+#include "work_queue.h"
+#include "geometry/hull.h"
+#include "geometry/mesh_intersect.h"
+#include "geometry/decompose.h"
+#include "parallel_for.h"
+#include "tolerances.h"
+
+namespace pd {
+
+bool needs_refinement(const PairResult& r, const Part& a, const Part& b) {
+  return r.status == Status::kInterference && !r.motion && (a.refinable() || b.refinable());
+}
+
+void note_hull_stage(PairResult& r, const Part& a, const Part& b) {
+  if ((a.refinable() || b.refinable()) && r.status != Status::kError && !needs_refinement(r, a, b))
+    r.confirmed = r.status != Status::kInterference;  // motion pairs are not refined
+}
+
+PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const PairResult* pieces,
+                          bool complete, double tolerance, double pair_size) {
+  PairResult r = hull;
+  r.hull_depth = hull.depth;
+  r.pieces.reset();
+  r.distance.reset();
+  if (pieces) {
+    r.stats += pieces->stats;
+    if (!pieces->fallback.empty()) r.fallback = pieces->fallback;
+    if (pieces->status == Status::kError) {
+      r.status = Status::kError;
+      r.error = "piece pairs: " + pieces->error;
+      return r;
+    }
+  }
+  if (!mesh.intersect) {  // the hulls overlap, the parts do not
+    r.depth = 0.0;
+    r.depth_source = "mesh-test";
+    r.confirmed = true;
+    r.status = Status::kSeparated;
+    if (pieces) {  // a clearance check measured the gap over the pieces
+      r.direction = pieces->direction;
+      r.pieces = pieces->pieces;
+      r.distance = pieces->distance;
+      if (pieces->status == Status::kClearanceViolation) r.status = pieces->status;
+    }
+    r.margin = tolerance - r.depth;
+    return r;
+  }
+  const double piece_depth = pieces ? pieces->depth : 0.0;
+  const bool by_vertex = mesh.vertex_depth > piece_depth;
+  r.depth = std::max(piece_depth, mesh.vertex_depth);
+  r.depth_source = by_vertex ? "vertex" : "pieces";
+  r.direction = by_vertex || !pieces ? mesh.vertex_direction : pieces->direction;
+  if (pieces && !by_vertex) r.pieces = pieces->pieces;
+  if (mesh.vertex_depth != hull.depth) r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
+  r.status = classify(r.depth, tolerance, pair_size);
+  if (pieces && pieces->status == Status::kClearanceViolation && r.status == Status::kSeparated) {
+    r.status = pieces->status;
+    r.distance = pieces->distance;
+  }
+  // Pieces from a decomposition that ran out of time are coarse hulls: their depth
+  // decides nothing. Only the vertex bound can still confirm an interference;
+  // short of it the pair is not quietly passed.
+  const bool vertex_decides =
+      classify(mesh.vertex_depth, tolerance, pair_size) == Status::kInterference;
+  r.confirmed = complete || vertex_decides;
+  if (!*r.confirmed) r.status = Status::kInterference;
+  r.margin = tolerance - r.depth;
+  return r;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Points placed(const Points& p, const Mat4& m) {
+  return (m.topLeftCorner<3, 3>() * p).colwise() + Vec3(m.topRightCorner<3, 1>());
+}
+
+// The surface a mesh test sees: the part's own, else (inline or convex parts
+// without one kept) the triangulated hull of each of its pieces.
+Mesh surface_mesh(const Part& p) {
+  if (p.surface && p.surface->mesh) return *p.surface->mesh;
+  if (p.surface && p.surface->file_mesh)
+    return {placed(p.surface->file_mesh->vertices, p.surface->placement),
+            p.surface->file_mesh->triangles};
+  Mesh m;
+  std::vector<Vec3> v;
+  std::vector<std::array<int, 3>> t;
+  for (const Hull& h : p.pieces) {
+    HullFacets f;
+    if (!hull_facets(h.vertices, f)) continue;
+    const int base = static_cast<int>(v.size());
+    for (Eigen::Index k = 0; k < h.vertices.cols(); ++k) v.push_back(h.vertices.col(k));
+    for (const auto& tri : f.triangles) t.push_back({base + tri[0], base + tri[1], base + tri[2]});
+  }
+  m.vertices.resize(3, v.size());
+  for (size_t k = 0; k < v.size(); ++k) m.vertices.col(k) = v[k];
+  m.triangles.resize(3, t.size());
+  for (size_t k = 0; k < t.size(); ++k)
+    m.triangles.col(k) = Eigen::Vector3i(t[k][0], t[k][1], t[k][2]);
+  return m;
+}
+
+MeshVerdict mesh_verdict(const PreparedMesh* a, const PreparedMesh* b) {
+  MeshVerdict v;
+  if (!a || !b) return v;  // no surface to test: may meet, the pieces decide
+  v.intersect = meshes_intersect(*a, *b);
+  if (v.intersect) {
+    const MeshDepthBound bound = deepest_vertex_depth(*a, *b);
+    v.vertex_depth = bound.depth;
+    v.vertex_direction = bound.direction;
+  }
+  return v;
+}
+
+// Decomposes each mesh file once (its instances share it) at the strictest
+// concavity tolerance of its instances, from the cache when it has it.
+void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
+                     const RunOptions& options) {
+  const double concavity_tol = tol::kConcavityFraction * options.tolerance;
+  struct FileJob {
+    const Part* first = nullptr;
+    double tol = 0.0;  ///< file units
+    StoredDecomposition result;
+    bool cached = false;
+  };
+  std::map<std::string, FileJob> files;
+  for (int k : which) {
+    const PartSurface& s = *parts[k].surface;
+    FileJob& f = files[s.file_hash];
+    const double t = concavity_tol / s.stretch;
+    if (!f.first || t < f.tol) f.tol = t;
+    if (!f.first) f.first = &parts[k];
+  }
+  std::vector<FileJob*> jobs;
+  for (auto& [hash, f] : files) jobs.push_back(&f);
+  Progress progress(jobs.size(), options.quiet, "decompositions");
+  parallel_for(jobs.size(), options.jobs, [&](size_t k) {
+    FileJob& f = *jobs[k];
+    const PartSurface& s = *f.first->surface;
+    const std::string key = decomposition_key(s.file_hash, f.tol, tol::kDecomposeSeconds);
+    if (auto hit = read_cached_decomposition(options.cache_dir, key)) {
+      f.result = std::move(*hit);
+      f.cached = true;
+    } else {
+      const auto t0 = Clock::now();
+      try {
+        const auto d = decompose_convex(*s.file_mesh, f.tol, tol::kDecomposeSeconds);
+        for (const Points& p : d.pieces) f.result.pieces.push_back(p);
+        f.result.complete = d.complete;
+        f.result.note = d.note;
+      } catch (const std::exception& e) {  // never lose the pair: the hull is a fallback
+        f.result.pieces = {s.file_mesh->vertices};
+        f.result.complete = false;
+        f.result.note = std::string("decomposition failed: ") + e.what();
+      }
+      f.result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      write_cached_decomposition(options.cache_dir, key, f.result);  // best effort
+    }
+    progress.tick();
+  });
+  progress.finish();
+  // Each instance hulls its placed pieces (an affine image of a hull is the hull
+  // of the image).
+  parallel_for(which.size(), options.jobs, [&](size_t n) {
+    Part& p = parts[which[n]];
+    const FileJob& f = files.at(p.surface->file_hash);
+    PartDecomposition d;
+    d.seconds = f.result.seconds;
+    d.cached = f.cached;
+    d.complete = f.result.complete;
+    d.note = f.result.note;
+    for (const Points& piece : f.result.pieces)
+      if (piece.cols() > 0) d.pieces.push_back(convex_hull(placed(piece, p.surface->placement)));
+    if (d.pieces.empty()) {
+      d.pieces = p.pieces;
+      d.complete = false;
+    }
+    p.decomposition = std::move(d);
+  });
+}
+
+}  // namespace
+
+void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
+                            std::vector<PairResult>& results, const RunOptions& options,
+                            const std::function<PairChecks(int, int)>& checks) {
+  std::vector<size_t> flagged;
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
+    if (needs_refinement(results[k], a, b)) flagged.push_back(k);
+  }
+  if (flagged.empty()) return;
+
+  // 1. The surfaces: do they meet, and how deep is the deepest vertex.
+  std::vector<int> used(parts.size(), 0);
+  for (size_t k : flagged) used[pairs[k].first] = used[pairs[k].second] = 1;
+  std::vector<std::unique_ptr<PreparedMesh>> meshes(parts.size());
+  std::vector<int> used_list;
+  for (size_t p = 0; p < parts.size(); ++p)
+    if (used[p]) used_list.push_back(static_cast<int>(p));
+  parallel_for(used_list.size(), options.jobs, [&](size_t n) {
+    try {  // once per part, shared by its pairs and threads
+      meshes[used_list[n]] = std::make_unique<PreparedMesh>(surface_mesh(parts[used_list[n]]));
+    } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
+    }
+  });
+  std::vector<MeshVerdict> verdicts(flagged.size());
+  {
+    Progress progress(flagged.size(), options.quiet, "mesh tests");
+    parallel_for(flagged.size(), options.jobs, [&](size_t n) {
+      const auto [a, b] = pairs[flagged[n]];
+      try {
+        verdicts[n] = mesh_verdict(meshes[a].get(), meshes[b].get());
+      } catch (const std::exception&) {
+        verdicts[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
+      }
+      progress.tick();
+    });
+    progress.finish();
+  }
+  meshes.clear();
+
+  // 2. Decompose the refinable parts of the pairs that need pieces.
+  std::vector<size_t> solve;  // indices into flagged
+  std::fill(used.begin(), used.end(), 0);
+  for (size_t n = 0; n < flagged.size(); ++n) {
+    const auto [a, b] = pairs[flagged[n]];
+    if (!verdicts[n].intersect && !checks(a, b).clearance) continue;
+    solve.push_back(n);
+    used[a] = used[b] = 1;
+  }
+  std::vector<int> to_decompose;
+  for (size_t p = 0; p < parts.size(); ++p)
+    if (used[p] && parts[p].refinable() && !parts[p].decomposition)
+      to_decompose.push_back(static_cast<int>(p));
+  decompose_parts(parts, to_decompose, options);
+
+  // 3. Piece pairs in the worker pool (the parts' pieces as pieces-only parts).
+  std::vector<std::optional<Part>> piece_parts(parts.size());
+  for (size_t p = 0; p < parts.size(); ++p) {
+    if (!used[p]) continue;
+    Part q;
+    q.id = parts[p].id;
+    q.box = parts[p].box;
+    q.pieces = parts[p].decomposition ? parts[p].decomposition->pieces : parts[p].pieces;
+    piece_parts[p] = std::move(q);
+  }
+  std::vector<std::optional<PairResult>> piece_results(flagged.size());
+  std::vector<size_t> order(solve.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  auto cost = [&](size_t k) {
+    const auto [a, b] = pairs[flagged[solve[k]]];
+    return piece_parts[a]->hull_vertex_count() * piece_parts[b]->hull_vertex_count();
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t x, size_t y) { return cost(x) > cost(y); });
+  std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
+  Progress progress(solve.size(), options.quiet, "piece pairs");
+  auto task = [&](size_t k) {
+    if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
+    const auto [a, b] = pairs[flagged[solve[k]]];
+    return encode_pair_result(solve_part_pair(a, *piece_parts[a], b, *piece_parts[b],
+                                              options.solver, options.tolerance, *ipopt,
+                                              checks(a, b)));
+  };
+  auto done = [&](size_t k, bool ok, const std::string& payload) {
+    const auto [a, b] = pairs[flagged[solve[k]]];
+    piece_results[solve[k]] =
+        pair_result_from_worker(ok, payload, a, b, method_name(options.solver.method));
+    progress.tick();
+  };
+  run_work_queue(order, {options.jobs, options.pair_timeout}, task, done);
+  progress.finish();
+
+  // 4. Decide.
+  for (size_t n = 0; n < flagged.size(); ++n) {
+    const auto [a, b] = pairs[flagged[n]];
+    const Part &pa = parts[a], &pb = parts[b];
+    const bool complete = (!pa.decomposition || pa.decomposition->complete) &&
+                          (!pb.decomposition || pb.decomposition->complete);
+    PairResult& r = results[flagged[n]];
+    r = decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr, complete,
+                       options.tolerance, pair_size(pa, pb));
+    if (options.on_pair) options.on_pair(r, parts);
+  }
+}
+
+}  // namespace pd

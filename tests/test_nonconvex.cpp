@@ -1,0 +1,252 @@
+// Nonconvex parts end to end: scripts/make_nonconvex.py writes an assembly whose
+// nominal relations are known by construction (bolts in holes, pins in bores,
+// L-brackets, a drilled board, a hollow housing, a buried part, an open tray);
+// pdcheck must recover every one, and a cached rerun must repeat the cold run.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "batch/refine.h"
+
+using namespace pd;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSource = PDCHECK_SOURCE_DIR;
+
+struct Run {
+  int code = -1;
+  std::string out;
+};
+
+Run shell(const std::string& cmd) {
+  Run r;
+  FILE* p = popen((cmd + " 2>/dev/null </dev/null").c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return json::parse(in);
+}
+
+// A fresh directory per test process (ctest runs tests in parallel).
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(testing::TempDir()) / (name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// 8-gon holes and bores keep each decomposition well inside its time box (about a
+// second per test; tol::kDecomposeSeconds is never reached, so runs are reproducible).
+fs::path generate(const std::string& name, const std::string& args = "--segments 8") {
+  const fs::path d = fresh_dir(name);
+  const Run g =
+      shell("python3 " + kSource + "/scripts/make_nonconvex.py " + d.string() + " " + args);
+  EXPECT_EQ(g.code, 0);
+  return d;
+}
+
+json pdcheck(const fs::path& dir, const std::string& args, int* code = nullptr) {
+  const Run r = shell(std::string(PDCHECK_BINARY) + " " + (dir / "scene.json").string() +
+                      " --quiet --jobs 2 " + args);
+  if (code) *code = r.code;
+  return r.out.empty() ? json() : json::parse(r.out);
+}
+
+std::string key(const std::string& a, const std::string& b) {
+  return a < b ? a + ":" + b : b + ":" + a;
+}
+
+std::map<std::string, json> by_pair(const json& report) {
+  std::map<std::string, json> m;
+  for (const auto& p : report["pairs"]) m[key(p["a"], p["b"])] = p;
+  return m;
+}
+
+bool recovered(const std::string& expect, const std::string& status) {
+  if (expect == "interference") return status == "interference";
+  if (expect == "contact") return status == "separated" || status == "false_positive";
+  return status == "separated";  // clearance
+}
+
+json without_timings(json r) {
+  r.erase("seconds");
+  r.erase("stage_seconds");
+  for (auto& p : r["pairs"]) p.erase("time_ms");
+  for (auto& p : r["parts"]) p.erase("cached");
+  return r;
+}
+
+json without_decomposition_times(json r) {
+  for (auto& p : r["parts"]) p.erase("decomposition_seconds");
+  return r;
+}
+
+}  // namespace
+
+TEST(Nonconvex, EveryNominalRelationIsRecovered) {
+  const fs::path d = generate("nonconvex_nominal");
+  const json expected = read_json(d / "expected.json");
+  const fs::path cache = d / "cache";
+  int code = -1;
+  const json rep = pdcheck(d, "--pieces auto --cache " + cache.string(), &code);
+  ASSERT_TRUE(rep.is_object());
+  const auto pairs = by_pair(rep);
+  std::set<std::string> listed;
+  for (const auto& e : expected["pairs"]) {
+    const std::string k = key(e["a"], e["b"]);
+    listed.insert(k);
+    ASSERT_TRUE(pairs.count(k)) << k << " is not a candidate pair";
+    const json& p = pairs.at(k);
+    EXPECT_TRUE(recovered(e["expect"], p["status"]))
+        << k << " (" << e["why"].get<std::string>() << "): expected " << e["expect"] << ", got "
+        << p.dump();
+    // No hull artefact is reported as a confirmed interference.
+    if (e["expect"] != "interference" && p["status"] == "interference") {
+      EXPECT_FALSE(p.value("confirmed", true)) << k;
+    }
+  }
+  for (const auto& [k, p] : pairs) EXPECT_TRUE(listed.count(k)) << "unexpected pair " << k;
+  EXPECT_EQ(code, 1);  // the genuine interferences
+  // Convexity as built: every part the generator calls nonconvex is measured so.
+  for (const auto& part : rep["parts"]) {
+    const json& info = expected["parts"][part["id"].get<std::string>()];
+    if (!info["convex"].get<bool>()) {
+      EXPECT_EQ(part["convex"], false) << part["id"];
+    }
+  }
+
+  // A cached rerun repeats the cold run, decomposing nothing.
+  const json again = pdcheck(d, "--pieces auto --cache " + cache.string());
+  bool any_cached = false;
+  for (const auto& part : again["parts"])
+    if (part.contains("cached")) {
+      EXPECT_TRUE(part["cached"].get<bool>()) << part["id"];
+      any_cached = true;
+    }
+  EXPECT_TRUE(any_cached);
+  EXPECT_EQ(without_timings(rep), without_timings(again));
+}
+
+TEST(Nonconvex, HullOnlyReportsTheArtefacts) {
+  // The same assembly with --pieces hull: the hulls fill every hole and corner,
+  // so the relations above are lost (what the refinement is for).
+  const fs::path d = generate("nonconvex_hull");
+  const json expected = read_json(d / "expected.json");
+  const auto pairs = by_pair(pdcheck(d, "--pieces hull --no-cache"));
+  int artefacts = 0;
+  for (const auto& e : expected["pairs"]) {
+    const std::string k = key(e["a"], e["b"]);
+    if (e["expect"] != "interference" && pairs.count(k) && pairs.at(k)["status"] == "interference")
+      ++artefacts;
+  }
+  EXPECT_GE(artefacts, 5);
+}
+
+TEST(Nonconvex, ACorruptCacheEntryIsRecomputed) {
+  const fs::path d = generate("nonconvex_cache");
+  const fs::path cache = d / "cache";
+  const json cold = pdcheck(d, "--pieces auto --cache " + cache.string());
+  int entries = 0;
+  for (const auto& f : fs::directory_iterator(cache)) {
+    ++entries;
+    // Truncate every entry: a reader must not trust it.
+    fs::resize_file(f.path(), fs::file_size(f.path()) / 2);
+  }
+  ASSERT_GT(entries, 0);
+  const json warm = pdcheck(d, "--pieces auto --cache " + cache.string());
+  for (const auto& part : warm["parts"])
+    if (part.contains("cached")) {
+      EXPECT_FALSE(part["cached"].get<bool>()) << part["id"];
+    }
+  EXPECT_EQ(without_decomposition_times(without_timings(cold)),
+            without_decomposition_times(without_timings(warm)));
+}
+
+TEST(Nonconvex, DecideRefinedNeverQuietlyPassesAnUndecidedPair) {
+  PairResult hull;
+  hull.status = Status::kInterference;
+  hull.depth = 3.0;
+  MeshVerdict m;
+  m.intersect = true;
+  m.vertex_depth = 0.01;
+  PairResult pieces;
+  pieces.status = Status::kFalsePositive;
+  pieces.depth = 0.02;
+  pieces.pieces = {{2, 0}};
+  // Complete decompositions: the pieces decide.
+  PairResult r = decide_refined(hull, m, &pieces, true, 0.05, 1.0);
+  EXPECT_EQ(r.status, Status::kFalsePositive);
+  EXPECT_EQ(r.depth_source, "pieces");
+  EXPECT_EQ(*r.hull_depth, 3.0);
+  EXPECT_EQ((*r.depth_bounds)[0], 0.01);
+  EXPECT_EQ((*r.depth_bounds)[1], 3.0);
+  EXPECT_TRUE(*r.confirmed);
+  // A decomposition past its time box: nothing decides, the pair is flagged.
+  r = decide_refined(hull, m, &pieces, false, 0.05, 1.0);
+  EXPECT_EQ(r.status, Status::kInterference);
+  EXPECT_FALSE(*r.confirmed);
+  // ... unless the vertex bound alone exceeds the tolerance.
+  m.vertex_depth = 0.2;
+  r = decide_refined(hull, m, &pieces, false, 0.05, 1.0);
+  EXPECT_EQ(r.status, Status::kInterference);
+  EXPECT_TRUE(*r.confirmed);
+  EXPECT_EQ(r.depth_source, "vertex");
+  EXPECT_EQ(r.depth, 0.2);
+  // Meshes apart: separated, whatever the hulls said.
+  m.intersect = false;
+  r = decide_refined(hull, m, nullptr, true, 0.05, 1.0);
+  EXPECT_EQ(r.status, Status::kSeparated);
+  EXPECT_EQ(r.depth_source, "mesh-test");
+  EXPECT_EQ(r.depth, 0.0);
+}
+
+TEST(Nonconvex, ConvexOnlySceneReportIsUnchangedApartFromTheNewFields) {
+  // The generator's convex parts alone (bolts, pins, blocks, a rod): the default
+  // (hull) and --pieces auto report the same, apart from the new fields.
+  const fs::path d = generate("nonconvex_convex_only");
+  const json expected = read_json(d / "expected.json");
+  json scene = read_json(d / "scene.json");
+  json kept = json::array();
+  for (const auto& p : scene["parts"])
+    if (expected["parts"][p["id"].get<std::string>()]["convex"].get<bool>()) kept.push_back(p);
+  // Copies of a bolt moved 0.5 (deep overlap), 9.98 (a tessellation-sized one)
+  // and 10 (touching) along x: convex pairs of every status.
+  for (const double dx : {0.5, 9.98, 10.0})
+    kept.push_back({{"id", "bolt+" + std::to_string(dx)},
+                    {"mesh", "c0_bolt_exact.stl"},
+                    {"transform", {{1, 0, 0, dx}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}});
+  scene["parts"] = kept;
+  std::ofstream(d / "scene.json") << scene.dump();
+  json hull = without_timings(pdcheck(d, "--no-cache"));
+  json auto_ = without_timings(pdcheck(d, "--pieces auto --no-cache"));
+  ASSERT_GE(auto_["pairs"].size(), 4u);
+  for (auto& p : auto_["parts"]) {
+    EXPECT_EQ(p["convex"], true) << p["id"];
+    p.erase("convex");
+  }
+  for (auto* r : {&hull, &auto_})
+    for (auto& p : (*r)["pairs"]) {
+      EXPECT_EQ(p["depth_source"], "hull");
+      p.erase("depth_source");
+      EXPECT_FALSE(p.contains("confirmed"));
+    }
+  EXPECT_EQ(hull, auto_);
+}
