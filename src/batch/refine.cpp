@@ -278,7 +278,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
         pair_result_from_worker(ok, payload, a, b, method_name(options.solver.method));
     progress.tick();
   };
-  run_work_queue(order, {options.jobs, options.pair_timeout}, task, done);
+  run_work_queue(order, {options.jobs, options.pair_timeout, options.on_warning}, task, done);
   progress.finish();
 
   // 4. Decide.
