@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "hash.h"
-#include "report/atomic_write.h"
+#include "atomic_write.h"
 
 namespace pd {
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "report/atomic_write.h"
+#include "atomic_write.h"
 
 namespace fs = std::filesystem;
 
