@@ -23,16 +23,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
-# The SARIF multitool (npm; a self-contained .NET binary) reads the tests' SARIF back. Optional: when
-# npm or the registry is missing, that one test is skipped and says so.
-MT="$ROOT/build/tools/sarif-multitool"
-if [ ! -x "$MT/node_modules/@microsoft/sarif-multitool-linux/Sarif.Multitool" ] && command -v npm >/dev/null; then
-  echo "pdcheck setup: installing the SARIF multitool (npm) into build/tools" >&2
-  npm install --prefix "$MT" --no-audit --no-fund --loglevel=error --fetch-timeout=60000 --fetch-retries=1 \
-      @microsoft/sarif-multitool-linux@5.7.0 >&2 ||
-    echo "pdcheck setup: the SARIF multitool could not be installed; its test will be skipped" >&2
-fi
-
 JOBS="$(nproc 2>/dev/null || echo 2)"
 cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$ROOT/build" -j "$JOBS" >&2
