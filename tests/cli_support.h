@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "run_capture.h"
+
 namespace pd::test {
 
 inline const std::string kSource = PDCHECK_SOURCE_DIR;
@@ -36,14 +38,11 @@ inline std::string write_temp(const std::string& name, const std::string& text) 
 /// ctest runs tests in parallel processes).
 inline CliResult shell(const std::string& cmd) {
   const std::string err_file = testing::TempDir() + "cli_err_" + std::to_string(getpid()) + ".txt";
+  pd_test::Captured c = pd_test::run_capture(cmd + " </dev/null", err_file);
   CliResult r;
-  FILE* p = popen((cmd + " 2>" + err_file + " </dev/null").c_str(), "r");
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = read_text(err_file);
+  r.code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : -1;
+  r.out = std::move(c.out);
+  r.err = std::move(c.err);
   return r;
 }
 

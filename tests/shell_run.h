@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "run_capture.h"
+
 namespace pd_test {
 
 struct ShellRun {
@@ -43,16 +45,12 @@ inline std::string read_text(const std::string& path) {
 inline ShellRun shell(const std::string& dir, const std::string& script) {
   const std::string err_file = dir + "/.stderr";
   const std::string cmd = "cd '" + dir + "' && PDCHECK='" + kPdcheck + "' DEMO='" + kDemo +
-                          "' /bin/sh -c '" + script + "' 2>'" + err_file + "' </dev/null";
+                          "' /bin/sh -c '" + script + "' </dev/null";
+  Captured c = run_capture(cmd, err_file);
   ShellRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = read_text(err_file);
-  std::remove(err_file.c_str());
+  r.code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : -1;
+  r.out = std::move(c.out);
+  r.err = std::move(c.err);
   return r;
 }
 

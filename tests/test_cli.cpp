@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "run_capture.h"
+
 using nlohmann::json;
 
 namespace {
@@ -27,7 +29,7 @@ CliRun pdcheck(const std::string& args, const std::string& stdin_text = "",
   // Per process: ctest runs tests in parallel, each in its own process.
   const std::string err_file =
       testing::TempDir() + "pdcheck_err_" + std::to_string(getpid()) + ".txt";
-  std::string cmd = env + " " + std::string(PDCHECK_BINARY) + " " + args + " 2>" + err_file;
+  std::string cmd = env + " " + std::string(PDCHECK_BINARY) + " " + args;
   if (!stdin_text.empty()) {
     const std::string in_file =
         testing::TempDir() + "pdcheck_in_" + std::to_string(getpid()) + ".txt";
@@ -36,17 +38,11 @@ CliRun pdcheck(const std::string& args, const std::string& stdin_text = "",
   } else {
     cmd += " </dev/null";
   }
+  pd_test::Captured c = pd_test::run_capture(cmd, err_file);
   CliRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
+  r.code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : -1;
+  r.out = std::move(c.out);
+  r.err = std::move(c.err);
   return r;
 }
 

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "run_capture.h"
+
 using nlohmann::json;
 
 namespace {
@@ -28,21 +30,14 @@ struct CliRun {
 CliRun pdcheck(const std::string& args, const std::string& env = "") {
   const std::string err_file =
       testing::TempDir() + "pdcheck_mesh_err_" + std::to_string(getpid()) + ".txt";
-  const std::string cmd =
-      env + " " + PDCHECK_BINARY + " " + args + " 2>" + err_file + " </dev/null";
+  const std::string cmd = env + " " + PDCHECK_BINARY + " " + args + " </dev/null";
   CliRun r;
   const auto t0 = std::chrono::steady_clock::now();
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int status = pclose(p);
+  pd_test::Captured c = pd_test::run_capture(cmd, err_file);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
+  r.code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : -1;
+  r.out = std::move(c.out);
+  r.err = std::move(c.err);
   return r;
 }
 

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "run_capture.h"
+
 using nlohmann::json;
 
 namespace {
@@ -27,7 +29,7 @@ struct CliRun {
 CliRun pdcheck(const std::string& args, const std::string& stdin_text = "") {
   const std::string tag = std::to_string(getpid());
   const std::string err_file = testing::TempDir() + "pdcheck_num_err_" + tag + ".txt";
-  std::string cmd = "exec " + std::string(PDCHECK_BINARY) + " " + args + " 2>" + err_file;
+  std::string cmd = "exec " + std::string(PDCHECK_BINARY) + " " + args;
   if (!stdin_text.empty()) {
     const std::string in_file = testing::TempDir() + "pdcheck_num_in_" + tag + ".txt";
     std::ofstream(in_file) << stdin_text;
@@ -35,20 +37,15 @@ CliRun pdcheck(const std::string& args, const std::string& stdin_text = "") {
   } else {
     cmd += " </dev/null";
   }
+  pd_test::Captured c = pd_test::run_capture(cmd, err_file);
   CliRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int status = pclose(p);
+  const int status = c.status;
+  r.out = std::move(c.out);
+  r.err = std::move(c.err);
   // The shell reports a child killed by signal s as exit code 128 + s.
   if (WIFEXITED(status) && WEXITSTATUS(status) > 128) r.signal = WEXITSTATUS(status) - 128;
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   r.code = WIFEXITED(status) && !r.signal ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
   return r;
 }
 
