@@ -6,6 +6,8 @@
 // solvers these numbers are used as they are.
 #pragma once
 
+#include <cstddef>
+
 namespace pd::tol {
 
 /// A point set whose smallest principal extent is below this fraction of its size
@@ -82,5 +84,12 @@ inline constexpr double kConcavityFraction = 0.25;
 inline constexpr int kDecomposeMaxPieces = 256;
 inline constexpr int kDecomposeMaxDepth = 24;
 inline constexpr int kDecomposeSamples = 1000;
+
+/// HTML report (report/write_html.h): the most triangles one part, piece or
+/// overlap is shown with (larger ones decimated: report/html_geometry.h), and
+/// the most the whole page holds (later findings then get no 3D view). Display
+/// only: they bound the page's size and load time (docs/report-format.md).
+inline constexpr size_t kHtmlPartTriangles = 4000;
+inline constexpr size_t kHtmlPageTriangles = 300000;
 
 }  // namespace pd::tol

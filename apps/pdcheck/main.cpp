@@ -16,10 +16,12 @@
 #include "batch/run.h"
 #include "printable.h"
 #include "report/fingerprint.h"
+#include "report/html_from_report.h"
 #include "report/output_file.h"
 #include "report/report_json.h"
 #include "report/review_json.h"
 #include "report/review_text.h"
+#include "report/write_html.h"
 #include "report/writer.h"
 #include "scene/scene.h"
 #include "scene/units.h"
@@ -51,6 +53,30 @@ const char* kExamples = R"(Examples:
                                           (docs/ci.md)
 )";
 
+// `pdcheck html REPORT.json -o PAGE.html`: 0 written, 3 written but a part's
+// geometry could not be read (named on stderr and on the page), 2 otherwise.
+int html_command(const std::string& report, const std::string& page, int jobs,
+                 double load_timeout, bool quiet) {
+  try {
+    const pd::OutputFile out = pd::check_output_file("-o", page);
+    pd::check_html_assets();
+    const pd::SavedReportPage made = pd::html_from_report(report, jobs, load_timeout);
+    for (const auto& p : made.problems) say("warning", p);
+    pd::write_output_file(out, made.html);
+    if (!quiet) std::cerr << "pdcheck: wrote " << pd::printable(page) << "\n";
+    return made.problems.empty() ? 0 : 3;
+  } catch (const pd::ReportInputError& e) {
+    say("error", e.what());
+  } catch (const pd::SceneError& e) {
+    say("error", std::string(e.what()) + " (the scene of " + report + ")");
+  } catch (const pd::HtmlAssetError& e) {
+    say("error", e.what());
+  } catch (const pd::OutputError& e) {
+    say("error", e.what());
+  }
+  return kExitUsage;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,11 +92,11 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 0;
   bool quiet = false;
   std::string baseline_path, suppressions_path, write_suppressions, fail_on_arg, junit, sarif;
+  std::string html, html_report, html_page;
   bool allow_stale = false;
   app.add_option("scene", scene_arg,
                  "scene JSON file, or - for standard input (a scene JSON or "
-                 "a part list: one mesh path per line, or id<TAB>path)")
-      ->required();
+                 "a part list: one mesh path per line, or id<TAB>path)");
   app.add_option("--tolerance", tolerance,
                  "depth at or below which an interference is a discretization false positive "
                  "(scene units; overrides the scene)");
@@ -131,6 +157,16 @@ int main(int argc, char** argv) {
                  "write a starting suppressions file for this run's findings (reasons to fill in)");
   app.add_option("--junit", junit, "also write JUnit XML to this file (atomically)");
   app.add_option("--sarif", sarif, "also write SARIF 2.1.0 to this file (atomically)");
+  app.add_option("--html", html,
+                 "also write a self-contained HTML page with a 3D view of every finding "
+                 "(atomically; docs/report-format.md)");
+  CLI::App* html_cmd = app.add_subcommand(
+      "html", "write the HTML page of a saved JSON report, reading its scene's meshes again "
+              "(exit 3: written, but a part could not be read)");
+  html_cmd->add_option("report", html_report, "a JSON report (--format json)")->required();
+  html_cmd->add_option("-o,--output", html_page, "the HTML file to write (atomically)")
+      ->required();
+  html_cmd->fallthrough();  // -j, --load-timeout, -q after the subcommand
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
   try {
     app.parse(argc, argv);
@@ -142,20 +178,33 @@ int main(int argc, char** argv) {
   // terminated run takes its workers and temporary files with it.
   signal(SIGPIPE, SIG_IGN);
   pd::install_termination_handlers();
+  if (html_cmd->parsed())
+    return html_command(html_report, html_page,
+                        jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
+                        load_timeout, quiet);
+  if (scene_arg.empty()) {
+    say("error", "a scene is required (a scene JSON file, or - for standard input); see --help");
+    return kExitUsage;
+  }
   if (!std::isfinite(pair_timeout)) {
     say("error", "--pair-timeout: must be a finite number of seconds (0 = none)");
     return kExitUsage;
   }
   // Every output path is checked before the run: a bad one fails now, not
   // after hours of solving.
-  std::optional<pd::OutputFile> out_file, junit_file, sarif_file, suppressions_file;
+  std::optional<pd::OutputFile> out_file, junit_file, sarif_file, suppressions_file, html_file;
   try {
     if (app.count("--output")) out_file = pd::check_output_file("-o", output);
     if (app.count("--junit")) junit_file = pd::check_output_file("--junit", junit);
     if (app.count("--sarif")) sarif_file = pd::check_output_file("--sarif", sarif);
+    if (app.count("--html")) html_file = pd::check_output_file("--html", html);
+    if (html_file) pd::check_html_assets();
     if (app.count("--write-suppressions"))
       suppressions_file = pd::check_output_file("--write-suppressions", write_suppressions);
   } catch (const pd::OutputError& e) {
+    say("error", e.what());
+    return kExitOutput;
+  } catch (const pd::HtmlAssetError& e) {
     say("error", e.what());
     return kExitOutput;
   }
@@ -282,10 +331,14 @@ int main(int argc, char** argv) {
       pd::write_stdout(text);
     if (junit_file) pd::write_output_file(*junit_file, pd::render_junit(report));
     if (sarif_file) pd::write_output_file(*sarif_file, pd::render_sarif(report));
+    if (html_file) pd::write_output_file(*html_file, pd::render_html(report));
     if (suppressions_file)
       pd::write_output_file(*suppressions_file,
                             pd::suppressions_to_write(report, review_opt.today));
   } catch (const pd::OutputError& e) {
+    say("error", e.what());
+    return kExitOutput;
+  } catch (const pd::HtmlAssetError& e) {  // the library removed during the run
     say("error", e.what());
     return kExitOutput;
   }

@@ -4,12 +4,14 @@
 
 namespace pd {
 
-std::string render_json(const ReportInput& in) {
+nlohmann::ordered_json report_document(const ReportInput& in) {
   nlohmann::ordered_json doc = report_json(in.context, in.run);
   auto& pairs = doc["pairs"];
   for (size_t k = 0; k < pairs.size(); ++k) add_pair_review(pairs[k], in.review.pairs[k]);
   add_run_review(doc, doc["summary"], in.review, in.review_options);
-  return doc.dump(2) + "\n";
+  return doc;
 }
+
+std::string render_json(const ReportInput& in) { return report_document(in).dump(2) + "\n"; }
 
 }  // namespace pd

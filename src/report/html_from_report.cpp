@@ -1,0 +1,71 @@
+#include "report/html_from_report.h"
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "report/json_input.h"
+#include "report/write_html.h"
+#include "scene/parts.h"
+#include "scene/scene.h"
+
+namespace pd {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The scene as the run named it, else beside the report (a report moved with
+// its scene); the first that exists, or the first when none does.
+std::string find_scene(const std::string& scene, const std::string& report_path) {
+  const fs::path as_written(scene);
+  if (as_written.is_absolute() || fs::exists(as_written)) return scene;
+  const fs::path beside = fs::path(report_path).parent_path() / as_written;
+  std::error_code ec;
+  return fs::exists(beside, ec) ? beside.string() : scene;
+}
+
+}  // namespace
+
+SavedReportPage html_from_report(const std::string& report_path, int threads,
+                                 double load_timeout) {
+  const nlohmann::json raw = parse_json_input(read_input_file(report_path), report_path);
+  const JsonAt root{raw, report_path, "$"};
+  root.object();
+  if (!root.has("pairs") || !root.has("scene"))
+    root.fail("not a pdcheck JSON report (--format json): no \"pairs\" or \"scene\"");
+  root["pairs"].array();
+  const std::string scene_name = root["scene"].string();
+  if (scene_name == "-")
+    root["scene"].fail("the scene was read from standard input: its geometry cannot be read "
+                       "again (write the page during the run with --html)");
+  std::optional<std::string> units;
+  if (root.has("units")) units = root["units"].string();
+  const std::string scene_path = find_scene(scene_name, report_path);
+  SceneSpec scene = load_scene_file(scene_path, units, threads);
+  if (root.has("tolerance")) scene.tolerance = root["tolerance"].number();
+  const std::vector<Part> parts = build_parts(scene, threads, {}, load_timeout);
+
+  SavedReportPage page;
+  std::map<std::string, const Part*> by_id;
+  for (const Part& p : parts) by_id.emplace(p.id, &p);
+  std::set<std::string> named;  // the parts of the report's findings
+  for (const auto& p : raw["pairs"])
+    if (p.value("status", "") != "separated")
+      for (const char* side : {"a", "b"}) named.insert(p.value(side, ""));
+  for (const std::string& id : named) {
+    const auto it = by_id.find(id);
+    if (it == by_id.end())
+      page.problems.push_back("part \"" + id + "\" is in the report but not in " + scene_path +
+                              " now: its findings have no 3D view");
+    else if (it->second->error)
+      page.problems.push_back("part \"" + id + "\" (" + it->second->source +
+                              "): could not be read: " + *it->second->error +
+                              "; its findings have no 3D view");
+  }
+  // Ordered as written (nlohmann::json sorts keys; the page does not care).
+  page.html = render_html(nlohmann::ordered_json::parse(raw.dump()), parts, page.problems);
+  return page;
+}
+
+}  // namespace pd

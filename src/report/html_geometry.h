@@ -1,0 +1,60 @@
+// The geometry an HTML report shows: each part as a small triangle mesh, the
+// realising pieces, and the overlap of two convex sets. Display only: what is
+// decimated says how, in `how`.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/hull.h"
+#include "geometry/mesh.h"
+#include "scene/parts.h"
+
+namespace pd {
+
+/// Triangles for a browser: vertices relative to `origin` (float precision is
+/// then relative to the part's size, not to its distance from the scene origin).
+struct WebMesh {
+  Vec3 origin = Vec3::Zero();
+  std::vector<float> positions;               ///< x, y, z per vertex, relative to origin
+  std::vector<std::array<unsigned, 3>> triangles;
+  std::string how;  ///< e.g. "mesh, 1,204 triangles" or "hull of 400 of 12,000 hull vertices"
+
+  size_t vertex_count() const { return positions.size() / 3; }
+};
+
+/// A part as at most `max_triangles` triangles: its placed surface mesh when it
+/// has one (nonconvex parts), decimated by vertex clustering when too large;
+/// else its convex pieces' hulls; past the cap, the hull of all its vertices,
+/// and past it again the hull of an even subsample of those. Empty for a part
+/// that has no geometry (an unusable part).
+WebMesh part_web_mesh(const Part& part, size_t max_triangles);
+
+/// The hull of one convex piece (points, segments and flat pieces included:
+/// flat ones as their triangulated polygon, lower ones as nothing).
+WebMesh hull_web_mesh(const Points& vertices, size_t max_triangles);
+
+/// The convex pieces realising a pair's depth ([i, j] of the report), when the
+/// parts hold them: the decomposition's pieces when one was made, else the
+/// part's own pieces.
+const Hull* realising_piece(const Part& part, int index);
+
+/// A ∩ B of two convex point sets' hulls, as a hull; nullopt when they do not
+/// overlap in a solid (touching, or apart). Exact up to rounding: every vertex of
+/// the intersection is an end of one hull's edge clipped to the other hull.
+std::optional<WebMesh> convex_overlap(const Points& a, const Points& b, size_t max_triangles);
+
+/// Every vertex of a part (all pieces), placed.
+Points part_vertices(const Part& part);
+
+/// Vertex clustering: vertices snapped to a grid of `cells` cells along the
+/// longest box side, merged per cell (their mean), collapsed and repeated
+/// triangles dropped. Keeps the shape's outline at the grid's resolution.
+Mesh cluster_vertices(const Mesh& mesh, int cells);
+
+/// Standard base64 of raw bytes (the page decodes typed arrays from it).
+std::string base64(const void* data, size_t bytes);
+
+}  // namespace pd

@@ -1,0 +1,247 @@
+// The HTML page: the report's findings as JSON data and their geometry as
+// base64 typed arrays in one <script type="application/json">, the page's own
+// script and style (src/report/html/, embedded at build time) and three.js
+// (read from the installed package at generation time) inlined.
+#include "report/write_html.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "report/html_assets.h"  // generated from src/report/html/ (CMakeLists.txt)
+#include "report/html_geometry.h"
+#include "tolerances.h"
+
+namespace pd {
+
+using json = nlohmann::ordered_json;
+
+namespace {
+
+struct Asset {
+  std::string path, text;
+};
+
+// Where the inlined library is: $PDCHECK_THREE_DIR (three.min.js and
+// OrbitControls.js in it), else the files CMake found at configure time.
+std::vector<std::string> asset_paths() {
+  if (const char* dir = std::getenv("PDCHECK_THREE_DIR"); dir && *dir)
+    return {std::string(dir) + "/three.min.js", std::string(dir) + "/OrbitControls.js"};
+  return {PDCHECK_THREE_JS, PDCHECK_ORBIT_CONTROLS_JS};
+}
+
+Asset read_asset(const std::string& path) {
+  if (path.empty() || path.find("NOTFOUND") != std::string::npos)
+    throw HtmlAssetError(
+        "html: three.js was not found when pdcheck was configured (install Debian's libjs-three, "
+        "e.g. by scripts/setup.sh, and re-run cmake; or set PDCHECK_THREE_DIR to a directory "
+        "holding three.min.js and OrbitControls.js)");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in || text.str().empty())
+    throw HtmlAssetError("html: cannot read " + path +
+                         ", which the page inlines (three.js from Debian's libjs-three: install "
+                         "it, e.g. by scripts/setup.sh, or set PDCHECK_THREE_DIR)");
+  return {path, text.str()};
+}
+
+// Text inlined in a <script> must not close it early.
+std::string script_safe(std::string s) {
+  for (size_t at = 0; (at = s.find("</", at)) != std::string::npos; at += 3) s.replace(at, 2, "<\\/");
+  return s;
+}
+
+// JSON in a <script type="application/json">: '<' only occurs in strings,
+// where \u003c means the same and cannot end the element.
+std::string json_in_html(const json& j) {
+  const std::string text = j.dump(-1, ' ', false, json::error_handler_t::replace);
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) out += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  return out;
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  return out;
+}
+
+// One pass over the template: a value is never searched for placeholders (a
+// part id of "{{DATA}}" stays text).
+std::string fill_template(const std::string& page, const std::map<std::string, std::string>& values) {
+  std::string out;
+  size_t at = 0;
+  for (size_t open; (open = page.find("{{", at)) != std::string::npos;) {
+    const size_t close = page.find("}}", open);
+    const auto it = close == std::string::npos ? values.end()
+                                               : values.find(page.substr(open + 2, close - open - 2));
+    if (it == values.end()) {
+      out.append(page, at, open + 2 - at);
+      at = open + 2;
+      continue;
+    }
+    out.append(page, at, open - at).append(it->second);
+    at = close + 2;
+  }
+  return out.append(page, at, std::string::npos);
+}
+
+json mesh_json(const std::string& label, const WebMesh& m) {
+  std::vector<unsigned> idx;
+  idx.reserve(m.triangles.size() * 3);
+  for (const auto& t : m.triangles) idx.insert(idx.end(), t.begin(), t.end());
+  return {{"label", label},
+          {"o", {m.origin.x(), m.origin.y(), m.origin.z()}},
+          {"v", base64(m.positions.data(), m.positions.size() * sizeof(float))},
+          {"t", base64(idx.data(), idx.size() * sizeof(unsigned))},
+          {"triangles", m.triangles.size()},
+          {"how", m.how}};
+}
+
+int status_rank(const std::string& s) {
+  if (s == "interference") return 0;
+  if (s == "clearance_violation") return 1;
+  if (s == "error") return 2;
+  return 3;  // false_positive
+}
+
+double depth_of(const json& p) { return p.contains("depth") ? p["depth"].get<double>() : 0.0; }
+
+}  // namespace
+
+void check_html_assets() {
+  for (const auto& path : asset_paths()) read_asset(path);
+}
+
+std::string render_html(const json& report, const std::vector<Part>& parts,
+                        const std::vector<std::string>& notes_in) {
+  std::vector<Asset> assets;
+  for (const auto& path : asset_paths()) assets.push_back(read_asset(path));
+
+  // Findings: every pair that is not separated, interference first, deeper first.
+  std::vector<const json*> findings;
+  if (report.contains("pairs"))
+    for (const json& p : report["pairs"])
+      if (p.value("status", "") != "separated") findings.push_back(&p);
+  std::stable_sort(findings.begin(), findings.end(), [](const json* x, const json* y) {
+    const int rx = status_rank(x->value("status", "")), ry = status_rank(y->value("status", ""));
+    return rx != ry ? rx < ry : depth_of(*x) > depth_of(*y);
+  });
+
+  std::map<std::string, const Part*> by_id;
+  for (const Part& p : parts) by_id.emplace(p.id, &p);
+  std::vector<std::string> notes = notes_in;
+  json meshes = json::array(), rows = json::array();
+  std::map<std::string, int> part_mesh;  // part id → index in meshes (−1: none)
+  size_t budget = tol::kHtmlPageTriangles, skipped = 0;
+  auto add_mesh = [&](const std::string& label, const WebMesh& m) -> json {
+    if (m.triangles.empty()) return nullptr;
+    budget -= std::min(budget, m.triangles.size());
+    meshes.push_back(mesh_json(label, m));
+    return static_cast<int>(meshes.size()) - 1;
+  };
+  auto mesh_of_part = [&](const std::string& id) -> json {
+    if (auto it = part_mesh.find(id); it != part_mesh.end())
+      return it->second < 0 ? json(nullptr) : json(it->second);
+    const auto found = by_id.find(id);
+    json index = nullptr;
+    if (found != by_id.end()) index = add_mesh(id, part_web_mesh(*found->second, tol::kHtmlPartTriangles));
+    part_mesh[id] = index.is_null() ? -1 : index.get<int>();
+    return index;
+  };
+
+  for (const json* pp : findings) {
+    const json& p = *pp;
+    json row = {{"a", p.value("a", "")},        {"b", p.value("b", "")},
+                {"fingerprint", p.value("fingerprint", "")},
+                {"status", p.value("status", "")}};
+    for (const char* key : {"depth", "direction", "margin", "depth_source", "pieces", "confirmed",
+                            "error", "baseline_state", "suppressed", "warnings", "hull_depth",
+                            "depth_bounds", "distance", "clearance", "motion"})
+      if (p.contains(key)) row[key] = p[key];
+    if (row.contains("motion")) row["motion"].erase("series");
+    if (budget == 0) {
+      ++skipped;
+      row["view"] = nullptr;
+      rows.push_back(row);
+      continue;
+    }
+    json view = {{"a", mesh_of_part(row["a"])}, {"b", mesh_of_part(row["b"])}};
+    const auto pa = by_id.find(row["a"]), pb = by_id.find(row["b"]);
+    if (pa != by_id.end() && pb != by_id.end() && !pa->second->error && !pb->second->error &&
+        depth_of(p) > 0) {
+      // What the depth is measured on: the realising pieces when the report names
+      // them and the parts hold them, else the parts' hulls.
+      const Hull *ha = nullptr, *hb = nullptr;
+      if (p.contains("pieces") && p["pieces"].is_array() && p["pieces"].size() == 2) {
+        ha = realising_piece(*pa->second, p["pieces"][0].get<int>());
+        hb = realising_piece(*pb->second, p["pieces"][1].get<int>());
+        if (ha && hb) {
+          view["piece_a"] = add_mesh("piece", hull_web_mesh(ha->vertices, tol::kHtmlPartTriangles));
+          view["piece_b"] = add_mesh("piece", hull_web_mesh(hb->vertices, tol::kHtmlPartTriangles));
+        }
+      }
+      const bool on_pieces = ha && hb;
+      const auto overlap =
+          convex_overlap(on_pieces ? ha->vertices : part_vertices(*pa->second),
+                         on_pieces ? hb->vertices : part_vertices(*pb->second),
+                         tol::kHtmlPartTriangles);
+      if (overlap) {
+        view["overlap"] = add_mesh("overlap", *overlap);
+        view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";
+      }
+    }
+    row["view"] = view;
+    rows.push_back(row);
+  }
+  if (skipped)
+    notes.push_back(std::to_string(skipped) + " findings have no 3D view: the page's geometry "
+                    "budget (" + std::to_string(tol::kHtmlPageTriangles) +
+                    " triangles) went to the findings listed first");
+  json part_errors = json::array();
+  if (report.contains("parts"))
+    for (const json& p : report["parts"])
+      if (p.contains("error")) part_errors.push_back({{"id", p["id"]}, {"error", p["error"]}});
+
+  json data = {{"tool", report.value("tool", json::object())},
+               {"scene", report.value("scene", "")},
+               {"units", report.value("units", "")},
+               {"tolerance", report.value("tolerance", 0.0)},
+               {"method", report.value("method", json::object())},
+               {"seconds", report.value("seconds", 0.0)},
+               {"summary", report.value("summary", json::object())},
+               {"findings", rows},
+               {"meshes", meshes},
+               {"part_errors", part_errors},
+               {"notes", notes},
+               {"caps",
+                {{"part_triangles", tol::kHtmlPartTriangles},
+                 {"page_triangles", tol::kHtmlPageTriangles}}}};
+  if (report.contains("stage_seconds")) data["stage_seconds"] = report["stage_seconds"];
+  if (report.contains("baseline")) data["baseline_file"] = report["baseline"].value("file", "");
+
+  const std::string title = "pdcheck: " + report.value("scene", std::string("report"));
+  return fill_template(kHtmlPage,
+                       {{"TITLE", html_escape(title)},
+                        {"STYLE", kHtmlStyle},
+                        {"LICENCE", html_escape(kThreeLicence)},
+                        {"DATA", json_in_html(data)},
+                        {"THREE", script_safe(assets[0].text) + "\n" + script_safe(assets[1].text)},
+                        {"SCRIPT", script_safe(kHtmlScript)}});
+}
+
+std::string render_html(const ReportInput& in) {
+  return render_html(report_document(in), in.run.parts);
+}
+
+}  // namespace pd
