@@ -55,8 +55,8 @@ const char* kExamples = R"(Examples:
 
 // `pdcheck html REPORT.json -o PAGE.html`: 0 written, 3 written but a part's
 // geometry could not be read (named on stderr and on the page), 2 otherwise.
-int html_command(const std::string& report, const std::string& page, int jobs,
-                 double load_timeout, bool quiet) {
+int html_command(const std::string& report, const std::string& page, int jobs, double load_timeout,
+                 bool quiet) {
   try {
     const pd::OutputFile out = pd::check_output_file("-o", page);
     pd::check_html_assets();
@@ -161,11 +161,11 @@ int main(int argc, char** argv) {
                  "also write a self-contained HTML page with a 3D view of every finding "
                  "(atomically; docs/report-format.md)");
   CLI::App* html_cmd = app.add_subcommand(
-      "html", "write the HTML page of a saved JSON report, reading its scene's meshes again "
-              "(exit 3: written, but a part could not be read)");
+      "html",
+      "write the HTML page of a saved JSON report, reading its scene's meshes again "
+      "(exit 3: written, but a part could not be read)");
   html_cmd->add_option("report", html_report, "a JSON report (--format json)")->required();
-  html_cmd->add_option("-o,--output", html_page, "the HTML file to write (atomically)")
-      ->required();
+  html_cmd->add_option("-o,--output", html_page, "the HTML file to write (atomically)")->required();
   html_cmd->fallthrough();  // -j, --load-timeout, -q after the subcommand
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
   try {
@@ -179,9 +179,10 @@ int main(int argc, char** argv) {
   signal(SIGPIPE, SIG_IGN);
   pd::install_termination_handlers();
   if (html_cmd->parsed())
-    return html_command(html_report, html_page,
-                        jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
-                        load_timeout, quiet);
+    return html_command(
+        html_report, html_page,
+        jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
+        load_timeout, quiet);
   if (scene_arg.empty()) {
     say("error", "a scene is required (a scene JSON file, or - for standard input); see --help");
     return kExitUsage;

@@ -19,17 +19,14 @@ namespace {
 // its scene); the first that exists, or the first when none does.
 std::string find_scene(const std::string& scene, const std::string& report_path) {
   const fs::path as_written(scene);
-  if (as_written.is_absolute() || fs::exists(as_written)) return scene;
-  const fs::path beside = fs::path(report_path).parent_path() / as_written;
   std::error_code ec;
+  if (as_written.is_absolute() || fs::exists(as_written, ec)) return scene;
+  const fs::path beside = fs::path(report_path).parent_path() / as_written;
   return fs::exists(beside, ec) ? beside.string() : scene;
 }
 
-}  // namespace
-
-SavedReportPage html_from_report(const std::string& report_path, int threads,
-                                 double load_timeout) {
-  const nlohmann::json raw = parse_json_input(read_input_file(report_path), report_path);
+SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_path, int threads,
+                        double load_timeout) {
   const JsonAt root{raw, report_path, "$"};
   root.object();
   if (!root.has("pairs") || !root.has("scene"))
@@ -37,8 +34,9 @@ SavedReportPage html_from_report(const std::string& report_path, int threads,
   root["pairs"].array();
   const std::string scene_name = root["scene"].string();
   if (scene_name == "-")
-    root["scene"].fail("the scene was read from standard input: its geometry cannot be read "
-                       "again (write the page during the run with --html)");
+    root["scene"].fail(
+        "the scene was read from standard input: its geometry cannot be read "
+        "again (write the page during the run with --html)");
   std::optional<std::string> units;
   if (root.has("units")) units = root["units"].string();
   const std::string scene_path = find_scene(scene_name, report_path);
@@ -63,9 +61,19 @@ SavedReportPage html_from_report(const std::string& report_path, int threads,
                               "): could not be read: " + *it->second->error +
                               "; its findings have no 3D view");
   }
-  // Ordered as written (nlohmann::json sorts keys; the page does not care).
   page.html = render_html(nlohmann::ordered_json::parse(raw.dump()), parts, page.problems);
   return page;
+}
+
+}  // namespace
+
+SavedReportPage html_from_report(const std::string& report_path, int threads, double load_timeout) {
+  const nlohmann::json raw = parse_json_input(read_input_file(report_path), report_path);
+  try {
+    return page_of(raw, report_path, threads, load_timeout);
+  } catch (const nlohmann::json::exception& e) {  // a value of the wrong type
+    throw ReportInputError(report_path + ": not a pdcheck JSON report: " + e.what());
+  }
 }
 
 }  // namespace pd

@@ -61,8 +61,9 @@ std::vector<std::array<int, 3>> polygon_fan(const Points& pts) {
     const Vec3 d = pts.col(k) - c;
     angle[static_cast<size_t>(k)] = std::atan2(d.dot(v), d.dot(u));
   }
-  std::sort(order.begin(), order.end(),
-            [&](int i, int j) { return angle[static_cast<size_t>(i)] < angle[static_cast<size_t>(j)]; });
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    return angle[static_cast<size_t>(i)] < angle[static_cast<size_t>(j)];
+  });
   std::vector<std::array<int, 3>> tris;
   for (size_t k = 1; k + 1 < order.size(); ++k) tris.push_back({order[0], order[k], order[k + 1]});
   return tris;
@@ -92,7 +93,8 @@ void append(WebMesh& to, const WebMesh& from) {
   const Vec3 shift = from.origin - to.origin;
   for (size_t k = 0; k < from.positions.size(); ++k)
     to.positions.push_back(static_cast<float>(from.positions[k] + shift[static_cast<long>(k % 3)]));
-  for (const auto& t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  for (const auto& t : from.triangles)
+    to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
 
 }  // namespace
@@ -179,14 +181,19 @@ WebMesh part_web_mesh(const Part& part, size_t max_triangles) {
       }
     }
     if (fits) {
-      all.how = count_text(pieces.size()) + " convex pieces, " +
-                count_text(all.triangles.size()) + " triangles";
+      all.how = count_text(pieces.size()) + " convex pieces, " + count_text(all.triangles.size()) +
+                " triangles";
       return all;
     }
   }
   WebMesh m = hull_web_mesh(part_vertices(part), max_triangles);
-  if (pieces.size() > 1) m.how += " (of " + count_text(pieces.size()) + " pieces: too many triangles)";
+  if (pieces.size() > 1)
+    m.how += " (of " + count_text(pieces.size()) + " pieces: too many triangles)";
   return m;
+}
+
+size_t piece_count(const Part& part) {
+  return shown_pieces(part).size();
 }
 
 const Hull* realising_piece(const Part& part, int index) {
@@ -219,9 +226,12 @@ std::optional<WebMesh> convex_overlap(const Points& a, const Points& b, size_t m
       for (size_t f = 0; f < other.normals.size() && inside; ++f) {
         const double d0 = other.normals[f].dot(p0) + other.offsets[f];
         const double d1 = other.normals[f].dot(p1) + other.offsets[f];
-        if (d0 > eps && d1 > eps) inside = false;
-        else if (d0 > eps) t0 = std::max(t0, d0 / (d0 - d1));
-        else if (d1 > eps) t1 = std::min(t1, d0 / (d0 - d1));
+        if (d0 > eps && d1 > eps)
+          inside = false;
+        else if (d0 > eps)
+          t0 = std::max(t0, d0 / (d0 - d1));
+        else if (d1 > eps)
+          t1 = std::min(t1, d0 / (d0 - d1));
         if (t0 > t1) inside = false;
       }
       if (!inside) continue;
@@ -252,8 +262,8 @@ Mesh cluster_vertices(const Mesh& mesh, int cells) {
   std::vector<int> count;
   for (long k = 0; k < n; ++k) {
     const Vec3 q = ((mesh.vertices.col(k) - lo) / size).array().floor();
-    const auto key = std::make_tuple(static_cast<long>(q[0]), static_cast<long>(q[1]),
-                                     static_cast<long>(q[2]));
+    const auto key =
+        std::make_tuple(static_cast<long>(q[0]), static_cast<long>(q[1]), static_cast<long>(q[2]));
     auto [it, added] = cell_of.emplace(key, static_cast<int>(sum.size()));
     if (added) {
       sum.push_back(Vec3::Zero());
@@ -275,7 +285,8 @@ Mesh cluster_vertices(const Mesh& mesh, int cells) {
   }
   Mesh out;
   out.vertices.resize(3, static_cast<long>(sum.size()));
-  for (size_t k = 0; k < sum.size(); ++k) out.vertices.col(static_cast<long>(k)) = sum[k] / count[k];
+  for (size_t k = 0; k < sum.size(); ++k)
+    out.vertices.col(static_cast<long>(k)) = sum[k] / count[k];
   out.triangles.resize(3, static_cast<long>(kept.size()));
   for (size_t t = 0; t < kept.size(); ++t)
     for (int c = 0; c < 3; ++c) out.triangles(c, static_cast<long>(t)) = kept[t][c];
@@ -288,8 +299,8 @@ std::string base64(const void* data, size_t bytes) {
   std::string out;
   out.reserve((bytes + 2) / 3 * 4);
   for (size_t k = 0; k < bytes; k += 3) {
-    const unsigned v = (p[k] << 16) | (k + 1 < bytes ? p[k + 1] << 8 : 0) |
-                       (k + 2 < bytes ? p[k + 2] : 0);
+    const unsigned v =
+        (p[k] << 16) | (k + 1 < bytes ? p[k + 1] << 8 : 0) | (k + 2 < bytes ? p[k + 2] : 0);
     out += abc[(v >> 18) & 63];
     out += abc[(v >> 12) & 63];
     out += k + 1 < bytes ? abc[(v >> 6) & 63] : '=';

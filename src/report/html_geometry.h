@@ -18,7 +18,7 @@ namespace pd {
 /// then relative to the part's size, not to its distance from the scene origin).
 struct WebMesh {
   Vec3 origin = Vec3::Zero();
-  std::vector<float> positions;               ///< x, y, z per vertex, relative to origin
+  std::vector<float> positions;  ///< x, y, z per vertex, relative to origin
   std::vector<std::array<unsigned, 3>> triangles;
   std::string how;  ///< e.g. "mesh, 1,204 triangles" or "hull of 400 of 12,000 hull vertices"
 
@@ -40,6 +40,8 @@ WebMesh hull_web_mesh(const Points& vertices, size_t max_triangles);
 /// parts hold them: the decomposition's pieces when one was made, else the
 /// part's own pieces.
 const Hull* realising_piece(const Part& part, int index);
+/// How many pieces realising_piece() chooses from.
+size_t piece_count(const Part& part);
 
 /// A ∩ B of two convex point sets' hulls, as a hull; nullopt when they do not
 /// overlap in a solid (touching, or apart). Exact up to rounding: every vertex of

@@ -50,7 +50,8 @@ Asset read_asset(const std::string& path) {
 
 // Text inlined in a <script> must not close it early.
 std::string script_safe(std::string s) {
-  for (size_t at = 0; (at = s.find("</", at)) != std::string::npos; at += 3) s.replace(at, 2, "<\\/");
+  for (size_t at = 0; (at = s.find("</", at)) != std::string::npos; at += 3)
+    s.replace(at, 2, "<\\/");
   return s;
 }
 
@@ -67,24 +68,35 @@ std::string json_in_html(const json& j) {
 std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   return out;
 }
 
 // One pass over the template: a value is never searched for placeholders (a
 // part id of "{{DATA}}" stays text).
-std::string fill_template(const std::string& page, const std::map<std::string, std::string>& values) {
+std::string fill_template(const std::string& page,
+                          const std::map<std::string, std::string>& values) {
   std::string out;
   size_t at = 0;
   for (size_t open; (open = page.find("{{", at)) != std::string::npos;) {
     const size_t close = page.find("}}", open);
-    const auto it = close == std::string::npos ? values.end()
-                                               : values.find(page.substr(open + 2, close - open - 2));
+    const auto it = close == std::string::npos
+                        ? values.end()
+                        : values.find(page.substr(open + 2, close - open - 2));
     if (it == values.end()) {
       out.append(page, at, open + 2 - at);
       at = open + 2;
@@ -115,7 +127,9 @@ int status_rank(const std::string& s) {
   return 3;  // false_positive
 }
 
-double depth_of(const json& p) { return p.contains("depth") ? p["depth"].get<double>() : 0.0; }
+double depth_of(const json& p) {
+  return p.contains("depth") ? p["depth"].get<double>() : 0.0;
+}
 
 }  // namespace
 
@@ -155,14 +169,16 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
       return it->second < 0 ? json(nullptr) : json(it->second);
     const auto found = by_id.find(id);
     json index = nullptr;
-    if (found != by_id.end()) index = add_mesh(id, part_web_mesh(*found->second, tol::kHtmlPartTriangles));
+    if (found != by_id.end())
+      index = add_mesh(id, part_web_mesh(*found->second, tol::kHtmlPartTriangles));
     part_mesh[id] = index.is_null() ? -1 : index.get<int>();
     return index;
   };
 
   for (const json* pp : findings) {
     const json& p = *pp;
-    json row = {{"a", p.value("a", "")},        {"b", p.value("b", "")},
+    json row = {{"a", p.value("a", "")},
+                {"b", p.value("b", "")},
                 {"fingerprint", p.value("fingerprint", "")},
                 {"status", p.value("status", "")}};
     for (const char* key : {"depth", "direction", "margin", "depth_source", "pieces", "confirmed",
@@ -183,19 +199,20 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
       // What the depth is measured on: the realising pieces when the report names
       // them and the parts hold them, else the parts' hulls.
       const Hull *ha = nullptr, *hb = nullptr;
-      if (p.contains("pieces") && p["pieces"].is_array() && p["pieces"].size() == 2) {
+      if (p.contains("pieces") && p["pieces"].is_array() && p["pieces"].size() == 2 &&
+          p["pieces"][0].is_number_integer() && p["pieces"][1].is_number_integer()) {
         ha = realising_piece(*pa->second, p["pieces"][0].get<int>());
         hb = realising_piece(*pb->second, p["pieces"][1].get<int>());
-        if (ha && hb) {
+        // A part of one piece is its own realising piece: drawn once, as the part.
+        if (ha && hb && piece_count(*pa->second) > 1)
           view["piece_a"] = add_mesh("piece", hull_web_mesh(ha->vertices, tol::kHtmlPartTriangles));
+        if (ha && hb && piece_count(*pb->second) > 1)
           view["piece_b"] = add_mesh("piece", hull_web_mesh(hb->vertices, tol::kHtmlPartTriangles));
-        }
       }
       const bool on_pieces = ha && hb;
-      const auto overlap =
-          convex_overlap(on_pieces ? ha->vertices : part_vertices(*pa->second),
-                         on_pieces ? hb->vertices : part_vertices(*pb->second),
-                         tol::kHtmlPartTriangles);
+      const auto overlap = convex_overlap(on_pieces ? ha->vertices : part_vertices(*pa->second),
+                                          on_pieces ? hb->vertices : part_vertices(*pb->second),
+                                          tol::kHtmlPartTriangles);
       if (overlap) {
         view["overlap"] = add_mesh("overlap", *overlap);
         view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";
@@ -205,28 +222,30 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
     rows.push_back(row);
   }
   if (skipped)
-    notes.push_back(std::to_string(skipped) + " findings have no 3D view: the page's geometry "
-                    "budget (" + std::to_string(tol::kHtmlPageTriangles) +
+    notes.push_back(std::to_string(skipped) +
+                    " findings have no 3D view: the page's geometry "
+                    "budget (" +
+                    std::to_string(tol::kHtmlPageTriangles) +
                     " triangles) went to the findings listed first");
   json part_errors = json::array();
   if (report.contains("parts"))
     for (const json& p : report["parts"])
       if (p.contains("error")) part_errors.push_back({{"id", p["id"]}, {"error", p["error"]}});
 
-  json data = {{"tool", report.value("tool", json::object())},
-               {"scene", report.value("scene", "")},
-               {"units", report.value("units", "")},
-               {"tolerance", report.value("tolerance", 0.0)},
-               {"method", report.value("method", json::object())},
-               {"seconds", report.value("seconds", 0.0)},
-               {"summary", report.value("summary", json::object())},
-               {"findings", rows},
-               {"meshes", meshes},
-               {"part_errors", part_errors},
-               {"notes", notes},
-               {"caps",
-                {{"part_triangles", tol::kHtmlPartTriangles},
-                 {"page_triangles", tol::kHtmlPageTriangles}}}};
+  json data = {
+      {"tool", report.value("tool", json::object())},
+      {"scene", report.value("scene", "")},
+      {"units", report.value("units", "")},
+      {"tolerance", report.value("tolerance", 0.0)},
+      {"method", report.value("method", json::object())},
+      {"seconds", report.value("seconds", 0.0)},
+      {"summary", report.value("summary", json::object())},
+      {"findings", rows},
+      {"meshes", meshes},
+      {"part_errors", part_errors},
+      {"notes", notes},
+      {"caps",
+       {{"part_triangles", tol::kHtmlPartTriangles}, {"page_triangles", tol::kHtmlPageTriangles}}}};
   if (report.contains("stage_seconds")) data["stage_seconds"] = report["stage_seconds"];
   if (report.contains("baseline")) data["baseline_file"] = report["baseline"].value("file", "");
 

@@ -12,6 +12,8 @@ nlohmann::ordered_json report_document(const ReportInput& in) {
   return doc;
 }
 
-std::string render_json(const ReportInput& in) { return report_document(in).dump(2) + "\n"; }
+std::string render_json(const ReportInput& in) {
+  return report_document(in).dump(2) + "\n";
+}
 
 }  // namespace pd

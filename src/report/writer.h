@@ -29,10 +29,10 @@ struct ReportFormat {
 const std::vector<ReportFormat>& report_formats();
 const ReportFormat* find_report_format(const std::string& name);
 
-std::string render_json(const ReportInput& in);   // write_json.cpp
+std::string render_json(const ReportInput& in);  // write_json.cpp
 /// The JSON report as a document (render_json's, before printing; --html reads it).
 nlohmann::ordered_json report_document(const ReportInput& in);  // write_json.cpp
-std::string render_jsonl(const ReportInput& in);  // write_jsonl.cpp
+std::string render_jsonl(const ReportInput& in);                // write_jsonl.cpp
 /// The JSON Lines summary line, also after pair lines streamed as they finished.
 std::string jsonl_tail(const ReportInput& in);    // write_jsonl.cpp
 std::string render_junit(const ReportInput& in);  // write_junit.cpp

@@ -503,5 +503,6 @@
   window.addEventListener('hashchange', fromHash);
   if (!fromHash() && findings.length) select(0, false, false);
   if (!findings.length) $('view-title').textContent = 'No findings: nothing to show in 3D';
+  api.readyMs = performance.now();
   api.ready = true;
 })();
