@@ -84,6 +84,12 @@ inline constexpr double kConcavityFraction = 0.25;
 inline constexpr int kDecomposeMaxPieces = 256;
 inline constexpr int kDecomposeMaxDepth = 24;
 inline constexpr int kDecomposeSamples = 1000;
+/// Work budget of one decomposition: concavity estimates (one per cell and per
+/// tried merge, ~1-5 ms each). Deterministic, unlike the time box.
+inline constexpr long kDecomposeMaxWork = 4000;
+/// Samples of the coarse screen run before a piece's full estimate: a cell it
+/// finds more than twice the tolerance concave is cut without the full one.
+inline constexpr int kDecomposeScreenSamples = 64;
 
 /// HTML report (report/write_html.h): the most triangles one part, piece or
 /// overlap is shown with (larger ones decimated: report/html_geometry.h), and

@@ -19,6 +19,9 @@ namespace {
 
 const Vec3 kFar(20000.0, -3000.0, 500.0);
 
+// Tests decide on the work budget (concavity estimates), never on wall time.
+const DecomposeLimits kBudget{INFINITY, tol::kDecomposeMaxWork};
+
 struct HullTest {
   HullFacets f;
   Vec3 centre;
@@ -87,7 +90,7 @@ void expect_cover_and_within(const Mesh& m, const Decomposition& d, double tol, 
 
 TEST(Decompose, ConvexPartIsOnePiece) {
   const Mesh b = float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFar));
-  const Decomposition d = decompose_convex(b, 0.025, 10.0);
+  const Decomposition d = decompose_convex(b, 0.025, kBudget);
   EXPECT_TRUE(d.complete);
   ASSERT_EQ(d.pieces.size(), 1u);
   expect_cover_and_within(b, d, 0.025, 1e-6);
@@ -95,7 +98,7 @@ TEST(Decompose, ConvexPartIsOnePiece) {
 
 TEST(Decompose, LBracketIsTwoPieces) {
   const Mesh l = float32(translated(l_bracket(40, 5, 20), kFar));
-  const Decomposition d = decompose_convex(l, 0.025, 10.0);
+  const Decomposition d = decompose_convex(l, 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
   EXPECT_GE(d.pieces.size(), 2u);
   EXPECT_EQ(d.pieces.size(), 2u);
@@ -107,7 +110,7 @@ TEST(Decompose, PlateWithBoltHole) {
   for (int segments : {8, 16}) {
     SCOPED_TRACE(segments);
     const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, segments), kFar));
-    const Decomposition d = decompose_convex(plate, 0.025, 20.0);
+    const Decomposition d = decompose_convex(plate, 0.025, kBudget);
     EXPECT_TRUE(d.complete) << d.note;
     EXPECT_LE(d.pieces.size(), static_cast<std::size_t>(segments));  // one per hole face at most
     expect_cover_and_within(plate, d, 0.025, 1e-6);
@@ -120,7 +123,7 @@ TEST(Decompose, PiecesDoNotCollapseTheDepth) {
   const int n = 16;
   const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, n), kFar));
   const Mesh bolt = float32(translated(cylinder({0, 0}, 5.05, -10, 16, n), kFar));
-  const Decomposition d = decompose_convex(plate, 0.025, 20.0);
+  const Decomposition d = decompose_convex(plate, 0.025, kBudget);
   ASSERT_TRUE(d.complete);
   const Points q = bolt.vertices.colwise() - kFar;
   double deepest = 0.0;
@@ -134,7 +137,7 @@ TEST(Decompose, PiecesDoNotCollapseTheDepth) {
 
 TEST(Decompose, HollowBoxKeepsItsCavityEmpty) {
   const Mesh h = hollow_box({0, 0, 0}, {10, 10, 10}, 1);
-  const Decomposition d = decompose_convex(h, 0.025, 20.0);
+  const Decomposition d = decompose_convex(h, 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
   expect_cover_and_within(h, d, 0.025, 1e-9);
   for (const HullTest& t : hulls_of(d)) EXPECT_FALSE(t.contains({5, 5, 5}, 0.0));
@@ -142,7 +145,7 @@ TEST(Decompose, HollowBoxKeepsItsCavityEmpty) {
 
 TEST(Decompose, SeparateShellsAreDecomposedApart) {
   const Mesh two = joined({box({6, 0, 0}, {7, 1, 1}), l_bracket(4, 1, 1)});
-  const Decomposition d = decompose_convex(translated(two, Vec3(10, 0, 0)), 0.025, 10.0);
+  const Decomposition d = decompose_convex(translated(two, Vec3(10, 0, 0)), 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
   EXPECT_GE(d.pieces.size(), 3u);
   expect_cover_and_within(translated(two, Vec3(10, 0, 0)), d, 0.025, 1e-9);
@@ -151,7 +154,7 @@ TEST(Decompose, SeparateShellsAreDecomposedApart) {
 TEST(Decompose, OpenMeshGetsHullsPerShellAndIsIncomplete) {
   Mesh open = box({0, 0, 0}, {10, 10, 10});
   open.triangles.conservativeResize(3, 10);
-  const Decomposition d = decompose_convex(open, 0.025, 10.0);
+  const Decomposition d = decompose_convex(open, 0.025, kBudget);
   EXPECT_FALSE(d.complete);
   EXPECT_EQ(d.pieces.size(), 1u);
   EXPECT_NE(d.note.find("open"), std::string::npos);
@@ -174,7 +177,53 @@ TEST(Decompose, TimeLimitReturnsCoveringPiecesMarkedIncomplete) {
 TEST(Decompose, DrilledBoardFarAway) {
   const Mesh board = float32(translated(drilled_board(2, 1, 20, 1.6, 2, 8), kFar));
   EXPECT_TRUE(PreparedMesh(board).closed());
-  const Decomposition d = decompose_convex(board, 0.025, 20.0);
+  const Decomposition d = decompose_convex(board, 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
   expect_cover_and_within(board, d, 0.025, 1e-6);
+}
+
+// The CAD shapes of issue 17 come out complete and in about as many pieces as
+// their notches need: a fan of one wedge per hole face (or per arc of faces
+// within the sagitta) and six walls for a housing, far from the origin in
+// float32. The work bound keeps a regression to shattering visible.
+TEST(Decompose, PlateWithHoleIsAFanOfWedges) {
+  for (int segments : {16, 32, 128}) {
+    SCOPED_TRACE(segments);
+    const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, segments), kFar));
+    const Decomposition d = decompose_convex(plate, 0.025, kBudget);
+    EXPECT_TRUE(d.complete) << d.note;
+    // An arc of k faces has sagitta r(1 − cos(kπ/n)) <= tol: at most n / k pieces.
+    int k = 1;
+    while (5 * (1 - std::cos((k + 1) * M_PI / segments)) <= 0.025) ++k;
+    EXPECT_LE(d.pieces.size(), static_cast<std::size_t>((segments + k - 1) / k) + 4);
+    EXPECT_LE(d.work, 8 * segments);
+    expect_cover_and_within(plate, d, 0.025, 1e-6);
+  }
+}
+
+TEST(Decompose, HollowHousingFarAwayIsItsWalls) {
+  const Mesh h = float32(translated(hollow_box({0, 0, 0}, {30, 20, 10}, 1.5), kFar));
+  const Decomposition d = decompose_convex(h, 0.025, kBudget);
+  EXPECT_TRUE(d.complete) << d.note;
+  EXPECT_LE(d.pieces.size(), 8u);
+  EXPECT_GE(d.pieces.size(), 5u);
+  expect_cover_and_within(h, d, 0.025, 1e-6);
+  for (const HullTest& t : hulls_of(d)) EXPECT_FALSE(t.contains(kFar + Vec3(15, 10, 5), 0.0));
+}
+
+TEST(Decompose, WorkBudgetStopsReproducibly) {
+  const Mesh plate = plate_with_hole(40, 6, 5, 64);
+  const Decomposition a = decompose_convex(plate, 0.001, DecomposeLimits{INFINITY, 9});
+  const Decomposition b = decompose_convex(plate, 0.001, DecomposeLimits{INFINITY, 9});
+  EXPECT_FALSE(a.complete);
+  EXPECT_NE(a.note.find("work budget"), std::string::npos) << a.note;
+  EXPECT_LE(a.work, 9 + 8);  // the budget is checked between cells and candidate cuts
+  ASSERT_EQ(a.pieces.size(), b.pieces.size());
+  for (std::size_t i = 0; i < a.pieces.size(); ++i) EXPECT_EQ(a.pieces[i], b.pieces[i]);
+  const std::vector<HullTest> hulls = hulls_of(a);
+  for (long v = 0; v < plate.vertices.cols(); ++v) {
+    bool in = false;
+    for (const HullTest& h : hulls) in = in || h.contains(plate.vertices.col(v), 1e-9);
+    EXPECT_TRUE(in);
+  }
 }

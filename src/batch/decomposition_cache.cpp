@@ -6,14 +6,17 @@
 #include <fstream>
 #include <sstream>
 
-#include "hash.h"
 #include "atomic_write.h"
+#include "hash.h"
+#include "tolerances.h"
 
 namespace pd {
 
 namespace {
 
-constexpr const char* kFormat = "pdcheck-decomposition-1";
+// 2: reflex-edge cuts and the work budget (entries of the old algorithm are
+// not reused: they may hold its incomplete decompositions).
+constexpr const char* kFormat = "pdcheck-decomposition-2";
 
 std::string entry_path(const std::string& dir, const std::string& key) {
   return (std::filesystem::path(dir) / (key + ".pdd")).string();
@@ -44,6 +47,7 @@ std::string decomposition_key(const std::string& content_hash, double concavity_
                               double time_limit_seconds) {
   Hasher h;
   h.add(kFormat).add(content_hash).add(concavity_tol).add(time_limit_seconds);
+  h.add(static_cast<double>(tol::kDecomposeMaxWork));
   return h.hex();
 }
 

@@ -8,6 +8,7 @@
 
 #include "geometry/mesh.h"
 #include "geometry/types.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -25,6 +26,16 @@ struct Decomposition {
   std::string note;        ///< why not complete, or what was done
   double seconds = 0.0;    ///< wall time spent
   double concavity = 0.0;  ///< largest estimated piece concavity (scene units)
+  long work = 0;           ///< concavity estimates spent (DecomposeLimits::work)
+};
+
+/// When a decomposition gives up. The work budget counts concavity estimates
+/// (the unit of cost: one per cell and per tried merge), so a run within it is
+/// reproducible on any machine (tests set it); the wall-clock box is a safety
+/// net for users. Past either, the pieces so far are returned, complete = false.
+struct DecomposeLimits {
+  double seconds = tol::kDecomposeSeconds;
+  long work = tol::kDecomposeMaxWork;
 };
 
 /// Cuts the closed mesh m with planes through its deepest concavities until
@@ -35,6 +46,8 @@ struct Decomposition {
 /// complete = false. Stops at time_limit_seconds (wall clock) with what it has.
 /// Memory stays proportional to the mesh times the piece limit
 /// (tol::kDecomposeMaxPieces). Coordinates are centred before any arithmetic.
+Decomposition decompose_convex(const Mesh& m, double concavity_tol, const DecomposeLimits& limits);
+/// The same with the default work budget and the given time box.
 Decomposition decompose_convex(const Mesh& m, double concavity_tol, double time_limit_seconds);
 
 }  // namespace pd
