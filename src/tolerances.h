@@ -42,12 +42,15 @@ inline constexpr double kSameBasinAngle = 1e-2;
 /// 6·kCertificateGrid² cells (cell radius ~0.1 rad at 12) bounds the gap below
 /// per cell; the cells left open are covered by at most kCertificateCaps caps of
 /// at most kCertificateCapAngle radians, each searched exactly on a local
-/// Minkowski difference of at most kNeighbourhoodPoints points. Beyond these
-/// limits the exact hull decides (and the report says so).
+/// Minkowski difference of at most kNeighbourhoodPoints points, or cut into
+/// smaller cells (solve/cap_subdivision.h) each searched so, at most
+/// kSubdivisionCells of them. Beyond these limits the exact hull decides (and
+/// the report says so).
 inline constexpr int kCertificateGrid = 12;
 inline constexpr double kCertificateCapAngle = 0.35;
 inline constexpr int kCertificateCaps = 12;
-inline constexpr long kNeighbourhoodPoints = 20000;
+inline constexpr long kNeighbourhoodPoints = 300;
+inline constexpr long kSubdivisionCells = 4000;
 
 /// A vertex counts as active at a direction v when its support value is within
 /// this of the extreme value; used to read the optimal facet off a local solve.

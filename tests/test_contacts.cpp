@@ -4,6 +4,7 @@
 
 #include "batch/run.h"
 #include "corpus/contacts.h"
+#include "solve/cap_subdivision.h"
 #include "solve/methods.h"
 #include "tolerances.h"
 
@@ -149,4 +150,63 @@ TEST(Contacts, StopReasonCrossesTheWorkerPipe) {
   EXPECT_EQ(a.stop_reason, StopReason::kBayesian);
   b += a;
   EXPECT_EQ(b.stop_reason, StopReason::kBayesian);
+}
+
+TEST(Contacts, BumpyFloat32FacesAreCertifiedWithoutTheExactHull) {
+  // Two 300-vertex plates face on face, rotated, at x = 20,000 mm in float32:
+  // every rim vertex stays extreme near the contact normal, so the open cap's
+  // local difference (150 x 150) is too large for one hull. Before the cap
+  // subdivision these pairs fell back to the exact hull of 90,000 points.
+  for (Contact family : {Contact::kPlates, Contact::kHairGap}) {
+    SphereSampler r(5);
+    for (int k = 2; k < 6; k += 3) {  // pairs 2 and 5: float32 far from the origin
+      const auto c = testgen::contact_case(r, family, 300, k);
+      SCOPED_TRACE(testgen::contact_name(family) + " pair " + std::to_string(k));
+      expect_same_depth(c, "float32");
+      const DepthSolution m = solve(c, Method::kMlsl);
+      EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+      EXPECT_EQ(m.stats.ipopt_calls, 0);
+    }
+  }
+}
+
+TEST(Contacts, SubdividedCapSearchFindsWhatOneHullFinds) {
+  // On random overlapping pairs and caps, the subdivided search (tiny leaves:
+  // many levels of cells, bounds and inherited candidates) must report a facet
+  // below `best` exactly when the one-hull search of the cap has one, at the
+  // same offset; cells it closes by their bounds may hold no lower facet.
+  SphereSampler r(17);
+  int found = 0, none = 0, subdivided = 0;
+  for (int t = 0; t < 40; ++t) {
+    const auto c = testgen::vertex_class(r, 30);
+    const PairProblem pr(c.a, c.b);
+    const Vec3 centre = r.direction();
+    const double radius = 0.1 + 0.3 * r.uniform();
+    const CapSearch one = lowest_facet_in_cap(pr.p(), pr.q(), centre, radius, 1L << 30);
+    ASSERT_TRUE(one.searched);
+    // best: just above the cap's lowest facet, or just below it (then nothing).
+    const double lowest = one.lowest ? one.lowest->offset : 1.0;
+    const double best = lowest + (t % 2 ? 1e-3 : -1e-3) * std::abs(lowest);
+    const SubdividedSearch sub =
+        lowest_facet_subdivided(pr.p(), pr.q(), centre, radius, best, 12, 1000000);
+    ASSERT_TRUE(sub.result.searched);
+    SCOPED_TRACE(t);
+    if (one.lowest && one.lowest->offset < best) {
+      ++found;
+      ASSERT_TRUE(sub.result.lowest.has_value());
+      // Its cells' candidate caps reach a little beyond the cap: never higher.
+      EXPECT_LE(sub.result.lowest->offset, one.lowest->offset + 1e-12);
+      EXPECT_NEAR(pr.gap(sub.result.lowest->normal), sub.result.lowest->offset, 1e-12);
+      subdivided += sub.cells > 4;
+    } else {
+      ++none;
+      // A facet reported must be a real one below best (outside the cap: allowed).
+      if (sub.result.lowest) {
+        EXPECT_NEAR(pr.gap(sub.result.lowest->normal), sub.result.lowest->offset, 1e-12);
+      }
+    }
+  }
+  EXPECT_GE(found, 10);
+  EXPECT_GE(none, 10);
+  EXPECT_GE(subdivided, 8);  // most caps were cut into cells
 }

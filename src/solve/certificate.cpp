@@ -52,23 +52,37 @@ const std::vector<SphereCell>& cube_sphere_cells(int n) {
   return cells;
 }
 
-CapCover open_region_caps(const PairProblem& pr, double best, int grid, double max_radius,
-                          int max_caps) {
+CellSupports cell_supports(const PairProblem& pr, int grid) {
   const auto& cells = cube_sphere_cells(grid);
   const size_t nc = cells.size();
-  CapCover out;
-  // Support points and gaps at the cell centres.
-  std::vector<Vec3> x(nc);
-  std::vector<double> g(nc);
+  CellSupports s;
+  s.x.resize(nc);
+  s.g.resize(nc);
   for (size_t k = 0; k < nc; ++k) {
     const Vec3& c = cells[k].centre;
     Eigen::Index ip = 0, iq = 0;
     const double hp = (c.transpose() * pr.p()).maxCoeff(&ip);
     const double hq = (c.transpose() * pr.q()).minCoeff(&iq);
-    x[k] = pr.p().col(ip) - pr.q().col(iq);
-    g[k] = hp - hq;
+    s.x[k] = pr.p().col(ip) - pr.q().col(iq);
+    s.g[k] = hp - hq;
   }
-  out.evaluations = static_cast<long>(nc);
+  return s;
+}
+
+CapCover open_region_caps(const PairProblem& pr, double best, int grid, double max_radius,
+                          int max_caps) {
+  CapCover out = open_region_caps(cell_supports(pr, grid), best, grid, max_radius, max_caps);
+  out.evaluations = static_cast<long>(cube_sphere_cells(grid).size());
+  return out;
+}
+
+CapCover open_region_caps(const CellSupports& s, double best, int grid, double max_radius,
+                          int max_caps) {
+  const auto& cells = cube_sphere_cells(grid);
+  const size_t nc = cells.size();
+  CapCover out;
+  const std::vector<Vec3>& x = s.x;
+  const std::vector<double>& g = s.g;
   // The smallest of x·corner; exact on the cell when all are positive (see the
   // header), and then only rounding separates it from the true minimum.
   auto bound = [&](size_t cell, size_t from) {

@@ -44,4 +44,15 @@ struct CapCover {
 CapCover open_region_caps(const PairProblem& pr, double best, int grid, double max_radius,
                           int max_caps);
 
+/// The support points and gaps at the cell centres of a grid: they do not depend
+/// on `best`, so a certificate's rounds share them.
+struct CellSupports {
+  std::vector<Vec3> x;
+  std::vector<double> g;
+};
+CellSupports cell_supports(const PairProblem& pr, int grid);
+/// open_region_caps on supports already computed (`evaluations` is then 0).
+CapCover open_region_caps(const CellSupports& s, double best, int grid, double max_radius,
+                          int max_caps);
+
 }  // namespace pd

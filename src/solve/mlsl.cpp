@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include "solve/cap_subdivision.h"
 #include "solve/certificate.h"
 #include "solve/facet_snap.h"
 #include "solve/local_search.h"
@@ -96,15 +97,23 @@ void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<B
 }  // namespace
 
 bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& stats) {
+  const CellSupports supports = cell_supports(pr, tol::kCertificateGrid);
+  stats.alpha_evaluations += static_cast<long>(supports.g.size());
   for (int round = 0; round < 4; ++round) {
-    const CapCover cover = open_region_caps(pr, gap, tol::kCertificateGrid,
+    const CapCover cover = open_region_caps(supports, gap, tol::kCertificateGrid,
                                             tol::kCertificateCapAngle, tol::kCertificateCaps);
-    stats.alpha_evaluations += cover.evaluations;
     if (!cover.ok) return false;
     bool improved = false;
     for (const auto& [centre, radius] : cover.caps) {
-      const CapSearch c =
-          lowest_facet_in_cap(pr.p(), pr.q(), centre, radius, tol::kNeighbourhoodPoints);
+      CapSearch c = lowest_facet_in_cap(pr.p(), pr.q(), centre, radius, tol::kNeighbourhoodPoints);
+      if (!c.searched) {
+        // Too many differences for one hull (bumpy faces resting on faces): cut
+        // the cap into cells bounded like the grid's, down to small exact searches.
+        const SubdividedSearch s = lowest_facet_subdivided(
+            pr.p(), pr.q(), centre, radius, gap, tol::kNeighbourhoodPoints, tol::kSubdivisionCells);
+        stats.alpha_evaluations += s.cells;
+        c = s.result;
+      }
       if (!c.searched) return false;  // a cap too large to search proves nothing
       if (!c.lowest) continue;
       const double g = pr.gap(c.lowest->normal);

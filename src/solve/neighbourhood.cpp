@@ -9,44 +9,61 @@ namespace pd {
 
 namespace {
 
-Eigen::Index extreme_index(const Points& x, const Vec3& u, bool top) {
-  const Eigen::RowVectorXd s = u.transpose() * x;
-  Eigen::Index k = 0;
-  if (top)
-    s.maxCoeff(&k);
-  else
-    s.minCoeff(&k);
-  return k;
+int extreme_index(const Points& x, const std::vector<int>& among, const Vec3& u, bool top) {
+  if (static_cast<Eigen::Index>(among.size()) == x.cols()) {  // all of x: vectorised
+    const Eigen::RowVectorXd s = u.transpose() * x;
+    Eigen::Index k = 0;
+    if (top)
+      s.maxCoeff(&k);
+    else
+      s.minCoeff(&k);
+    return static_cast<int>(k);
+  }
+  int best = among.front();
+  double bv = u.dot(x.col(best));
+  for (int i : among) {
+    const double s = u.dot(x.col(i));
+    if (top ? s > bv : s < bv) best = i, bv = s;
+  }
+  return best;
 }
 
 }  // namespace
 
-std::vector<int> extreme_in_cap(const Points& x, const Vec3& v, double radius, bool top) {
+std::vector<int> extreme_in_cap_among(const Points& x, const std::vector<int>& among, const Vec3& v,
+                                      double radius, bool top) {
+  if (among.empty()) return {};
   // If x_i is extreme at some u in the cap, then (x_i − x_k)·u >= 0 (top) for
   // every reference x_k, which needs angle(x_i − x_k, v) <= π/2 + radius:
   // (x_i − x_k)·v >= −|x_i − x_k|·sin(radius).
   const Vec3 helper = std::abs(v.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   const Vec3 e1 = v.cross(helper).normalized(), e2 = v.cross(e1);
-  std::vector<Eigen::Index> refs{extreme_index(x, v, top)};
+  std::vector<int> refs{extreme_index(x, among, v, top)};
   for (int k = 0; k < 8; ++k) {
     const double a = k * M_PI / 4;
     const Vec3 u = std::cos(radius) * v + std::sin(radius) * (std::cos(a) * e1 + std::sin(a) * e2);
-    refs.push_back(extreme_index(x, u, top));
+    refs.push_back(extreme_index(x, among, u, top));
   }
   const double sr = std::sin(radius), sign = top ? 1.0 : -1.0;
   std::vector<int> keep;
-  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+  for (int i : among) {
     bool ok = true;
-    for (Eigen::Index k : refs) {
+    for (int k : refs) {
       const Vec3 d = sign * (x.col(i) - x.col(k));
       if (d.dot(v) < -d.norm() * sr * (1 + 1e-12) - 1e-15) {
         ok = false;
         break;
       }
     }
-    if (ok) keep.push_back(static_cast<int>(i));
+    if (ok) keep.push_back(i);
   }
   return keep;
+}
+
+std::vector<int> extreme_in_cap(const Points& x, const Vec3& v, double radius, bool top) {
+  std::vector<int> all(static_cast<size_t>(x.cols()));
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  return extreme_in_cap_among(x, all, v, radius, top);
 }
 
 CapSearch lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v, double radius,
@@ -54,13 +71,20 @@ CapSearch lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v, d
   const std::vector<int> pi = extreme_in_cap(p, v, radius, true);
   const std::vector<int> qj = extreme_in_cap(q, v, radius, false);
   if (long(pi.size()) * long(qj.size()) > max_points) return {false, std::nullopt};
+  return {true, lowest_local_facet(p, q, pi, qj, v, radius)};
+}
+
+std::optional<FacetCandidate> lowest_local_facet(const Points& p, const Points& q,
+                                                 const std::vector<int>& pi,
+                                                 const std::vector<int>& qj, const Vec3& v,
+                                                 double radius) {
   Points m(3, pi.size() * qj.size());
   Eigen::Index k = 0;
   for (int i : pi)
     for (int j : qj) m.col(k++) = p.col(i) - q.col(j);
   const double cos_r = std::cos(radius);
   HullFacets f;
-  if (m.cols() < 3) return {};  // a vertex or an edge: no facet normal inside
+  if (m.cols() < 3) return std::nullopt;  // a vertex or an edge: no facet normal inside
   if (m.cols() == 3 || !hull_facets(m, f)) {
     // Flat: the polygon itself is the one facet, its normal taken towards v.
     const Vec3 c = m.rowwise().mean();
@@ -68,17 +92,16 @@ CapSearch lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v, d
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(d * d.transpose());
     Vec3 n = eig.eigenvectors().col(0);
     if (n.dot(v) < 0) n = -n;
-    if (n.dot(v) < cos_r) return {};
-    return {true, FacetCandidate{n, (n.transpose() * m).maxCoeff()}};
+    if (n.dot(v) < cos_r) return std::nullopt;
+    return FacetCandidate{n, (n.transpose() * m).maxCoeff()};
   }
-  CapSearch out;
+  std::optional<FacetCandidate> lowest;
   for (size_t t = 0; t < f.normals.size(); ++t) {
     if (f.normals[t].dot(v) < cos_r) continue;
     const double offset = -f.offsets[t];
-    if (!out.lowest || offset < out.lowest->offset)
-      out.lowest = FacetCandidate{f.normals[t], offset};
+    if (!lowest || offset < lowest->offset) lowest = FacetCandidate{f.normals[t], offset};
   }
-  return out;
+  return lowest;
 }
 
 }  // namespace pd

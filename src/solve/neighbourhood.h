@@ -25,6 +25,11 @@ struct FacetCandidate {
 /// eight directions on the cap's rim.
 std::vector<int> extreme_in_cap(const Points& x, const Vec3& v, double radius, bool top);
 
+/// The same among the points `among` only, which must hold every point of x
+/// extreme somewhere in the cap (a larger cap's result): O(|among|), not O(|x|).
+std::vector<int> extreme_in_cap_among(const Points& x, const std::vector<int>& among, const Vec3& v,
+                                      double radius, bool top);
+
 /// The outcome of searching a cap: `searched` is false when the local
 /// difference would exceed `max_points` (nothing is known about the cap then);
 /// `lowest` is empty when no facet normal lies in the cap.
@@ -36,5 +41,13 @@ struct CapSearch {
 /// The lowest facet of P − Q whose normal lies within `radius` of v.
 CapSearch lowest_facet_in_cap(const Points& p, const Points& q, const Vec3& v, double radius,
                               long max_points);
+
+/// The lowest facet with its normal within `radius` of v of the local difference
+/// P' − Q' (P' = p's columns pi, Q' = q's columns qj). When pi and qj hold every
+/// vertex extreme in that cap, these are exactly P − Q's facets there.
+std::optional<FacetCandidate> lowest_local_facet(const Points& p, const Points& q,
+                                                 const std::vector<int>& pi,
+                                                 const std::vector<int>& qj, const Vec3& v,
+                                                 double radius);
 
 }  // namespace pd
