@@ -63,6 +63,8 @@ def main():
             nav = b.evaluate("performance.getEntriesByType('navigation')[0].toJSON()")
             load.append(nav["loadEventEnd"] / 1000)
             ready.append(b.evaluate("pdcheck.readyMs") / 1000)
+            print("  page script phases (ms since its start, which was at %s ms): %s" % (
+                b.evaluate("pdcheck.ms.script_start"), b.evaluate("JSON.stringify(pdcheck.ms)")))
             last = data["findings"][-1]["fingerprint"]
             ms = b.evaluate("(() => { const t = performance.now(); location.hash = '#pair=%s'; "
                             "window.dispatchEvent(new HashChangeEvent('hashchange')); "

@@ -3,7 +3,9 @@
 // real browser: tests/browser/test_html_report.py.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <regex>
@@ -48,6 +50,19 @@ nlohmann::json page_data(const std::string& page) {
   if (at == std::string::npos) return nullptr;
   const size_t end = page.find("</script>", at);
   return nlohmann::json::parse(page.substr(at + open.size(), end - at - open.size()));
+}
+
+std::string unbase64(const std::string& in) {
+  const std::string abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  unsigned bits = 0;
+  int n = 0;
+  for (char c : in) {
+    if (c == '=') break;
+    bits = (bits << 6) | static_cast<unsigned>(abc.find(c));
+    if ((n += 6) >= 8) out += static_cast<char>((bits >> (n -= 8)) & 0xff);
+  }
+  return out;
 }
 
 size_t count(const std::string& text, const std::string& what) {
@@ -213,7 +228,17 @@ TEST(HtmlPage, IdsCannotBreakOutOfThePageAndNothingIsFetched) {
   EXPECT_EQ(data["findings"][0]["b"], "{{DATA}}");
   const auto& view = data["findings"][0]["view"];
   EXPECT_TRUE(view["a"].is_number() && view["b"].is_number() && view["overlap"].is_number());
-  EXPECT_EQ(data["meshes"][view["overlap"].get<int>()]["triangles"], 12);
+  const auto& overlap = data["meshes"][view["overlap"].get<int>()];
+  EXPECT_EQ(overlap["triangles"], 12);
+  // Decoded as the page does (int16 steps of s from o), it is the box [1, 2]³.
+  const std::string raw = unbase64(overlap["v"]);
+  ASSERT_EQ(raw.size(), 8u * 3 * 2);
+  for (size_t k = 0; k < 24; ++k) {
+    std::int16_t q;
+    std::memcpy(&q, raw.data() + 2 * k, 2);
+    const double x = overlap["o"][k % 3].get<double>() + q * overlap["s"].get<double>();
+    EXPECT_TRUE(std::fabs(x - 1) < 1e-4 || std::fabs(x - 2) < 1e-4) << x;
+  }
 }
 
 TEST(HtmlPage, AMissingLibraryIsNamed) {

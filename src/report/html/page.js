@@ -5,10 +5,13 @@
 (function () {
   'use strict';
 
+  const t0 = performance.now();
   const data = JSON.parse(document.getElementById('pdcheck-data').textContent);
   const $ = (id) => document.getElementById(id);
   // What tests and curious users can read back (state only, no behaviour).
-  const api = { data: data, ready: false, selected: null, webgl: false, renders: 0 };
+  const api = { data: data, ready: false, selected: null, webgl: false, renders: 0, ms: {} };
+  const lap = (what) => { api.ms[what] = Math.round(performance.now() - t0); };
+  lap('parse');
   window.pdcheck = api;
 
   const STATUS_ORDER = ['interference', 'clearance_violation', 'error', 'false_positive', 'separated'];
@@ -220,7 +223,12 @@
   // ---- 3D view ----
   const COLORS = { a: '#3b82f6', b: '#f59e0b', overlap: '#e11d48', piece: '#7c3aed', arrow: '#047857' };
   let gl = null;  // { renderer, scene, camera, controls, group, boxes }
-  const geometryCache = new Map();
+  const geometryCache = new Map(), edgeCache = new Map(), materialCache = new Map();
+  function material(kind, color, opacity, make) {
+    const key = kind + color + opacity;
+    if (!materialCache.has(key)) materialCache.set(key, make());
+    return materialCache.get(key);
+  }
 
   function bytes(b64) {
     const s = atob(b64);
@@ -232,8 +240,12 @@
     if (geometryCache.has(i)) return geometryCache.get(i);
     const m = data.meshes[i];
     const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(bytes(m.v)), 3));
-    g.setIndex(new THREE.BufferAttribute(new Uint32Array(bytes(m.t)), 1));
+    // int16 steps of m.s (little-endian, as written), relative to m.o.
+    const q = new Int16Array(bytes(m.v));
+    const pos = new Float32Array(q.length);
+    for (let k = 0; k < q.length; ++k) pos[k] = q[k] * m.s;
+    g.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+    g.setIndex(new THREE.BufferAttribute(m.t32 ? new Uint32Array(bytes(m.t)) : new Uint16Array(bytes(m.t)), 1));
     g.computeVertexNormals();
     g.computeBoundingBox();
     geometryCache.set(i, g);
@@ -293,7 +305,8 @@
     for (const c of [...gl.group.children]) {
       gl.group.remove(c);
       c.traverse((o) => {
-        if (o.material) o.material.dispose();
+        // Materials are kept: disposing the last user of a shader costs its
+        // compile again at the next selection. Per-selection geometry goes.
         if (o.geometry && !o.userData.cached) o.geometry.dispose();
       });
     }
@@ -303,16 +316,19 @@
     const m = data.meshes[i];
     const geo = geometry(i);
     const obj = new THREE.Group();
-    const mat = new THREE.MeshPhongMaterial({
-      color: color, flatShading: true, transparent: opacity < 1, opacity: opacity,
+    const onTop = name === 'overlap';
+    const mesh = new THREE.Mesh(geo, material('face', color, opacity, () => new THREE.MeshPhongMaterial({
+      color: color, flatShading: true, transparent: opacity < 1, opacity: opacity, depthTest: !onTop,
       side: THREE.DoubleSide, depthWrite: opacity >= 1, polygonOffset: true,
-      polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
-    const mesh = new THREE.Mesh(geo, mat);
+      polygonOffsetFactor: 1, polygonOffsetUnits: 1 })));
     mesh.userData.cached = true;
     obj.add(mesh);
     if (edges) {
-      const e = new THREE.LineSegments(new THREE.EdgesGeometry(geo, 25),
-        new THREE.LineBasicMaterial({ color: color, transparent: true, opacity: Math.min(1, opacity + 0.4) }));
+      if (!edgeCache.has(i)) edgeCache.set(i, new THREE.EdgesGeometry(geo, 25));
+      const e = new THREE.LineSegments(edgeCache.get(i), material('edge', color, opacity,
+        () => new THREE.LineBasicMaterial({ color: color, transparent: true, depthTest: !onTop,
+          opacity: Math.min(1, opacity + 0.4) })));
+      e.userData.cached = true;
       obj.add(e);
     }
     obj.position.set(m.o[0] - centre[0], m.o[1] - centre[1], m.o[2] - centre[2]);
@@ -353,7 +369,9 @@
     let arrowAt = fit.getCenter(new THREE.Vector3());
     gl.overlapBox = null;
     if (has(v.overlap)) {
-      gl.overlapBox = addMesh(v.overlap, centre, COLORS.overlap, 0.8, true, 'overlap');
+      gl.overlapBox = addMesh(v.overlap, centre, COLORS.overlap, 0.85, true, 'overlap');
+      // The overlap is what the row is about: drawn over the parts around it.
+      gl.group.getObjectByName('overlap').traverse((o) => { o.renderOrder = 5; });
       arrowAt = gl.overlapBox.getCenter(new THREE.Vector3());
     }
     const size = fit.getSize(new THREE.Vector3()).length() || 1;
@@ -364,10 +382,17 @@
       // the direction when the depth is too small to see at this zoom.
       const L = f.depth;
       const arrow = new THREE.ArrowHelper(dir, arrowAt, L, COLORS.arrow, 0.3 * L, 0.18 * L);
-      arrow.name = 'depth';
       // Drawn over everything: it usually lies inside the overlap.
-      arrow.traverse((o) => { if (o.material) o.material.depthTest = false; o.renderOrder = 10; });
-      gl.group.add(arrow);
+      // (transparent: drawn in the pass after the translucent overlap, last).
+      // A Group's renderOrder orders what is in it against other groups.
+      arrow.traverse((o) => {
+        if (o.material) Object.assign(o.material, { depthTest: false, transparent: true });
+      });
+      const onTop = new THREE.Group();
+      onTop.renderOrder = 10;
+      onTop.name = 'depth';
+      onTop.add(arrow);
+      gl.group.add(onTop);
       const guide = new THREE.BufferGeometry().setFromPoints([
         arrowAt.clone().addScaledVector(dir, -0.6 * size), arrowAt.clone().addScaledVector(dir, 0.6 * size)]);
       const line = new THREE.Line(guide, new THREE.LineDashedMaterial({
@@ -484,12 +509,16 @@
   }
 
   // ---- Start ----
+  api.ms.script_start = Math.round(t0);
   summary();
   buildTable();
   applyFilter();
+  lap('table');
   histogram();
+  lap('histogram');
   if (window.THREE) $('three-rev').textContent = 'r' + THREE.REVISION;
   gl = initGl();
+  lap('webgl');
   api.webgl = !!gl;
   $('fit').addEventListener('click', () => gl && fitTo(gl.fitBox, gl.viewDir));
   $('zoom-overlap').addEventListener('click', () => gl && fitTo(gl.overlapBox || gl.fitBox, gl.viewDir));
@@ -502,6 +531,7 @@
   });
   window.addEventListener('hashchange', fromHash);
   if (!fromHash() && findings.length) select(0, false, false);
+  lap('first_view');
   if (!findings.length) $('view-title').textContent = 'No findings: nothing to show in 3D';
   api.readyMs = performance.now();
   api.ready = true;
