@@ -101,4 +101,13 @@ inline constexpr int kDecomposeScreenSamples = 64;
 inline constexpr size_t kHtmlPartTriangles = 4000;
 inline constexpr size_t kHtmlPageTriangles = 300000;
 
+/// Sharding (batch/shard.h). A shard's plan box of a part (its placed vertices'
+/// box) is widened by this fraction of its largest coordinate, so it contains the
+/// hull's box whatever rounding the hull's placement took; wider boxes only add
+/// planned pairs that the shard's exact test drops.
+inline constexpr double kPlanBoxSlack = 1e-9;
+/// Expected cost of one pair, as vertices: kShardPairCost + the two parts'
+/// vertex counts (a pair's fixed work, then support evaluations linear in size).
+inline constexpr double kShardPairCost = 200.0;
+
 }  // namespace pd::tol

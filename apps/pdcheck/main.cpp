@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <iostream>
 #include <iterator>
@@ -14,10 +15,13 @@
 
 #include "batch/decomposition_cache.h"
 #include "batch/run.h"
+#include "batch/shard.h"
 #include "printable.h"
 #include "report/fingerprint.h"
 #include "report/html_from_report.h"
+#include "report/merge.h"
 #include "report/output_file.h"
+#include "report/prior_report.h"
 #include "report/report_json.h"
 #include "report/review_json.h"
 #include "report/review_text.h"
@@ -71,6 +75,31 @@ int html_command(const std::string& report, const std::string& page, int jobs, d
     say("error", std::string(e.what()) + " (the scene of " + report + ")");
   } catch (const pd::HtmlAssetError& e) {
     say("error", e.what());
+  } catch (const pd::OutputError& e) {
+    say("error", e.what());
+  }
+  return kExitUsage;
+}
+
+// pdcheck merge: shard reports into one run's report (docs/scale-out.md).
+int run_merge(const std::vector<std::string>& inputs, const std::string& output, bool to_file,
+              const std::string& fail_on, bool quiet) {
+  try {
+    std::optional<pd::OutputFile> out_file;
+    if (to_file) out_file = pd::check_output_file("-o", output);
+    std::vector<pd::ShardReport> shards;
+    for (const auto& path : inputs) shards.push_back(pd::read_shard_report(path));
+    const pd::Merged m = pd::merge_shard_reports(
+        shards, fail_on.empty() ? std::nullopt : pd::parse_fail_on(fail_on));
+    const std::string text = m.doc.dump(2) + "\n";
+    if (out_file)
+      pd::write_output_file(*out_file, text);
+    else
+      pd::write_stdout(text);
+    if (!quiet) std::cerr << m.summary_line << "\n";
+    return m.exit_code;
+  } catch (const pd::MergeError& e) {
+    say("error", std::string("merge: ") + e.what());
   } catch (const pd::OutputError& e) {
     say("error", e.what());
   }
@@ -167,6 +196,35 @@ int main(int argc, char** argv) {
   html_cmd->add_option("report", html_report, "a JSON report (--format json)")->required();
   html_cmd->add_option("-o,--output", html_page, "the HTML file to write (atomically)")->required();
   html_cmd->fallthrough();  // -j, --load-timeout, -q after the subcommand
+  std::string shard_arg, reuse_path;
+  std::optional<int> shard_total, shard_base;
+  app.add_option("--shard", shard_arg,
+                 "K/N: check shard K of N (a deterministic, cost-balanced share of the pairs; "
+                 "loads only their parts), or auto (CI_NODE_INDEX/CI_NODE_TOTAL, or "
+                 "SLURM_ARRAY_TASK_ID with --shard-total); merge with pdcheck merge "
+                 "(docs/scale-out.md)");
+  app.add_option("--shard-total", shard_total, "--shard auto under Slurm: the array's size N");
+  app.add_option("--shard-base", shard_base,
+                 "--shard auto under Slurm: the array's first index (default "
+                 "SLURM_ARRAY_TASK_MIN, else 0)");
+  app.add_option("--reuse", reuse_path,
+                 "an earlier JSON report: pairs whose parts and settings are unchanged keep "
+                 "their results (marked reused) instead of being solved again");
+  CLI::App* merge_cmd = app.add_subcommand(
+      "merge", "merge shard reports (--shard K/N) into the report one run writes");
+  std::vector<std::string> merge_inputs;
+  std::string merge_output, merge_fail_on;
+  bool merge_quiet = false;
+  merge_cmd->add_option("reports", merge_inputs, "the shard reports, 1..N, each once")
+      ->required();
+  merge_cmd->add_option("-o,--output", merge_output,
+                        "write the merged report to this file (atomically) instead of stdout");
+  std::vector<std::string> merge_bars;
+  for (const auto& f : pd::kFailOnNames)
+    if (f.value != pd::FailOn::kNew) merge_bars.push_back(f.name);
+  merge_cmd->add_option("--fail-on", merge_fail_on, "as for a run (new is not supported here)")
+      ->check(CLI::IsMember(merge_bars));
+  merge_cmd->add_flag("-q,--quiet", merge_quiet, "no summary line on stderr");
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
   try {
     app.parse(argc, argv);
@@ -183,8 +241,34 @@ int main(int argc, char** argv) {
         html_report, html_page,
         jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
         load_timeout, quiet);
+  if (merge_cmd->parsed())
+    return run_merge(merge_inputs, merge_output, merge_cmd->count("--output") > 0, merge_fail_on,
+                     merge_quiet);
   if (scene_arg.empty()) {
     say("error", "a scene is required (a scene JSON file, or - for standard input); see --help");
+    return kExitUsage;
+  }
+  std::optional<pd::ShardSpec> shard;
+  try {
+    if (shard_arg == "auto") {
+      shard = pd::shard_from_environment([](const char* v) { return std::getenv(v); }, shard_total,
+                                         shard_base);
+    } else {
+      if (shard_total || shard_base)
+        throw pd::ShardError("--shard-total and --shard-base go with --shard auto");
+      if (app.count("--shard")) shard = pd::parse_shard(shard_arg);
+    }
+    if (shard) {
+      if (format != "json")
+        throw pd::ShardError("--shard writes a JSON report (--format json) for pdcheck merge");
+      for (const char* o : {"--baseline", "--suppressions", "--write-suppressions", "--junit",
+                            "--sarif", "--html"})
+        if (app.count(o))
+          throw pd::ShardError(std::string("--shard: ") + o +
+                               " applies to the whole run, not to one shard");
+    }
+  } catch (const pd::ShardError& e) {
+    say("error", e.what());
     return kExitUsage;
   }
   if (!std::isfinite(pair_timeout)) {
@@ -264,8 +348,10 @@ int main(int argc, char** argv) {
   // The CI inputs are read before the run: a malformed file costs no solve.
   std::optional<pd::Baseline> baseline;
   std::optional<pd::Suppressions> suppressions;
+  std::optional<pd::PriorResults> prior;
   pd::ReviewOptions review_opt;
   try {
+    if (!reuse_path.empty()) prior = pd::load_prior_report(reuse_path);
     if (!baseline_path.empty()) baseline = pd::load_baseline(baseline_path);
     if (!suppressions_path.empty()) suppressions = pd::load_suppressions(suppressions_path);
   } catch (const pd::ReportInputError& e) {
@@ -296,6 +382,8 @@ int main(int argc, char** argv) {
   opt.pair_timeout = pair_timeout;
   opt.load_timeout = load_timeout;
   opt.quiet = quiet;
+  opt.shard = shard;
+  opt.reuse = prior ? &*prior : nullptr;
   if (!quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
   if (!no_cache) opt.cache_dir = cache_dir.empty() ? pd::default_cache_dir() : cache_dir;
   const bool jsonl = format == "jsonl";
@@ -353,6 +441,10 @@ int main(int argc, char** argv) {
     for (std::string line; std::getline(review_text, line);)
       std::cerr << pd::printable(line) << "\n";
     std::cerr << pd::summary_line(summary, result.seconds) << "\n";
+    if (result.reused)
+      std::cerr << "pdcheck: " << result.reused << " pair(s) reused from " << reuse_path << "\n";
   }
+  // A shard's verdict is the merge's: its exit code says its report is written.
+  if (shard) return 0;
   return review.exit_code;
 }

@@ -5,6 +5,12 @@
 
 namespace pd {
 
+bool boxes_touch(const Aabb& a, const Aabb& b, double margin) {
+  for (int k = 0; k < 3; ++k)
+    if (!(a.lo[k] - b.hi[k] <= margin && b.lo[k] - a.hi[k] <= margin)) return false;
+  return true;
+}
+
 std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxes, double margin) {
   const int n = static_cast<int>(boxes.size());
   std::vector<std::pair<int, int>> out;
@@ -26,12 +32,14 @@ std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxe
   });
   std::vector<int> active;  // boxes whose interval may still reach the sweep line
   for (int i : order) {
-    const Aabb bi = boxes[i].inflated(margin);
-    active.erase(std::remove_if(active.begin(), active.end(),
-                                [&](int j) { return boxes[j].hi[axis] + margin < bi.lo[axis]; }),
-                 active.end());
+    // Boxes sorted by lo: a gap beyond the margin now stays beyond it for every
+    // later box (the rounded difference is monotone), so j can leave the list.
+    active.erase(
+        std::remove_if(active.begin(), active.end(),
+                       [&](int j) { return !(boxes[i].lo[axis] - boxes[j].hi[axis] <= margin); }),
+        active.end());
     for (int j : active)
-      if (bi.overlaps(boxes[j])) out.emplace_back(std::min(i, j), std::max(i, j));
+      if (boxes_touch(boxes[i], boxes[j], margin)) out.emplace_back(std::min(i, j), std::max(i, j));
     active.push_back(i);
   }
   std::sort(out.begin(), out.end());

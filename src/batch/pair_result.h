@@ -45,6 +45,7 @@ struct PairResult {
   std::optional<double> hull_depth;                   ///< the hull stage's depth, when refined
   std::optional<std::array<double, 2>> depth_bounds;  ///< [lower, upper] when they differ
   std::optional<bool> confirmed;  ///< pairs of a nonconvex part: decided on its own geometry
+  bool reused = false;            ///< taken from an earlier report (--reuse), not solved
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "batch/broad_phase.h"
+#include "batch/content_hashes.h"
 #include "batch/motion_sweep.h"
 #include "batch/pair_solve.h"
 #include "batch/progress.h"
@@ -130,12 +131,31 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   const auto t0 = Clock::now();
   auto t = t0;
   RunResult out;
+  const std::vector<std::string> hashes = part_content_hashes(scene);
+  out.scene_hash = scene_content_hash(scene, hashes);
+  out.settings_hash = settings_hash(options.solver, options.tolerance, scene.checks);
+  // A shard plans the whole scene without hulls, then loads only its parts.
+  std::optional<ScenePlan> plan;
+  std::vector<int> loaded;  // scene index of each loaded part (a shard's)
+  SceneSpec shard_scene;
+  if (options.shard) {
+    plan = plan_scene(scene, options.shard->total, options.jobs, options.load_timeout);
+    loaded = shard_parts(*plan, options.shard->index - 1);
+    shard_scene.path = scene.path;
+    shard_scene.units = scene.units;
+    shard_scene.tolerance = scene.tolerance;
+    shard_scene.checks = scene.checks;
+    for (int k : loaded) shard_scene.parts.push_back(scene.parts[k]);
+  }
+  const SceneSpec& to_load = plan ? shard_scene : scene;
   {
-    Progress progress(scene.parts.size(), options.quiet, "parts");
+    Progress progress(to_load.parts.size(), options.quiet, "parts");
     out.parts = build_parts(
-        scene, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout);
+        to_load, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout);
     progress.finish();
   }
+  for (size_t k = 0; k < out.parts.size(); ++k)
+    out.part_hashes.push_back(hashes[plan ? loaded[k] : k]);
   out.stages.parts = lap(t);
   const std::vector<Part>& parts = out.parts;
   const int n = static_cast<int>(parts.size());
@@ -165,7 +185,45 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   };
 
   std::vector<std::pair<int, int>> pairs;
-  if (scene.pairs) {
+  if (plan) {
+    // This shard's planned pairs, kept when their hull boxes touch: exactly the
+    // unsharded broad phase's decision (boxes_touch), pair by pair.
+    const int shard = options.shard->index - 1;
+    std::vector<int> local(scene.parts.size(), -1);
+    for (size_t k = 0; k < loaded.size(); ++k) local[loaded[k]] = static_cast<int>(k);
+    std::vector<Aabb> boxes(n);
+    for (int k = 0; k < n; ++k)
+      if (!parts[k].error)
+        boxes[k] = checks.motion ? swept_box(parts[k], checks.motion->grid) : parts[k].box;
+    ShardManifest m;
+    m.shard = *options.shard;
+    m.parts_total = static_cast<long>(scene.parts.size());
+    m.part_index = loaded;
+    for (int k : loaded)
+      if (plan->owner[k] == shard) m.owned.push_back(k);
+    for (const Part& p : parts) m.vertices_loaded += p.vertex_count;
+    m.vertices_total = plan->vertices_total;
+    for (size_t p = 0; p < plan->pairs.size(); ++p) {
+      if (plan->pair_shard[p] != shard) continue;
+      ++m.pairs_planned;
+      const int a = local[plan->pairs[p].first], b = local[plan->pairs[p].second];
+      if (plan->listed) {
+        pairs.emplace_back(a, b);
+      } else if (parts[a].error || parts[b].error) {
+        ++out.unchecked;
+      } else if (boxes_touch(boxes[a], boxes[b], reach)) {
+        pairs.emplace_back(a, b);
+      } else {
+        ++out.culled;
+      }
+    }
+    const long all = m.parts_total * (m.parts_total - 1) / 2;
+    m.pairs_total = plan->listed ? static_cast<long>(plan->pairs.size()) : all;
+    out.all_pairs = m.pairs_planned;
+    m.pairs_checked = static_cast<long>(pairs.size());
+    m.listed = plan->listed;
+    out.shard = std::move(m);
+  } else if (scene.pairs) {
     std::map<std::string, int> index;
     for (int k = 0; k < n; ++k) index[parts[k].id] = k;
     for (const auto& [a, b] : *scene.pairs) {
@@ -198,15 +256,30 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   out.pairs.resize(pairs.size());
   // Largest pairs first (by the work of one support evaluation): no worker
   // idles at the end on a long tail.
-  std::vector<size_t> order(pairs.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  // --reuse: an unchanged pair keeps its old result (nonconvex parts' pairs are
+  // solved again: their refinement runs after the hull stage).
+  std::vector<size_t> order;
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const auto [a, b] = pairs[k];
+    std::optional<PairResult> prior;
+    if (options.reuse && !parts[a].refinable() && !parts[b].refinable())
+      prior = prior_result(*options.reuse, out.settings_hash, a, parts[a].id, out.part_hashes[a], b,
+                           parts[b].id, out.part_hashes[b]);
+    if (!prior) {
+      order.push_back(k);
+      continue;
+    }
+    out.pairs[k] = *prior;
+    ++out.reused;
+    if (options.on_pair) options.on_pair(out.pairs[k], parts);
+  }
   std::vector<long> hull_size(n);
   for (int k = 0; k < n; ++k) hull_size[k] = parts[k].hull_vertex_count();
   auto cost = [&](size_t k) { return hull_size[pairs[k].first] * hull_size[pairs[k].second]; };
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t x, size_t y) { return cost(x) > cost(y); });
 
-  Progress progress(pairs.size(), options.quiet, "pairs");
+  Progress progress(order.size(), options.quiet, "pairs");
   std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
   // Fault injection for the crash-isolation test: the worker that takes the
   // named pair dies as a solver crash would.

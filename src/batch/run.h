@@ -2,10 +2,13 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "batch/pair_result.h"
+#include "batch/reuse.h"
+#include "batch/shard.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "solve/settings.h"
@@ -26,6 +29,10 @@ struct RunOptions {
   /// Called with a note on how the run went that the user should know (fewer
   /// workers than asked for, ...). None when empty.
   std::function<void(const std::string&)> on_warning;
+  /// Check only this shard's pairs, loading only their parts (batch/shard.h).
+  std::optional<ShardSpec> shard;
+  /// Take unchanged pairs' results from an earlier report (batch/reuse.h).
+  const PriorResults* reuse = nullptr;
 };
 
 /// Wall time of each stage of run_scene, in seconds.
@@ -36,6 +43,19 @@ struct StageTimes {
   double refine = 0.0;       ///< nonconvex pairs: mesh tests, decompositions, piece pairs
 };
 
+/// What a shard's report says about it (docs/report-format.md, "shard").
+struct ShardManifest {
+  ShardSpec shard;
+  long parts_total = 0;         ///< parts of the scene
+  long pairs_total = 0;         ///< the scene's n(n − 1)/2, or its listed pairs
+  long pairs_planned = 0;       ///< planned pairs of this shard (a superset of its candidates)
+  long pairs_checked = 0;       ///< its candidate pairs (the planned ones whose hull boxes touch)
+  bool listed = false;          ///< the scene lists its pairs (no broad phase)
+  std::vector<int> part_index;  ///< scene index of each of RunResult::parts
+  std::vector<int> owned;       ///< scene indices of the parts this shard reports
+  long vertices_loaded = 0, vertices_total = 0;
+};
+
 struct RunResult {
   std::vector<Part> parts;
   std::vector<PairResult> pairs;  ///< in (a, b) order: deterministic whatever the jobs
@@ -44,7 +64,11 @@ struct RunResult {
   long unchecked = 0;             ///< never formed: a part of theirs is unusable
   double seconds = 0.0;
   StageTimes stages;
-  std::vector<std::string> simulated;  ///< "interference", then "clearance", "motion" if asked
+  std::vector<std::string> simulated;    ///< "interference", then "clearance", "motion" if asked
+  std::vector<std::string> part_hashes;  ///< per part: content hash (batch/content_hashes.h)
+  std::string scene_hash, settings_hash;
+  long reused = 0;                     ///< pairs taken from --reuse
+  std::optional<ShardManifest> shard;  ///< set by a --shard run
 };
 
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options);

@@ -93,7 +93,22 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
                 {"ipopt_failures", r.stats.ipopt_failures},
                 {"stop_reason", stop_reason_name(r.stats.stop_reason)}};
   j["time_ms"] = r.time_ms;
+  if (r.reused) j["reused"] = true;
   return j;
+}
+
+json shard_json(const ShardManifest& m) {
+  return {{"index", m.shard.index},
+          {"total", m.shard.total},
+          {"parts_total", m.parts_total},
+          {"pairs_total", m.pairs_total},
+          {"pairs_planned", m.pairs_planned},
+          {"pairs_checked", m.pairs_checked},
+          {"listed", m.listed},
+          {"vertices_loaded", m.vertices_loaded},
+          {"vertices_total", m.vertices_total},
+          {"part_index", m.part_index},
+          {"owned", m.owned}};
 }
 
 json summary_json(const Summary& s) {
@@ -115,13 +130,15 @@ json summary_json(const Summary& s) {
 
 json report_json(const ReportContext& ctx, const RunResult& r) {
   json parts = json::array();
-  for (const Part& p : r.parts) {
+  for (size_t k = 0; k < r.parts.size(); ++k) {
+    const Part& p = r.parts[k];
     json j = {{"id", p.id},
               {"source", p.source},
               {"vertices", p.vertex_count},
               {"hull_vertices", p.hull_vertex_count()},
               {"pieces", p.decomposition ? p.decomposition->pieces.size() : p.pieces.size()},
               {"warnings", p.warnings}};
+    if (k < r.part_hashes.size()) j["content_hash"] = r.part_hashes[k];
     if (p.convex) j["convex"] = *p.convex;
     if (p.decomposition) {
       j["decomposition_seconds"] = p.decomposition->seconds;
@@ -145,26 +162,30 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
     method.update({{"N", s.paper_n}, {"M", s.paper_m}, {"sigma", s.sigma}, {"tau", s.tau}});
   if (s.method == Method::kGrid) method["grid"] = s.grid;
   if (s.method == Method::kGsLocal) method["gs_local"] = s.gs_local;
-  return {{"tool", {{"name", "pdcheck"}, {"version", PDCHECK_VERSION}}},
-          {"report_version", 1},
-          {"scene", ctx.scene_path},
-          {"units", ctx.units},
-          {"tolerance", ctx.tolerance},
-          {"method", method},
-          {"direction_convention",
-           "moving part b by depth * direction separates the pair; for separated pairs "
-           "direction is a separating-plane normal pointing from a to b"},
-          {"simulated", r.simulated},
-          {"summary", summary_json(summarize(r))},
-          {"seconds", r.seconds},
-          {"stage_seconds",
-           {{"load", ctx.load_seconds},
-            {"parts", r.stages.parts},
-            {"broad_phase", r.stages.broad_phase},
-            {"solve", r.stages.solve},
-            {"refine", r.stages.refine}}},
-          {"parts", parts},
-          {"pairs", pairs}};
+  json doc = {{"tool", {{"name", "pdcheck"}, {"version", PDCHECK_VERSION}}},
+              {"report_version", 1},
+              {"scene", ctx.scene_path},
+              {"units", ctx.units},
+              {"tolerance", ctx.tolerance},
+              {"method", method},
+              {"direction_convention",
+               "moving part b by depth * direction separates the pair; for separated pairs "
+               "direction is a separating-plane normal pointing from a to b"},
+              {"simulated", r.simulated},
+              {"summary", summary_json(summarize(r))},
+              {"seconds", r.seconds},
+              {"stage_seconds",
+               {{"load", ctx.load_seconds},
+                {"parts", r.stages.parts},
+                {"broad_phase", r.stages.broad_phase},
+                {"solve", r.stages.solve},
+                {"refine", r.stages.refine}}}};
+  if (!r.scene_hash.empty())
+    doc["hashes"] = {{"scene", r.scene_hash}, {"settings", r.settings_hash}};
+  if (r.shard) doc["shard"] = shard_json(*r.shard);
+  doc["parts"] = parts;
+  doc["pairs"] = pairs;
+  return doc;
 }
 
 std::string summary_line(const Summary& s, double seconds) {

@@ -31,6 +31,9 @@ Summary summarize(const RunResult& r);
 nlohmann::ordered_json pair_json(const PairResult& r, const std::vector<Part>& parts);
 nlohmann::ordered_json report_json(const ReportContext& ctx, const RunResult& r);
 nlohmann::ordered_json summary_json(const Summary& s);
+/// A shard's manifest (docs/report-format.md, "shard"); checked and pairs
+/// counts are the shard's summary.
+nlohmann::ordered_json shard_json(const ShardManifest& m);
 /// One line for stderr: "pdcheck: 12 parts, 7 pairs checked: 1 interference, ...".
 std::string summary_line(const Summary& s, double seconds);
 

@@ -1,0 +1,95 @@
+#include "batch/content_hashes.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include "hash.h"
+
+namespace pd {
+
+namespace {
+
+void add_vec(Hasher& h, const Vec3& v) {
+  for (int k = 0; k < 3; ++k) h.add(v[k]);
+}
+
+std::string file_hash(const std::string& path) {
+  try {  // only regular files: a FIFO or device could block or never end (its load says why)
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return content_hash("not a file|" + path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return content_hash("unreadable|" + path);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) return content_hash("unreadable|" + path);
+    return content_hash(bytes);
+  } catch (const std::exception&) {
+    return content_hash("unreadable|" + path);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> part_content_hashes(const SceneSpec& scene) {
+  std::map<std::string, std::string> files;  // path -> content hash, each file read once
+  std::vector<std::string> out;
+  out.reserve(scene.parts.size());
+  for (const PartSpec& p : scene.parts) {
+    Hasher h;
+    h.add("pdcheck-part-v1");
+    if (p.mesh) {
+      auto it = files.find(*p.mesh);
+      if (it == files.end()) it = files.emplace(*p.mesh, file_hash(*p.mesh)).first;
+      h.add("mesh").add(it->second);
+    } else {
+      const Points& v = *p.vertices;
+      h.add("inline").add(std::string_view(reinterpret_cast<const char*>(v.data()),
+                                           sizeof(double) * static_cast<size_t>(v.size())));
+    }
+    h.add(p.to_scene_units);
+    for (int i = 0; i < 16; ++i) h.add(p.transform(i / 4, i % 4));
+    h.add(pieces_name(p.pieces));
+    if (p.motion) {
+      h.add("motion");
+      add_vec(h, p.motion->angular);
+      add_vec(h, p.motion->about);
+      add_vec(h, p.motion->velocity);
+    }
+    out.push_back(h.hex());
+  }
+  return out;
+}
+
+std::string scene_content_hash(const SceneSpec& scene,
+                               const std::vector<std::string>& part_hashes) {
+  Hasher h;
+  h.add("pdcheck-scene-v1").add(scene.units.value_or("mm"));
+  for (size_t k = 0; k < scene.parts.size(); ++k) h.add(scene.parts[k].id).add(part_hashes[k]);
+  if (scene.pairs) {
+    h.add("pairs");
+    for (const auto& [a, b] : *scene.pairs) h.add(a).add(b);
+  }
+  return h.hex();
+}
+
+std::string settings_hash(const SolverSettings& s, double tolerance, const Checks& checks) {
+  Hasher h;
+  h.add("pdcheck-settings-v1").add(method_name(s.method));
+  h.add(std::to_string(s.seed));
+  for (int v : {s.samples, s.min_iterations, s.max_iterations, s.max_local_solves, s.paper_n,
+                s.paper_m, s.grid, s.gs_local})
+    h.add(std::to_string(v));
+  for (double v : {s.reduced, s.sigma, s.tau, s.link_scale, s.max_seconds, tolerance}) h.add(v);
+  if (checks.clearance) {
+    h.add("clearance").add(checks.clearance->min);
+    for (const auto& e : checks.clearance->pairs) h.add(e.a).add(e.b).add(e.min);
+  }
+  if (checks.motion) {
+    const TimeGrid& g = checks.motion->grid;
+    h.add("motion").add(g.t0).add(g.t1).add(g.dt).add(checks.motion->series ? "series" : "");
+  }
+  return h.hex();
+}
+
+}  // namespace pd

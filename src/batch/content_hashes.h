@@ -1,0 +1,27 @@
+// Content hashes of a scene (src/hash.h, XXH3-128): what shards compare before
+// they are merged, and what --reuse compares before it takes an old pair result.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "solve/settings.h"
+
+namespace pd {
+
+/// Per part, the hash of everything its geometry depends on: the mesh file's bytes
+/// (or the inline vertices' bits), its units, transform, pieces and motion. The
+/// id is not in it (ids name pairs; a renamed part is another pair). A mesh file is
+/// read once however many parts use it; an unreadable one hashes its path and the
+/// reason, so it never matches a readable file.
+std::vector<std::string> part_content_hashes(const SceneSpec& scene);
+
+/// The scene: its unit, the parts (ids and content hashes, in order) and any pair list.
+std::string scene_content_hash(const SceneSpec& scene, const std::vector<std::string>& part_hashes);
+
+/// Everything besides geometry that changes a pair's result: the solver settings,
+/// the tolerance and the checks (clearance, motion).
+std::string settings_hash(const SolverSettings& solver, double tolerance, const Checks& checks);
+
+}  // namespace pd

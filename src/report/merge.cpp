@@ -1,0 +1,216 @@
+#include "report/merge.h"
+
+#include <algorithm>
+#include <map>
+
+#include "report/json_input.h"
+#include "report/pair_from_json.h"
+#include "report/report_json.h"
+#include "report/review.h"
+#include "report/review_json.h"
+
+namespace pd {
+
+using json = nlohmann::ordered_json;
+
+ShardReport read_shard_report(const std::string& path) {
+  std::string text;
+  try {
+    text = read_input_file(path);
+  } catch (const ReportInputError& e) {
+    throw MergeError(e.what());
+  }
+  ShardReport r{path, {}};
+  try {
+    r.doc = json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw MergeError(path + ": not a JSON report (" + e.what() + ")");
+  }
+  if (!r.doc.is_object() || !r.doc.contains("shard") || !r.doc["shard"].is_object())
+    throw MergeError(path + ": $.shard: missing: not a shard report (written without --shard?)");
+  return r;
+}
+
+namespace {
+
+std::string text_of(const json& j) {
+  return j.is_string() ? j.get<std::string>() : j.dump();
+}
+
+// The same value in every shard, or a MergeError naming the two that differ.
+void same(const std::vector<ShardReport>& shards, const std::string& what,
+          const std::function<json(const json&)>& get) {
+  const json first = get(shards[0].doc);
+  for (size_t k = 1; k < shards.size(); ++k) {
+    const json v = get(shards[k].doc);
+    if (v != first)
+      throw MergeError("shards of different runs: " + what + " is " + text_of(first) + " in " +
+                       shards[0].path + " but " + text_of(v) + " in " + shards[k].path);
+  }
+}
+
+}  // namespace
+
+Merged merge_shard_reports(const std::vector<ShardReport>& shards, std::optional<FailOn> fail_on) {
+  if (shards.empty()) throw MergeError("no shard reports given");
+  try {
+    same(shards, "the tool version", [](const json& d) { return d.at("tool").at("version"); });
+    same(shards, "the scene content hash ($.hashes.scene)",
+         [](const json& d) { return d.at("hashes").at("scene"); });
+    same(shards, "the settings hash ($.hashes.settings)",
+         [](const json& d) { return d.at("hashes").at("settings"); });
+    same(shards, "the shard count ($.shard.total)",
+         [](const json& d) { return d.at("shard").at("total"); });
+    same(shards, "$.units", [](const json& d) { return d.at("units"); });
+    same(shards, "$.tolerance", [](const json& d) { return d.at("tolerance"); });
+    same(shards, "$.method", [](const json& d) { return d.at("method"); });
+    same(shards, "$.simulated", [](const json& d) { return d.at("simulated"); });
+    same(shards, "$.shard.parts_total",
+         [](const json& d) { return d.at("shard").at("parts_total"); });
+    same(shards, "$.shard.pairs_total",
+         [](const json& d) { return d.at("shard").at("pairs_total"); });
+  } catch (const nlohmann::json::exception& e) {
+    throw MergeError(std::string("not a shard report: ") + e.what());
+  }
+  const json& first = shards[0].doc;
+  const long total = first["shard"]["total"].get<long>();
+  // Each shard once: a duplicated shard would count its pairs twice, a missing one
+  // would pass its pairs as clean.
+  std::map<long, std::string> by_index;
+  for (const ShardReport& s : shards) {
+    const long k = s.doc["shard"].at("index").get<long>();
+    const auto [it, fresh] = by_index.emplace(k, s.path);
+    if (!fresh)
+      throw MergeError("shard " + std::to_string(k) + "/" + std::to_string(total) +
+                       " given twice: " + it->second + " and " + s.path);
+  }
+  std::string missing;
+  for (long k = 1; k <= total; ++k)
+    if (!by_index.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+  if (!missing.empty())
+    throw MergeError("shard(s) " + missing + " of " + std::to_string(total) + " missing (" +
+                     std::to_string(shards.size()) + " of " + std::to_string(total) + " given)");
+
+  // Parts: each from the shard that owns it, in scene order.
+  const long n = first["shard"]["parts_total"].get<long>();
+  std::vector<json> parts(n);
+  std::vector<std::string> owner(n);
+  for (const ShardReport& s : shards) {
+    const json& m = s.doc["shard"];
+    std::map<long, size_t> listed;  // scene index -> position in this report's parts
+    const json& index = m.at("part_index");
+    for (size_t k = 0; k < index.size(); ++k) listed[index[k].get<long>()] = k;
+    for (const json& o : m.at("owned")) {
+      const long k = o.get<long>();
+      if (k < 0 || k >= n || !listed.count(k))
+        throw MergeError(s.path + ": $.shard.owned: part index " + std::to_string(k) +
+                         " is not among its parts");
+      if (!owner[k].empty())
+        throw MergeError("part index " + std::to_string(k) + " reported by both " + owner[k] +
+                         " and " + s.path + ": the shards were planned differently");
+      owner[k] = s.path;
+      parts[k] = s.doc.at("parts").at(listed[k]);
+    }
+  }
+  for (long k = 0; k < n; ++k) {
+    if (owner[k].empty())
+      throw MergeError("part index " + std::to_string(k) + " is reported by no shard");
+  }
+  // A part decomposed by a shard that does not own it (its pair needed it there).
+  for (const ShardReport& s : shards) {
+    const json& index = s.doc["shard"]["part_index"];
+    for (size_t k = 0; k < index.size(); ++k) {
+      const long i = index[k].get<long>();
+      const json& p = s.doc["parts"][k];
+      if (p.contains("decomposition_seconds") && !parts[i].contains("decomposition_seconds"))
+        parts[i] = p;
+    }
+  }
+  std::map<std::string, int> id_index;
+  for (long k = 0; k < n; ++k) id_index[parts[k].at("id").get<std::string>()] = static_cast<int>(k);
+
+  // Pairs: every shard's, in the unsharded run's (a, b) order.
+  struct Entry {
+    int a, b;
+    const json* pair;
+    const std::string* path;
+  };
+  std::vector<Entry> entries;
+  for (const ShardReport& s : shards)
+    for (const json& p : s.doc.at("pairs")) {
+      const auto ia = id_index.find(p.at("a").get<std::string>());
+      const auto ib = id_index.find(p.at("b").get<std::string>());
+      if (ia == id_index.end() || ib == id_index.end())
+        throw MergeError(s.path + ": pair " + p.at("a").dump() + ", " + p.at("b").dump() +
+                         " names a part no shard reports");
+      entries.push_back(
+          {std::min(ia->second, ib->second), std::max(ia->second, ib->second), &p, &s.path});
+    }
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& x, const Entry& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+  for (size_t k = 1; k < entries.size(); ++k)
+    if (entries[k].a == entries[k - 1].a && entries[k].b == entries[k - 1].b)
+      throw MergeError("pair " + entries[k].pair->at("a").dump() + ", " +
+                       entries[k].pair->at("b").dump() + " checked by both " +
+                       *entries[k - 1].path + " and " + *entries[k].path);
+
+  // The run as one run would have it: its counts, then its review.
+  RunResult run;
+  run.simulated = first.at("simulated").get<std::vector<std::string>>();
+  for (long k = 0; k < n; ++k) {
+    Part p;
+    p.id = parts[k].at("id").get<std::string>();
+    if (parts[k].contains("error")) p.error = parts[k]["error"].get<std::string>();
+    run.parts.push_back(std::move(p));
+  }
+  for (const Entry& e : entries) {
+    PairResult r;
+    try {
+      r = pair_from_json(*e.pair, e.a, e.b);
+    } catch (const std::exception& ex) {
+      throw MergeError(*e.path + ": pair " + e.pair->at("a").dump() + ", " +
+                       e.pair->at("b").dump() + ": " + ex.what());
+    }
+    run.pairs.push_back(std::move(r));
+  }
+  Summary s = summarize(run);
+  s.all_pairs = first["shard"]["pairs_total"].get<long>();
+  if (!first["shard"].value("listed", false)) {
+    const long usable = n - s.part_errors;
+    const long usable_pairs = usable * (usable - 1) / 2;
+    s.unchecked = s.all_pairs - usable_pairs;
+    s.culled = usable_pairs - s.candidates;
+  }
+  ReviewOptions opt;
+  opt.fail_on = fail_on;
+  const Review review = review_run(run, opt, s.exit_code() == 3);
+
+  Merged out;
+  out.doc = first;
+  out.doc.erase("shard");
+  out.doc["summary"] = summary_json(s);
+  double seconds = 0.0;
+  json stages = first.at("stage_seconds");
+  for (auto& [key, v] : stages.items()) v = 0.0;
+  for (const ShardReport& sh : shards) {
+    seconds += sh.doc.at("seconds").get<double>();
+    for (auto& [key, v] : stages.items())
+      v = v.get<double>() + sh.doc["stage_seconds"].value(key, 0.0);
+  }
+  out.doc["seconds"] = seconds;
+  out.doc["stage_seconds"] = stages;
+  out.doc["parts"] = json(parts);
+  json pairs = json::array();
+  for (size_t k = 0; k < entries.size(); ++k) {
+    json p = *entries[k].pair;
+    add_pair_review(p, review.pairs[k]);
+    pairs.push_back(std::move(p));
+  }
+  out.doc["pairs"] = std::move(pairs);
+  add_run_review(out.doc, out.doc["summary"], review, opt);
+  out.exit_code = review.exit_code;
+  out.summary_line = summary_line(s, seconds);
+  return out;
+}
+
+}  // namespace pd
