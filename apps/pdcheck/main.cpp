@@ -5,8 +5,8 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <iterator>
 #include <mutex>
@@ -215,8 +215,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> merge_inputs;
   std::string merge_output, merge_fail_on;
   bool merge_quiet = false;
-  merge_cmd->add_option("reports", merge_inputs, "the shard reports, 1..N, each once")
-      ->required();
+  merge_cmd->add_option("reports", merge_inputs, "the shard reports, 1..N, each once")->required();
   merge_cmd->add_option("-o,--output", merge_output,
                         "write the merged report to this file (atomically) instead of stdout");
   std::vector<std::string> merge_bars;
@@ -261,8 +260,8 @@ int main(int argc, char** argv) {
     if (shard) {
       if (format != "json")
         throw pd::ShardError("--shard writes a JSON report (--format json) for pdcheck merge");
-      for (const char* o : {"--baseline", "--suppressions", "--write-suppressions", "--junit",
-                            "--sarif", "--html"})
+      for (const char* o :
+           {"--baseline", "--suppressions", "--write-suppressions", "--junit", "--sarif", "--html"})
         if (app.count(o))
           throw pd::ShardError(std::string("--shard: ") + o +
                                " applies to the whole run, not to one shard");
