@@ -27,11 +27,10 @@ export LSAN_OPTIONS="suppressions=$ROOT/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LS
 # solver, scene and CLI tests that do run here. PDCHECK_SANITIZE_ALL=1 runs all.
 # Also left out: tests whose outcome depends on wall time (time-boxed decompositions: under ASan's
 # 3-10x slowdown they hit their time box and give other pieces), the contact-family test (clang -O1
-# rounds a 7e-15 contact depth differently from the release build), and fuzz_run_ply (it meets the
-# known assimp PLY hangs of tests/fuzz/assimp-known/ within seconds; real runs contain them in the
-# loader processes), and the HTML report's browser test (its pdcheck code runs under ASan in the
-# HtmlCli tests; a browser start costs seconds). All of them run in the release build's suite.
-SLOW="^(html_report_browser|Decompose\..*|Nonconvex\..*|Contacts\.EveryFamilyGivesTheExactDepth|fuzz_run_ply|Exact\.BoundedByDenseDirectionSampling|Cli\.JobsDoNotChangeALargerReport|Checks\.WarmStartGivesTheColdValues|Checks\.IpoptDistanceMatchesTheExactDistance|Methods\.EveryMethodIsAnUpperBoundOnExact|Mlsl\.PaperLikePairsMatchExact|HardCases\.TwoThousandVerticesPerPart)$"
+# rounds a 7e-15 contact depth differently from the release build), and the HTML report's browser
+# test (its pdcheck code runs under ASan in the HtmlCli tests; a browser start costs seconds). All of
+# them run in the release build's suite.
+SLOW="^(html_report_browser|Decompose\..*|Nonconvex\..*|Contacts\.EveryFamilyGivesTheExactDepth|Exact\.BoundedByDenseDirectionSampling|Cli\.JobsDoNotChangeALargerReport|Checks\.WarmStartGivesTheColdValues|Checks\.IpoptDistanceMatchesTheExactDistance|Methods\.EveryMethodIsAnUpperBoundOnExact|Mlsl\.PaperLikePairsMatchExact|HardCases\.TwoThousandVerticesPerPart)$"
 exclude=(-E "$SLOW")
 [ "${PDCHECK_SANITIZE_ALL:-0}" = 1 ] && exclude=()
 (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" "${exclude[@]}" "$@")
