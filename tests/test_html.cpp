@@ -277,6 +277,27 @@ TEST(HtmlCli, RunAndSavedReportGiveTheSameFindings) {
   EXPECT_EQ(a["findings"][0]["status"], "interference");
 }
 
+TEST(HtmlCli, BaselineStatesAndAMovedReport) {
+  // With --baseline the page carries the state counts and each finding's state;
+  // a report moved beside its scene still finds it.
+  const std::string dir = scratch_dir("html_cli_baseline");
+  const ShellRun r =
+      shell(dir,
+            "cp -r \"$(dirname \"$DEMO\")\" demo && cd demo && \"$PDCHECK\" scene.json -q "
+            "-o ../old.json; \"$PDCHECK\" scene.json -q -o ../r.json --baseline "
+            "../old.json --html ../run.html; cd .. && mkdir moved && cp r.json "
+            "demo/r.json && \"$PDCHECK\" html demo/r.json -o moved/p.html");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const nlohmann::json run = page_data(pd_test::read_text(dir + "/run.html"));
+  ASSERT_TRUE(run.is_object());
+  EXPECT_EQ(run["summary"]["baseline"]["unchanged"], 3) << run["summary"];
+  EXPECT_EQ(run["findings"][0]["baseline_state"], "unchanged");
+  const nlohmann::json moved = page_data(pd_test::read_text(dir + "/moved/p.html"));
+  ASSERT_TRUE(moved.is_object());
+  EXPECT_TRUE(moved["notes"].empty()) << moved["notes"];
+  EXPECT_FALSE(moved["findings"][0]["view"]["a"].is_null());
+}
+
 TEST(HtmlCli, UnreadablePartsAreNamedAndTheRestIsShown) {
   const std::string dir = scratch_dir("html_cli_missing");
   const ShellRun r = shell(dir,

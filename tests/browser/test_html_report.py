@@ -107,6 +107,13 @@ def main():
         check(stats is not None and stats["red"] > 50,
               "the interference's overlap is drawn (red pixels: %s)" % (stats and stats["red"]))
         b.screenshot(os.path.join(binary, "html-report-demo.png"))
+        bars = b.evaluate("document.querySelectorAll('#histogram-plot rect.bar').length")
+        over = b.evaluate("document.querySelectorAll('#histogram-plot rect.bar.over').length")
+        n_over = sum(p["status"] == "interference" for p in findings)
+        check(bars >= 2 and over >= 1 and b.evaluate("!!document.querySelector('#histogram-plot line.tol')"),
+              "the histogram has bars on both sides of its tolerance line (%d bars, %d above)" % (bars, over))
+        check(("%d above it" % n_over) in b.evaluate("document.getElementById('histogram-text').textContent"),
+              "the histogram's text counts the %d depths above the tolerance" % n_over)
 
         # A click on the last row selects it and puts it in the permalink.
         last = rows[-1][2]
