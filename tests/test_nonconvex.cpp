@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "batch/refine.h"
+#include "batch/refine_cache.h"
 
 using namespace pd;
 using nlohmann::json;
@@ -178,6 +179,57 @@ TEST(Nonconvex, ACorruptCacheEntryIsRecomputed) {
     }
   EXPECT_EQ(without_decomposition_times(without_timings(cold)),
             without_decomposition_times(without_timings(warm)));
+}
+
+// The refinement cache: a rerun takes each refined pair's result from it (seen
+// by marking every stored result), and a part moved since misses it.
+TEST(Nonconvex, RefinedPairsComeFromTheCacheUntilAPlacementChanges) {
+  const fs::path d = generate("nonconvex_pair_cache");
+  const fs::path cache = d / "cache";
+  const json cold = pdcheck(d, "--pieces auto --cache " + cache.string());
+  ASSERT_TRUE(cold.is_object());
+  int entries = 0;
+  for (const auto& f : fs::directory_iterator(cache)) {
+    if (f.path().extension() != ".pdr") continue;
+    const std::string key = f.path().stem().string();
+    auto stored = read_cached_refinement(cache.string(), key);
+    ASSERT_TRUE(stored) << f.path();
+    stored->result.depth_source = "from-cache";
+    ASSERT_EQ(write_cached_refinement(cache.string(), key, *stored), "");
+    ++entries;
+  }
+  ASSERT_GT(entries, 3);
+  auto refined = [](const json& report) {
+    std::map<std::string, std::string> m;
+    for (const auto& p : report["pairs"])
+      if (p.contains("hull_depth")) m[key(p["a"], p["b"])] = p["depth_source"];
+    return m;
+  };
+  const auto before = refined(cold);
+  ASSERT_GT(before.size(), 3u);
+  const auto warm = refined(pdcheck(d, "--pieces auto --cache " + cache.string()));
+  EXPECT_EQ(warm.size(), before.size());
+  for (const auto& [k, source] : before) {
+    ASSERT_TRUE(warm.count(k)) << k;
+    EXPECT_EQ(warm.at(k), "from-cache") << k;
+  }
+
+  // Move the clearance-fit bolt by 0.1 mm (still clear of its hole).
+  json scene = read_json(d / "scene.json");
+  for (auto& part : scene["parts"])
+    if (part["id"] == "c0_bolt_clear")
+      part["transform"] = {{1, 0, 0, 0.1}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+  std::ofstream(d / "scene.json") << scene.dump();
+  const auto after = refined(pdcheck(d, "--pieces auto --cache " + cache.string()));
+  const std::string moved = key("c0_plate", "c0_bolt_clear");
+  ASSERT_TRUE(after.count(moved));
+  EXPECT_EQ(after.at(moved), "mesh-test");  // recomputed: the bolt is still clear
+  EXPECT_EQ(after.size(), before.size());
+  for (const auto& [k, source] : after) {
+    if (k.find("c0_bolt_clear") == std::string::npos) {
+      EXPECT_EQ(source, "from-cache") << k;
+    }
+  }
 }
 
 TEST(Nonconvex, DecideRefinedNeverQuietlyPassesAnUndecidedPair) {

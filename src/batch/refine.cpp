@@ -1,17 +1,19 @@
 #include "batch/refine.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
 
 #include "batch/decomposition_cache.h"
 #include "batch/progress.h"
-#include "work_queue.h"
+#include "batch/refine_cache.h"
+#include "geometry/decompose.h"
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
-#include "geometry/decompose.h"
 #include "parallel_for.h"
 #include "tolerances.h"
+#include "work_queue.h"
 
 namespace pd {
 
@@ -200,6 +202,27 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   }
   if (flagged.empty()) return;
 
+  // 0. Pairs refined before with the same parts, placements and settings are
+  // taken from the cache (batch/refine_cache.h): none of the steps below runs
+  // for them. Their parts are still decomposed (from the decomposition cache)
+  // when the pair needed pieces, so the report's part fields are the same.
+  std::vector<std::pair<size_t, StoredRefinement>> hits;
+  std::vector<std::string> keys;
+  if (!options.cache_dir.empty()) {
+    std::vector<size_t> misses;
+    for (size_t k : flagged) {
+      const auto [a, b] = pairs[k];
+      std::string key = refinement_key(parts[a], parts[b], results[k], options, checks(a, b));
+      if (auto hit = read_cached_refinement(options.cache_dir, key)) {
+        hits.emplace_back(k, std::move(*hit));
+      } else {
+        misses.push_back(k);
+        keys.push_back(std::move(key));
+      }
+    }
+    flagged.swap(misses);
+  }
+
   // 1. The surfaces: do they meet, and how deep is the deepest vertex.
   std::vector<int> used(parts.size(), 0);
   for (size_t k : flagged) used[pairs[k].first] = used[pairs[k].second] = 1;
@@ -238,6 +261,8 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     solve.push_back(n);
     used[a] = used[b] = 1;
   }
+  for (const auto& [k, hit] : hits)
+    if (hit.solved) used[pairs[k].first] = used[pairs[k].second] = 1;
   std::vector<int> to_decompose;
   for (size_t p = 0; p < parts.size(); ++p)
     if (used[p] && parts[p].refinable() && !parts[p].decomposition)
@@ -282,6 +307,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   progress.finish();
 
   // 4. Decide.
+  bool warned = false;  // a cache that cannot be written is said once
   for (size_t n = 0; n < flagged.size(); ++n) {
     const auto [a, b] = pairs[flagged[n]];
     const Part &pa = parts[a], &pb = parts[b];
@@ -290,6 +316,19 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     PairResult& r = results[flagged[n]];
     r = decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr, complete,
                        options.tolerance, pair_size(pa, pb));
+    // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
+    if (!keys.empty() && r.status != Status::kError) {
+      const bool solved = std::find(solve.begin(), solve.end(), n) != solve.end();
+      const std::string why = write_cached_refinement(options.cache_dir, keys[n], {r, solved});
+      if (!why.empty() && options.on_warning && !warned) options.on_warning(why), warned = true;
+    }
+    if (options.on_pair) options.on_pair(r, parts);
+  }
+  for (auto& [k, hit] : hits) {
+    PairResult& r = results[k];
+    hit.result.a = r.a;
+    hit.result.b = r.b;
+    r = std::move(hit.result);
     if (options.on_pair) options.on_pair(r, parts);
   }
 }
