@@ -14,5 +14,6 @@ PAIRS="${PAIRS:-20}"
 echo "accuracy_vs_time: corpus of $PAIRS pairs per set (stderr shows progress)" >&2
 "$ROOT/build/bin/pdbench" --pairs "$PAIRS" --budget "${BUDGET:-20}" --json "$OUT/corpus.json" >&2
 "$ROOT/build/bin/pdbench" --paper-tables --json "$OUT/paper.json" >&2
-"$PY" "$ROOT/scripts/accuracy_vs_time.py" "$OUT/corpus.json" "$OUT/paper.json" "$ROOT/docs"
+"$PY" "$ROOT/scripts/accuracy_vs_time.py" "$OUT/corpus.json" "$OUT/paper.json" "$ROOT/docs" \
+  "$PAIRS" "${BUDGET:-20}"
 echo "wrote docs/accuracy-vs-time.md and docs/accuracy-vs-time.png" >&2
