@@ -100,6 +100,9 @@ inline constexpr int kDecomposeScreenSamples = 64;
 /// only: they bound the page's size and load time (docs/report-format.md).
 inline constexpr size_t kHtmlPartTriangles = 4000;
 inline constexpr size_t kHtmlPageTriangles = 300000;
+/// The most parts of the rest of the assembly a finding's view shows around
+/// its pair (as faint boxes, the nearest first).
+inline constexpr size_t kHtmlContextParts = 24;
 
 /// Sharding (batch/shard.h). A shard's plan box of a part (its placed vertices'
 /// box) is widened by this fraction of its largest coordinate, so it contains the

@@ -275,6 +275,14 @@ TEST(HtmlCli, RunAndSavedReportGiveTheSameFindings) {
     EXPECT_FALSE(b["findings"][k]["view"]["a"].is_null()) << k;
   }
   EXPECT_EQ(a["findings"][0]["status"], "interference");
+  // Nearby parts as context: known ids, never the pair's own parts.
+  const auto& context = a["findings"][0]["view"]["context"];
+  EXPECT_FALSE(context.empty());
+  for (const auto& k : context) {
+    const std::string id = a["boxes"][k.get<size_t>()][0];
+    EXPECT_NE(id, a["findings"][0]["a"]);
+    EXPECT_NE(id, a["findings"][0]["b"]);
+  }
 }
 
 TEST(HtmlCli, BaselineStatesAndAMovedReport) {

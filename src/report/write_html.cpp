@@ -193,6 +193,35 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
     return index;
   };
 
+  // The rest of the assembly around a pair, faint in its view: the boxes of the
+  // parts whose boxes meet the pair's box grown by half its diagonal, the
+  // kHtmlContextParts nearest, each box stored once.
+  json boxes = json::array();
+  std::map<const Part*, int> box_index;
+  auto context_of = [&](const Part& a, const Part& b) {
+    const Aabb pair = a.box.merged(b.box);
+    const Aabb near = pair.inflated(0.5 * (pair.hi - pair.lo).norm());
+    const Vec3 centre = (pair.lo + pair.hi) / 2;
+    std::vector<std::pair<double, const Part*>> found;
+    for (const Part& p : parts)
+      if (&p != &a && &p != &b && !p.error && p.box.overlaps(near))
+        found.push_back({((p.box.lo + p.box.hi) / 2 - centre).squaredNorm(), &p});
+    const size_t keep = std::min(found.size(), tol::kHtmlContextParts);
+    std::partial_sort(found.begin(), found.begin() + static_cast<long>(keep), found.end());
+    json ids = json::array();
+    for (size_t k = 0; k < keep; ++k) {
+      const Part* p = found[k].second;
+      auto [it, added] = box_index.emplace(p, static_cast<int>(boxes.size()));
+      if (added)
+        boxes.push_back({p->id,
+                         {static_cast<float>(p->box.lo.x()), static_cast<float>(p->box.lo.y()),
+                          static_cast<float>(p->box.lo.z()), static_cast<float>(p->box.hi.x()),
+                          static_cast<float>(p->box.hi.y()), static_cast<float>(p->box.hi.z())}});
+      ids.push_back(it->second);
+    }
+    return ids;
+  };
+
   for (const json* pp : findings) {
     const json& p = *pp;
     json row = {{"a", p.value("a", "")},
@@ -236,6 +265,8 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
         view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";
       }
     }
+    if (pa != by_id.end() && pb != by_id.end() && !pa->second->error && !pb->second->error)
+      view["context"] = context_of(*pa->second, *pb->second);
     row["view"] = view;
     rows.push_back(row);
   }
@@ -260,6 +291,7 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
       {"summary", report.value("summary", json::object())},
       {"findings", rows},
       {"meshes", meshes},
+      {"boxes", boxes},
       {"part_errors", part_errors},
       {"notes", notes},
       {"caps",

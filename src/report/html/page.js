@@ -212,6 +212,8 @@
       add('part B', f.b + ': ' + how(v.b), COLORS.b);
       if (v.piece_a !== undefined) add('realising pieces', 'pieces ' + f.pieces.join(' and ') + ', outlined', COLORS.piece);
       if (v.overlap !== undefined) add('overlap', 'of ' + v.overlap_of + ': ' + how(v.overlap), COLORS.overlap);
+      if (v.context && v.context.length)
+        add('nearby', v.context.length + ' parts as faint boxes: ' + v.context.map((k) => data.boxes[k][0]).join(', '), '#8c959f');
     }
     if (f.baseline_state) add('baseline', f.baseline_state);
     if (f.suppressed) add('suppressed', f.suppressed.reason || '');
@@ -401,6 +403,29 @@
       line.name = 'direction';
       gl.group.add(line);
     }
+    // The rest of the assembly nearby: faint boxes (hidden with "context").
+    if (v.context && v.context.length) {
+      const pts = [];
+      for (const k of v.context) {
+        const b = data.boxes[k][1].map((x, d) => x - centre[d % 3]);
+        const c = [[b[0], b[3]], [b[1], b[4]], [b[2], b[5]]];
+        for (let e = 0; e < 12; ++e) {  // the 12 edges: 4 along each axis
+          const axis = e >> 2, u = (axis + 1) % 3, w = (axis + 2) % 3;
+          const p = [0, 0, 0], q = [0, 0, 0];
+          p[u] = q[u] = c[u][e & 1];
+          p[w] = q[w] = c[w][(e >> 1) & 1];
+          p[axis] = c[axis][0];
+          q[axis] = c[axis][1];
+          pts.push(new THREE.Vector3(...p), new THREE.Vector3(...q));
+        }
+      }
+      const ctx = new THREE.LineSegments(new THREE.BufferGeometry().setFromPoints(pts),
+        material('context', '#8c959f', 0.35, () => new THREE.LineBasicMaterial({
+          color: '#8c959f', transparent: true, opacity: 0.35 })));
+      ctx.name = 'context';
+      ctx.visible = $('show-context').checked;
+      gl.group.add(ctx);
+    }
     gl.fitBox = fit;
     gl.viewDir = dir;
     // First look: the clash, i.e. the overlap with the smaller part around it
@@ -524,6 +549,7 @@
   $('zoom-overlap').addEventListener('click', () => gl && fitTo(gl.overlapBox || gl.fitBox, gl.viewDir));
   $('show-a').addEventListener('change', (e) => toggle('a', e.target.checked));
   $('show-b').addEventListener('change', (e) => toggle('b', e.target.checked));
+  $('show-context').addEventListener('change', (e) => toggle('context', e.target.checked));
   document.addEventListener('keydown', (e) => {
     if (e.target.tagName === 'INPUT' || e.target.tagName === 'SELECT') return;
     if (e.key === 'f' || e.key === 'F') $('fit').click();
