@@ -10,6 +10,7 @@
 #include <random>
 #include <regex>
 
+#include "box_points.h"
 #include "geometry/hull.h"
 #include "report/html_geometry.h"
 #include "report/write_html.h"
@@ -22,12 +23,7 @@ using pd_test::ShellRun;
 
 namespace {
 
-Points box_points(const Vec3& lo, const Vec3& hi) {
-  Points p(3, 8);
-  for (int k = 0; k < 8; ++k)
-    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  return p;
-}
+using pd_test::box_points;
 
 Points mesh_points(const WebMesh& m) {
   Points p(3, static_cast<long>(m.vertex_count()));

@@ -11,6 +11,7 @@
 #include "batch/pair_solve.h"
 #include "batch/piece_pairs.h"
 #include "batch/run.h"
+#include "box_points.h"
 #include "geometry/hull.h"
 #include "report/report_json.h"
 #include "solve/exact.h"
@@ -20,12 +21,7 @@ using nlohmann::json;
 
 namespace {
 
-Points box_points(const Vec3& lo, const Vec3& hi) {
-  Points p(3, 8);
-  for (int k = 0; k < 8; ++k)
-    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  return p;
-}
+using pd_test::box_points;
 
 Points octahedron(double r) {
   Points p(3, 6);

@@ -14,6 +14,7 @@
 
 #include "report/html_assets.h"  // generated from src/report/html/ (CMakeLists.txt)
 #include "report/html_geometry.h"
+#include "report/markup_escape.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -64,27 +65,6 @@ std::string json_in_html(const json& j) {
   std::string out;
   out.reserve(text.size());
   for (char c : text) out += c == '<' ? std::string("\\u003c") : std::string(1, c);
-  return out;
-}
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
   return out;
 }
 
@@ -301,9 +281,9 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
 
   const std::string title = "pdcheck: " + report.value("scene", std::string("report"));
   return fill_template(kHtmlPage,
-                       {{"TITLE", html_escape(title)},
+                       {{"TITLE", markup_escape(title)},
                         {"STYLE", kHtmlStyle},
-                        {"LICENCE", html_escape(kThreeLicence)},
+                        {"LICENCE", markup_escape(kThreeLicence)},
                         {"DATA", json_in_html(data)},
                         {"THREE", script_safe(assets[0].text) + "\n" + script_safe(assets[1].text)},
                         {"SCRIPT", script_safe(kHtmlScript)}});

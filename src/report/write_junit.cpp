@@ -7,40 +7,12 @@
 #include <filesystem>
 
 #include "report/finding_text.h"
+#include "report/markup_escape.h"
 #include "report/writer.h"
 
 namespace pd {
 
 namespace {
-
-/// XML 1.0 text and attribute escaping; control characters XML cannot carry become '?'.
-std::string xml(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (const char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out +=
-            (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') ? '?' : c;
-    }
-  }
-  return out;
-}
 
 std::string seconds(double s) {
   char buf[32];
@@ -71,24 +43,24 @@ std::string render_junit(const ReportInput& in) {
     const PairResult& r = run.pairs[k];
     const PairReview& pr = rv.pairs[k];
     const std::string text = finding_text(r, run.parts, pr, units, tol);
-    cases += "    <testcase classname=\"" + xml(classname) + "\" name=\"" +
-             xml(case_name(run.parts[r.a].id, run.parts[r.b].id, pr.fingerprint)) + "\" time=\"" +
-             seconds(r.time_ms / 1000.0) + "\"";
+    cases += "    <testcase classname=\"" + markup_escape(classname) + "\" name=\"" +
+             markup_escape(case_name(run.parts[r.a].id, run.parts[r.b].id, pr.fingerprint)) +
+             "\" time=\"" + seconds(r.time_ms / 1000.0) + "\"";
     ++tests;
     if (r.status == Status::kError) {
       ++errors;
-      cases += ">\n      <error type=\"error\" message=\"" + xml(text) + "\">" + xml(text) +
-               "</error>\n    </testcase>\n";
+      cases += ">\n      <error type=\"error\" message=\"" + markup_escape(text) + "\">" +
+               markup_escape(text) + "</error>\n    </testcase>\n";
     } else if (pr.suppressed) {
       ++skipped;
       cases += ">\n      <skipped>" +
-               xml("suppressed (" + in.review_options.suppressions->path + " " +
-                   pr.suppressed->where + "): " + text) +
+               markup_escape("suppressed (" + in.review_options.suppressions->path + " " +
+                             pr.suppressed->where + "): " + text) +
                "</skipped>\n    </testcase>\n";
     } else if (pr.fails) {
       ++failures;
       cases += ">\n      <failure type=\"" + std::string(status_name(r.status)) + "\" message=\"" +
-               xml(text) + "\">" + xml(text) + "</failure>\n    </testcase>\n";
+               markup_escape(text) + "\">" + markup_escape(text) + "</failure>\n    </testcase>\n";
     } else {
       cases += "/>\n";
     }
@@ -98,9 +70,9 @@ std::string render_junit(const ReportInput& in) {
     ++tests;
     ++errors;
     const std::string text = "part " + p.id + " could not be used: " + *p.error;
-    cases += "    <testcase classname=\"" + xml(classname) + "\" name=\"" + xml("part " + p.id) +
-             "\">\n      <error type=\"part_error\" message=\"" + xml(text) + "\">" + xml(text) +
-             "</error>\n    </testcase>\n";
+    cases += "    <testcase classname=\"" + markup_escape(classname) + "\" name=\"" +
+             markup_escape("part " + p.id) + "\">\n      <error type=\"part_error\" message=\"" +
+             markup_escape(text) + "\">" + markup_escape(text) + "</error>\n    </testcase>\n";
   }
   for (const SuppressionIssue& i : rv.suppression_issues) {
     if (!i.fails) continue;
@@ -108,17 +80,18 @@ std::string render_junit(const ReportInput& in) {
     ++failures;
     const std::string text = in.review_options.suppressions->path + " " + i.entry->where + " (" +
                              i.entry->a + " / " + i.entry->b + "): " + i.kind + ": " + i.detail;
-    cases += "    <testcase classname=\"" + xml(classname) + "\" name=\"" +
-             xml("suppression " + case_name(i.entry->a, i.entry->b, i.entry->fingerprint)) +
-             "\">\n      <failure type=\"stale_suppression\" message=\"" + xml(text) + "\">" +
-             xml(text) + "</failure>\n    </testcase>\n";
+    cases +=
+        "    <testcase classname=\"" + markup_escape(classname) + "\" name=\"" +
+        markup_escape("suppression " + case_name(i.entry->a, i.entry->b, i.entry->fingerprint)) +
+        "\">\n      <failure type=\"stale_suppression\" message=\"" + markup_escape(text) + "\">" +
+        markup_escape(text) + "</failure>\n    </testcase>\n";
   }
   const std::string counts = " tests=\"" + std::to_string(tests) + "\" failures=\"" +
                              std::to_string(failures) + "\" errors=\"" + std::to_string(errors) +
                              "\"";
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<testsuites name=\"pdcheck\"" + counts + " time=\"" + seconds(run.seconds) + "\">\n";
-  out += "  <testsuite name=\"" + xml(suite) + "\"" + counts + " skipped=\"" +
+  out += "  <testsuite name=\"" + markup_escape(suite) + "\"" + counts + " skipped=\"" +
          std::to_string(skipped) + "\" time=\"" + seconds(run.seconds) + "\">\n";
   out += "    <properties>\n";
   const std::pair<std::string, std::string> props[] = {
@@ -126,7 +99,8 @@ std::string render_junit(const ReportInput& in) {
       {"fail_on", fail_on_name(rv.fail_on)},
       {"exit_code", std::to_string(rv.exit_code)}};
   for (const auto& [name, value] : props)
-    out += "      <property name=\"" + xml(name) + "\" value=\"" + xml(value) + "\"/>\n";
+    out += "      <property name=\"" + markup_escape(name) + "\" value=\"" + markup_escape(value) +
+           "\"/>\n";
   out += "    </properties>\n" + cases + "  </testsuite>\n</testsuites>\n";
   return out;
 }
