@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -137,4 +138,27 @@ TEST(MeshPathsCli, APathThatIsNotAFileSaysWhatItIsAndItsPairsAreUnchecked) {
     EXPECT_EQ(s["culled"], 0) << s;
     EXPECT_EQ(s["exit_code"], 3);
   }
+}
+
+namespace {
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+}  // namespace
+
+// Real files the fuzzer found that hang assimp 5.2.5, or crash it when read from memory,
+// (tests/fuzz/assimp-known/): no fault injection, the loader process and its
+// time limit are all that stand between them and the batch.
+TEST(MeshIsolation, FilesThatHangAssimpCostOnlyTheirPart) {
+  const std::string known = std::string(PDCHECK_SOURCE_DIR) + "/tests/fuzz/assimp-known/";
+  const CliRun hang =
+      pdcheck(scene_with("hang.glb", file_bytes(known + "gltf/hang-in-assimp.glb")) +
+              " --quiet --load-timeout 1");
+  expect_only_c_lost(hang, "load limit of 1 s");
+  EXPECT_LT(hang.seconds, 30.0);
+  const CliRun obj =
+      pdcheck(scene_with("c.obj", file_bytes(known + "obj/segv-in-assimp-from-memory.obj")) +
+              " --quiet --load-timeout 5");
+  expect_only_c_lost(obj, "c.obj");
 }
