@@ -371,8 +371,8 @@ TEST(Reuse, MovingOnePartResolvesExactlyItsPairs) {
   expect_same_report(got, read_json(full), "--reuse after moving g2a");
   // Other settings: nothing stands.
   const CliResult t = run(after + " -q --tolerance 0.2 --reuse " + old + " -o " + again);
-  for (const auto& p : read_json(again)["pairs"])
-    EXPECT_FALSE(p.value("reused", false)) << p.dump();
+  const json again_report = read_json(again);  // range-for over a temporary's member dangles
+  for (const auto& p : again_report["pairs"]) EXPECT_FALSE(p.value("reused", false)) << p.dump();
   // Shards reuse too, and still merge into the full run's report.
   const auto shards = run_shards(after, 3, "reuse", "--reuse " + old);
   const std::string merged = tmp("reuse_merged.json");
