@@ -192,23 +192,31 @@ def main():
     def rel(x, y, what, why):
         pairs.append({"a": x, "b": y, "expect": what, "why": why})
 
-    for c in range(a.copies if a.bench else 0):
-        y = 100.0 * c * 5
-        g = "c%d_" % c
+    # Groups both assemblies hold; `holes` is how many holes the second plate and
+    # the block have (the bench's parts are larger). Each returns the next row's y.
+    def bolted_plates(g, y, holes):
+        # plate with two holes (r 5): exact-fit bolt, clearance bolt; a second
+        # plate with an interference-fit bolt.
         part(g + "plate", plate_with_holes(0, y, 20, 2, 5.0, n, 0, 4), False)
         part(g + "bolt_exact", prism(10, y + 10, 5.0, n, -6, 10), True)
         part(g + "bolt_clear", prism(30, y + 10, 4.8, n, -6, 10), True)
         rel(g + "plate", g + "bolt_exact", "contact", "exact fit: bolt faces on the hole's")
         rel(g + "plate", g + "bolt_clear", "clearance", "0.2 mm radial clearance")
         y += 100
-        part(g + "plate2", plate_with_holes(0, y, 20, 2, 5.0, n, 0, 4), False)
+        part(g + "plate2", plate_with_holes(0, y, 20, holes, 5.0, n, 0, 4), False)
         part(g + "bolt_tight", prism(10, y + 10, 5.5, n, -6, 10), True)
         rel(g + "plate2", g + "bolt_tight", "interference", "0.5 mm interference fit")
-        y += 100
-        part(g + "block", plate_with_holes(0, y, 16, 2, 3.0, n, 0, 20), False)
+        return y + 100
+
+    def pin_in_block(g, y, holes):
+        # block with a through bore and a pin (0.1 mm clearance).
+        part(g + "block", plate_with_holes(0, y, 16, holes, 3.0, n, 0, 20), False)
         part(g + "pin", prism(8, y + 8, 2.9, n, 2, 30), True)
         rel(g + "block", g + "pin", "clearance", "pin in bore, 0.1 mm radial clearance")
-        y += 100
+        return y + 100
+
+    def drilled_board(g, y):
+        # drilled board, a component on it, its two leads through holes.
         part(g + "board", plate_with_holes(0, y, 10, 3, 1.0, n, 0, 1.6), False)
         part(g + "component", box((4, y + 3, 1.6), (26, y + 7, 5)), True)
         rel(g + "board", g + "component", "contact", "seated on the board")
@@ -216,27 +224,19 @@ def main():
             part(g + "lead%d" % k, prism(lx, y + 5, 0.6, 8, -3, 1.6), True)
             rel(g + "board", g + "lead%d" % k, "clearance", "lead through a 1 mm hole")
             rel(g + "component", g + "lead%d" % k, "contact", "lead under the component")
+        return y + 100
+
+    for c in range(a.copies if a.bench else 0):
+        g = "c%d_" % c
+        y = bolted_plates(g, 100.0 * c * 5, 2)
+        y = pin_in_block(g, y, 2)
+        drilled_board(g, y)
 
     for c in range(0 if a.bench else a.copies):
-        y = 100.0 * c * 8
         g = "c%d_" % c
-        # 1. plate with two holes (r 5): exact-fit bolt, clearance bolt; a second
-        #    plate with an interference-fit bolt.
-        part(g + "plate", plate_with_holes(0, y, 20, 2, 5.0, n, 0, 4), False)
-        part(g + "bolt_exact", prism(10, y + 10, 5.0, n, -6, 10), True)
-        part(g + "bolt_clear", prism(30, y + 10, 4.8, n, -6, 10), True)
-        rel(g + "plate", g + "bolt_exact", "contact", "exact fit: bolt faces on the hole's")
-        rel(g + "plate", g + "bolt_clear", "clearance", "0.2 mm radial clearance")
-        y += 100
-        part(g + "plate2", plate_with_holes(0, y, 20, 1, 5.0, n, 0, 4), False)
-        part(g + "bolt_tight", prism(10, y + 10, 5.5, n, -6, 10), True)
-        rel(g + "plate2", g + "bolt_tight", "interference", "0.5 mm interference fit")
-        y += 100
-        # 2. block with a through bore and a pin (0.1 mm clearance).
-        part(g + "block", plate_with_holes(0, y, 16, 1, 3.0, n, 0, 20), False)
-        part(g + "pin", prism(8, y + 8, 2.9, n, 2, 30), True)
-        rel(g + "block", g + "pin", "clearance", "pin in bore, 0.1 mm radial clearance")
-        y += 100
+        # 1. bolted plates; 2. a pin in a block.
+        y = bolted_plates(g, 100.0 * c * 8, 1)
+        y = pin_in_block(g, y, 1)
         # 3. L-brackets: a block touching both legs; a block 0.3 mm off both.
         part(g + "bracket", l_bracket(0, y, 0, 30, 30, 4, 10), False)
         part(g + "corner", box((4, y + 2, 4), (14, y + 8, 14)), True)
@@ -246,14 +246,7 @@ def main():
         rel(g + "bracket2", g + "corner2", "clearance", "0.3 mm off both legs")
         y += 100
         # 4. drilled board, a component on it, its two leads through holes.
-        part(g + "board", plate_with_holes(0, y, 10, 3, 1.0, n, 0, 1.6), False)
-        part(g + "component", box((4, y + 3, 1.6), (26, y + 7, 5)), True)
-        rel(g + "board", g + "component", "contact", "seated on the board")
-        for k, lx in enumerate((5, 25)):
-            part(g + "lead%d" % k, prism(lx, y + 5, 0.6, 8, -3, 1.6), True)
-            rel(g + "board", g + "lead%d" % k, "clearance", "lead through a 1 mm hole")
-            rel(g + "component", g + "lead%d" % k, "contact", "lead under the component")
-        y += 100
+        y = drilled_board(g, y)
         # 5. hollow housing (outer shell, inner shell reversed) with a part in the cavity.
         housing = box((0, y, 0), (30, y + 30, 30)).add(box((3, y + 3, 3), (27, y + 27, 27)).reversed())
         part(g + "housing", housing, False)
