@@ -105,8 +105,8 @@ TEST(RefineCache, EntriesReadBackAndDamageIsIgnored) {
   fs::resize_file(dir / "k1.pdr", fs::file_size(dir / "k1.pdr") - 3);
   EXPECT_FALSE(read_cached_refinement(dir.string(), "k1"));
   // A checksum that matches a body that is no result.
-  const std::string body = "not a result";
-  std::ofstream(dir / "k3.pdr") << "pdcheck-refinement-1\nk3\n1\n"
+  const std::string body = "1\nnot a result";
+  std::ofstream(dir / "k3.pdr") << "pdcheck-refinement-2\nk3\n"
                                 << content_hash(body) << "\n"
                                 << body;
   EXPECT_FALSE(read_cached_refinement(dir.string(), "k3"));

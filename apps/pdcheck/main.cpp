@@ -13,7 +13,7 @@
 #include <optional>
 #include <sstream>
 
-#include "batch/decomposition_cache.h"
+#include "cache_file.h"
 #include "batch/run.h"
 #include "batch/shard.h"
 #include "printable.h"

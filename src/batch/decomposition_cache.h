@@ -1,14 +1,13 @@
-// Cached convex decompositions: one file per (mesh content, settings), so a
-// nightly rerun on unchanged parts decomposes nothing. Entries are written to a
-// temporary file and renamed into place, so runs sharing a cache never see half
-// an entry; an entry that does not read back whole (truncated, edited, another
-// key) is ignored and recomputed.
+// Cached convex decompositions: one entry per (mesh content, settings), so a
+// nightly rerun on unchanged parts decomposes nothing. Entries are checked
+// cache files (cache_file.h): one that does not read back whole is recomputed.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cache_file.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -20,9 +19,6 @@ struct StoredDecomposition {
   std::string note;            ///< why incomplete, or what the decomposer reports
   double seconds = 0.0;        ///< the time it took when computed
 };
-
-/// $XDG_CACHE_HOME/pdcheck, else $HOME/.cache/pdcheck, else "" (no cache).
-std::string default_cache_dir();
 
 /// The cache key of a file's decomposition: its content hash and every setting
 /// that changes the result (as exact bits), plus the format version.

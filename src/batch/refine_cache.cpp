@@ -1,12 +1,8 @@
 #include "batch/refine_cache.h"
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
-#include "atomic_write.h"
+#include "cache_file.h"
 #include "hash.h"
 #include "tolerances.h"
 
@@ -14,11 +10,8 @@ namespace pd {
 
 namespace {
 
-constexpr const char* kFormat = "pdcheck-refinement-1";
-
-std::string entry_path(const std::string& dir, const std::string& key) {
-  return (std::filesystem::path(dir) / (key + ".pdr")).string();
-}
+// 2: the "solved" flag moved into the checked body (cache_file.h).
+constexpr CacheKind kKind{"pdcheck-refinement-2", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -69,7 +62,7 @@ void decode_refinement_fields(const std::string& line, PairResult& r) {
 std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
                            const RunOptions& options, const PairChecks& checks) {
   Hasher h;
-  h.add(kFormat);
+  h.add(kKind.format);
   add_part(h, a);
   add_part(h, b);
   h.add(status_name(hull.status)).add(hull.depth);
@@ -90,28 +83,20 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
   return h.hex();
 }
 
-// Layout: format line, key line, "solved" line, checksum line, then the body:
-// the refinement's fields as one JSON line and the result as the worker
-// encoding (lossless for doubles).
+// Body: the "solved" flag (0 or 1) line, the refinement's fields as one JSON
+// line, then the result as the worker encoding (lossless for doubles).
 std::optional<StoredRefinement> read_cached_refinement(const std::string& dir,
                                                        const std::string& key) {
-  if (dir.empty()) return std::nullopt;
-  std::ifstream in(entry_path(dir, key), std::ios::binary);
-  if (!in) return std::nullopt;
-  std::string format, stored_key, solved, checksum;
-  if (!std::getline(in, format) || format != kFormat) return std::nullopt;
-  if (!std::getline(in, stored_key) || stored_key != key) return std::nullopt;
-  if (!std::getline(in, solved) || (solved != "0" && solved != "1")) return std::nullopt;
-  if (!std::getline(in, checksum)) return std::nullopt;
-  const std::string body{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (content_hash(body) != checksum) return std::nullopt;
+  const std::optional<std::string> body = read_cache_entry(dir, kKind, key);
+  if (!body || body->size() < 2 || ((*body)[0] != '0' && (*body)[0] != '1') || (*body)[1] != '\n')
+    return std::nullopt;
   try {
-    const size_t eol = body.find('\n');
+    const size_t eol = body->find('\n', 2);
     if (eol == std::string::npos) return std::nullopt;
     StoredRefinement r;
-    r.result = decode_pair_result(body.substr(eol + 1));
-    decode_refinement_fields(body.substr(0, eol), r.result);
-    r.solved = solved == "1";
+    r.result = decode_pair_result(body->substr(eol + 1));
+    decode_refinement_fields(body->substr(2, eol - 2), r.result);
+    r.solved = (*body)[0] == '1';
     return r;
   } catch (const std::exception&) {
     return std::nullopt;
@@ -120,21 +105,10 @@ std::optional<StoredRefinement> read_cached_refinement(const std::string& dir,
 
 std::string write_cached_refinement(const std::string& dir, const std::string& key,
                                     const StoredRefinement& r) {
-  if (dir.empty()) return "";
-  try {
-    std::filesystem::create_directories(dir);
-    const std::string body =
-        encode_refinement_fields(r.result) + "\n" + encode_pair_result(r.result);
-    std::ostringstream head;
-    head << kFormat << "\n"
-         << key << "\n"
-         << (r.solved ? 1 : 0) << "\n"
-         << content_hash(body) << "\n";
-    write_file_atomically(entry_path(dir, key), head.str() + body);
-  } catch (const std::exception& e) {
-    return std::string("refinement cache ") + dir + ": " + e.what();
-  }
-  return "";
+  return write_cache_entry(dir, kKind, key,
+                           std::string(r.solved ? "1" : "0") + "\n" +
+                               encode_refinement_fields(r.result) + "\n" +
+                               encode_pair_result(r.result));
 }
 
 }  // namespace pd

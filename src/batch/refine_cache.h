@@ -1,8 +1,9 @@
 // Cached refinements of flagged pairs (batch/refine.h): the decided result of a
 // pair — mesh test, deepest-vertex bound, piece-pair solves — stored in the
 // decomposition cache's directory, so a rerun on unchanged parts and placements
-// pays none of it. Entries are written atomically; one that does not read back
-// whole (truncated, edited, another key or format) is ignored and recomputed.
+// pays none of it. Entries are checked cache files (cache_file.h): one that
+// does not read back whole (truncated, edited, another key or format) is
+// ignored and recomputed.
 #pragma once
 
 #include <optional>
