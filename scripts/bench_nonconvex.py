@@ -88,8 +88,9 @@ def main():
     print("median of %d runs (--jobs %d): hull %.2f s, cold %.2f s (%.2fx), cached %.2f s (%.2fx)"
           % (a.runs, a.jobs, med["hull"], med["cold"], med["cold"] / med["hull"], med["cached"],
              med["cached"] / med["hull"]))
-    stages = reports["cold"]["stage_seconds"]
-    print("cold run stages: " + ", ".join("%s %.2f s" % kv for kv in stages.items()))
+    for name in ("hull", "cold", "cached"):
+        stages = reports[name]["stage_seconds"]
+        print("%s run stages: " % name + ", ".join("%s %.2f s" % kv for kv in stages.items()))
     for name in ("hull", "cold", "cached"):
         ok, n, art, wrong = score(reports[name], expected)
         print("%s: %d/%d nominal relations recovered (%.0f%%), %d hull artefacts reported as "

@@ -12,6 +12,7 @@
 
 #include "batch/decomposition_cache.h"
 #include "cache_file.h"
+#include "scene/convexity_cache.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -161,5 +162,24 @@ TEST(DecompositionCache, EntriesReadBackAndDamageIsIgnored) {
   const fs::path file = dir / "k.pdd";
   fs::resize_file(file, fs::file_size(file) - 8);
   EXPECT_FALSE(read_cached_decomposition(dir.string(), "k"));
+  fs::remove_all(dir);
+}
+
+TEST(ConvexityCache, EntriesReadBackExactlyAndKeysFollowTheirInputs) {
+  const fs::path dir = fresh_dir("convexity");
+  const std::string k = convexity_key("aaaa", 0.01);
+  EXPECT_EQ(k, convexity_key("aaaa", 0.01));
+  EXPECT_NE(k, convexity_key("aaab", 0.01));                       // another file's bytes
+  EXPECT_NE(k, convexity_key("aaaa", std::nextafter(0.01, 1.0)));  // another tolerance
+  const StoredConvexity c{1.0 / 3.0, true};
+  ASSERT_EQ(write_cached_convexity(dir.string(), k, c), "");
+  const auto back = read_cached_convexity(dir.string(), k);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->concavity, c.concavity);  // exact bits
+  EXPECT_TRUE(back->closed);
+  EXPECT_FALSE(read_cached_convexity(dir.string(), convexity_key("aaaa", 0.02)));
+  const fs::path file = dir / (k + ".pdv");
+  fs::resize_file(file, fs::file_size(file) - 1);
+  EXPECT_FALSE(read_cached_convexity(dir.string(), k));
   fs::remove_all(dir);
 }

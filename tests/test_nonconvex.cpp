@@ -16,6 +16,7 @@
 
 #include "batch/refine.h"
 #include "batch/refine_cache.h"
+#include "scene/convexity_cache.h"
 
 using namespace pd;
 using nlohmann::json;
@@ -230,6 +231,34 @@ TEST(Nonconvex, RefinedPairsComeFromTheCacheUntilAPlacementChanges) {
       EXPECT_EQ(source, "from-cache") << k;
     }
   }
+}
+
+// The convexity cache: a rerun takes each mesh file's measured nonconvexity
+// from it (seen by storing "convex" for every file), measuring none again.
+TEST(Nonconvex, ConvexityComesFromTheCache) {
+  const fs::path d = generate("nonconvex_convexity_cache");
+  const fs::path cache = d / "cache";
+  const json cold = pdcheck(d, "--pieces auto --cache " + cache.string());
+  ASSERT_TRUE(cold.is_object());
+  int nonconvex = 0;
+  for (const auto& p : cold["parts"]) nonconvex += p.value("convex", true) ? 0 : 1;
+  ASSERT_GT(nonconvex, 3);
+  int entries = 0;
+  for (const auto& f : fs::directory_iterator(cache)) {
+    if (f.path().extension() != ".pdv") continue;
+    const std::string key = f.path().stem().string();
+    auto stored = read_cached_convexity(cache.string(), key);
+    ASSERT_TRUE(stored) << f.path();
+    ASSERT_EQ(write_cached_convexity(cache.string(), key, {0.0, stored->closed}), "");
+    ++entries;
+  }
+  EXPECT_GT(entries, nonconvex);  // every mesh file, convex or not
+  const json warm = pdcheck(d, "--pieces auto --cache " + cache.string());
+  ASSERT_EQ(warm["parts"].size(), cold["parts"].size());
+  for (const auto& p : warm["parts"])
+    if (p.contains("convex")) {
+      EXPECT_TRUE(p["convex"].get<bool>()) << p["id"];
+    }
 }
 
 TEST(Nonconvex, DecideRefinedNeverQuietlyPassesAnUndecidedPair) {

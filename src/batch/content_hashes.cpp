@@ -31,17 +31,27 @@ std::string file_hash(const std::string& path) {
 
 }  // namespace
 
+std::map<std::string, std::string> mesh_file_hashes(const SceneSpec& scene) {
+  std::map<std::string, std::string> files;
+  for (const PartSpec& p : scene.parts)
+    if (p.mesh && !files.count(*p.mesh)) files.emplace(*p.mesh, file_hash(*p.mesh));
+  return files;
+}
+
 std::vector<std::string> part_content_hashes(const SceneSpec& scene) {
-  std::map<std::string, std::string> files;  // path -> content hash, each file read once
+  return part_content_hashes(scene, mesh_file_hashes(scene));
+}
+
+std::vector<std::string> part_content_hashes(const SceneSpec& scene,
+                                             const std::map<std::string, std::string>& files) {
   std::vector<std::string> out;
   out.reserve(scene.parts.size());
   for (const PartSpec& p : scene.parts) {
     Hasher h;
     h.add("pdcheck-part-v1");
     if (p.mesh) {
-      auto it = files.find(*p.mesh);
-      if (it == files.end()) it = files.emplace(*p.mesh, file_hash(*p.mesh)).first;
-      h.add("mesh").add(it->second);
+      const auto it = files.find(*p.mesh);
+      h.add("mesh").add(it != files.end() ? it->second : file_hash(*p.mesh));
     } else {
       const Points& v = *p.vertices;
       h.add("inline").add(std::string_view(reinterpret_cast<const char*>(v.data()),

@@ -2,6 +2,7 @@
 // they are merged, and what --reuse compares before it takes an old pair result.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,13 @@ namespace pd {
 /// read once however many parts use it; an unreadable one hashes its path and the
 /// reason, so it never matches a readable file.
 std::vector<std::string> part_content_hashes(const SceneSpec& scene);
+/// The same from the mesh files' hashes (mesh_file_hashes), reading no file.
+std::vector<std::string> part_content_hashes(const SceneSpec& scene,
+                                             const std::map<std::string, std::string>& files);
+
+/// Each mesh file's content hash (path -> hash), each file read once; an
+/// unreadable one hashes its path and the reason, so it never matches a readable file.
+std::map<std::string, std::string> mesh_file_hashes(const SceneSpec& scene);
 
 /// The scene: its unit, the parts (ids and content hashes, in order) and any pair list.
 std::string scene_content_hash(const SceneSpec& scene, const std::vector<std::string>& part_hashes);

@@ -131,7 +131,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   const auto t0 = Clock::now();
   auto t = t0;
   RunResult out;
-  const std::vector<std::string> hashes = part_content_hashes(scene);
+  const std::map<std::string, std::string> file_hashes = mesh_file_hashes(scene);
+  const std::vector<std::string> hashes = part_content_hashes(scene, file_hashes);
   out.scene_hash = scene_content_hash(scene, hashes);
   out.settings_hash = settings_hash(options.solver, options.tolerance, scene.checks);
   // A shard plans the whole scene without hulls, then loads only its parts.
@@ -151,7 +152,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   {
     Progress progress(to_load.parts.size(), options.quiet, "parts");
     out.parts = build_parts(
-        to_load, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout);
+        to_load, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout,
+        {options.cache_dir, &file_hashes});
     progress.finish();
   }
   for (size_t k = 0; k < out.parts.size(); ++k)

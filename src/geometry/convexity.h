@@ -23,6 +23,9 @@ class PreparedMesh;
 /// can exceed the estimate by about `resolution` (the lattice spacing), never
 /// fall below it. `witness` is the sample realising it, `closest` its nearest
 /// point on the part.
+/// The lattice's sample count of a mesh's measurement (part of its cache key).
+inline constexpr int kConvexitySamples = 4000;
+
 struct Concavity {
   double value = 0.0;
   double resolution = 0.0;
@@ -33,7 +36,8 @@ struct Concavity {
 /// part's volume inside the hull, or a negative value when unknown (then the
 /// interior grid always runs).
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
-                         double missing_volume, const Points& surface, int samples = 4000);
+                         double missing_volume, const Points& surface,
+                         int samples = kConvexitySamples);
 
 /// A mesh's nonconvexity (scene units throughout).
 struct Convexity {

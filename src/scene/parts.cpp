@@ -11,6 +11,7 @@
 #include "geometry/convexity.h"
 #include "hash.h"
 #include "parallel_for.h"
+#include "scene/convexity_cache.h"
 #include "scene/mesh_loader.h"
 #include "tolerances.h"
 
@@ -90,18 +91,35 @@ Mat4 placement(const PartSpec& spec) {
   return m;
 }
 
-void load(const PartSpec& spec, MeshFile& f, double concavity_tol) {
+// The file's nonconvexity, from the cache when it holds this file's bytes at
+// this tolerance, else measured (and stored, best effort).
+StoredConvexity convexity_of(const Mesh& m, const std::string& hash, double tol,
+                             const std::string& cache_dir) {
+  const std::string key = convexity_key(hash, tol);
+  if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
+  const Convexity c = measure_convexity(m, tol);
+  const StoredConvexity s{c.concavity.value, c.closed};
+  write_cached_convexity(cache_dir, key, s);
+  return s;
+}
+
+void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
+      const auto known = cache.file_hashes ? cache.file_hashes->find(*spec.mesh)
+                                           : std::map<std::string, std::string>::const_iterator();
+      f.hash = cache.file_hashes && known != cache.file_hashes->end()
+                   ? known->second
+                   : file_content_hash(*spec.mesh);
       // Measured once, in file units, at the first instance's tolerance; each
       // instance scales the value by its own stretch.
-      const auto c = measure_convexity(*f.mesh, concavity_tol / stretch(placement(spec)));
-      f.concavity = c.concavity.value;
+      const StoredConvexity c =
+          convexity_of(*f.mesh, f.hash, concavity_tol / stretch(placement(spec)), cache.dir);
+      f.concavity = c.concavity;
       f.closed = c.closed;
-      f.hash = file_content_hash(*spec.mesh);
     }
     for (const Mesh& m : meshes) {
       f.counts.push_back(m.vertices.cols());
@@ -133,14 +151,16 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
 }
 
 /// One part from its spec; `file` is its mesh file, shared with other instances.
-Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol) {
+Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
+                const PartsCache& cache) {
   Part part;
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
   part.mode = spec.pieces;
   if (file) {
-    std::call_once(file->loaded,
-                   [&] { load(spec, *file, concavity_tol); });  // the first instance reduces it
+    std::call_once(file->loaded, [&] {
+      load(spec, *file, concavity_tol, cache);
+    });  // the first instance reduces it
     if (file->error) {
       part.error = file->error;
       return part;
@@ -176,7 +196,8 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol) {
 }  // namespace
 
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
-                              const std::function<void(size_t)>& on_built, double load_timeout) {
+                              const std::function<void(size_t)>& on_built, double load_timeout,
+                              const PartsCache& cache) {
   // Distinct geometry first: the same mesh file under the same units,
   // transform and pieces is hulled once, and read once under any transform.
   // Inline parts are distinct.
@@ -221,8 +242,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     for (size_t f = 0; f < read.size(); ++f) mesh_files[f].read = std::move(read[f]);
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
-    built[u] =
-        build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr, concavity_tol);
+    built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr,
+                          concavity_tol, cache);
     if (on_built) on_built(users[u]);
   });
 

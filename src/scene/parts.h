@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,8 +71,15 @@ struct Part {
 /// `threads` loader processes, each file within `load_timeout` seconds (0 = no
 /// limit): a reader that hangs or crashes costs only its file's parts. Forks:
 /// call it from a process with one thread.
+/// `cache` (optional): where measured convexities are cached, and the mesh
+/// files' content hashes when the caller has them (else each file is hashed here).
+struct PartsCache {
+  std::string dir;                                                  ///< "" = no cache
+  const std::map<std::string, std::string>* file_hashes = nullptr;  ///< path -> content hash
+};
 std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
                               const std::function<void(size_t)>& on_built = {},
-                              double load_timeout = kDefaultLoadTimeout);
+                              double load_timeout = kDefaultLoadTimeout,
+                              const PartsCache& cache = {});
 
 }  // namespace pd

@@ -1,0 +1,48 @@
+#include "scene/convexity_cache.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "cache_file.h"
+#include "geometry/convexity.h"
+#include "hash.h"
+
+namespace pd {
+
+namespace {
+
+constexpr CacheKind kKind{"pdcheck-convexity-1", ".pdv"};
+
+}  // namespace
+
+std::string convexity_key(const std::string& content_hash, double concavity_tol) {
+  Hasher h;
+  h.add(kKind.format).add(content_hash).add(concavity_tol);
+  h.add(static_cast<double>(kConvexitySamples));
+  return h.hex();
+}
+
+// Body: "<concavity as a hex float> <closed 0|1>" (hex floats round-trip exactly).
+std::optional<StoredConvexity> read_cached_convexity(const std::string& dir,
+                                                     const std::string& key) {
+  const std::optional<std::string> body = read_cache_entry(dir, kKind, key);
+  if (!body) return std::nullopt;
+  char* end = nullptr;
+  StoredConvexity c;
+  c.concavity = std::strtod(body->c_str(), &end);
+  if (end == body->c_str() || !std::isfinite(c.concavity) || c.concavity < 0) return std::nullopt;
+  const std::string rest(end);
+  if (rest != " 0" && rest != " 1") return std::nullopt;
+  c.closed = rest == " 1";
+  return c;
+}
+
+std::string write_cached_convexity(const std::string& dir, const std::string& key,
+                                   const StoredConvexity& c) {
+  std::ostringstream body;
+  body << std::hexfloat << c.concavity << (c.closed ? " 1" : " 0");
+  return write_cache_entry(dir, kKind, key, body.str());
+}
+
+}  // namespace pd
