@@ -29,13 +29,20 @@ constexpr double kValidMargin = 1.25;
 
 SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const Vec3& centre,
                                          double radius, double best, long leaf_points,
-                                         long max_cells) {
+                                         long max_cells, double settle_at) {
   SubdividedSearch out;
   const Vec3 helper = std::abs(centre.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   const Vec3 e1 = centre.cross(helper).normalized(), e2 = centre.cross(e1);
   auto dir = [&](double s, double t) { return (centre + s * e1 + t * e2).normalized(); };
-  const double threshold = best + 1e-12 * std::max(1.0, std::abs(best));
-  double lowest = threshold;
+  auto slack = [](double g) { return g + 1e-12 * std::max(1.0, std::abs(g)); };
+  double lowest = slack(best);
+  // Cells close against the lowest gap known, not only against `best`: every
+  // cell centre's gap is a real direction's, so the global minimum is at or below
+  // it and its cell never closes. Near a resting contact the centres' gaps fall
+  // to the minimum long before a leaf's hull finds its facet, so most cells of
+  // the cap close at their first bound.
+  double prune = lowest;
+  out.witness_gap = std::numeric_limits<double>::infinity();
 
   // The root square holds the cap (its gnomonic image is a disc of radius tan r).
   const double half = std::tan(radius);
@@ -72,13 +79,22 @@ SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const
     for (int j : c.qj)
       if (const double s = mid.dot(q.col(j)); s < hq) hq = s, iq = j;
     const Vec3 x = p.col(ip) - q.col(iq);
+    if (hp - hq < out.witness_gap) {
+      out.witness_gap = hp - hq;
+      out.witness = mid;
+      prune = std::min(prune, slack(hp - hq));
+      // A resting contact: every vertex of both touching faces is extreme at its
+      // normal, so the cells around it never shrink to a small hull; a centre
+      // within contact resolution of the minimum decides the pair already.
+      if (hp - hq <= settle_at) return out;
+    }
     // min over the cell of x·u: at a corner when all corners are positive.
     auto bound = [&](const Vec3& y) {
       double lo = std::numeric_limits<double>::infinity();
       for (const Vec3& k : corners) lo = std::min(lo, y.dot(k));
       return lo > 0 ? lo : -1.0;
     };
-    if (std::max(bound(x), bound(c.parent_point)) > lowest) continue;  // closed
+    if (std::max(bound(x), bound(c.parent_point)) > prune) continue;  // closed
     // Open: the cell's own candidates (within its parent's, a larger cap).
     const double vr = kValidMargin * rho;
     if (angle_between(mid, c.valid_centre) + vr > c.valid_radius) {
@@ -92,6 +108,7 @@ SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const
       // Exactly P − Q's facets with normals in the valid cap; the cell is in it.
       if (const auto f = lowest_local_facet(p, q, c.pi, c.qj, mid, vr); f && f->offset < lowest) {
         lowest = f->offset;
+        prune = std::min(prune, slack(f->offset));
         out.result.lowest = *f;
       }
       continue;

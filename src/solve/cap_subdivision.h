@@ -13,12 +13,20 @@
 // from the parent cell, so a cell costs O(its candidates), not O(n + m).
 #pragma once
 
+#include <limits>
+
 #include "solve/neighbourhood.h"
 
 namespace pd {
 
 /// Facets of P − Q with normals within `radius` (<= 0.5) of `centre` and below
 /// `best`: `lowest` is the lowest found below `best` (empty when none is).
+/// Cells are closed against the lowest gap of any cell centre too (`witness`,
+/// `witness_gap`: that direction and its gap), so a facet of the cap lying above
+/// a centre's gap may go unreported: it is then not the global minimum (the
+/// witness is lower), and the certificate finds that in the cap that holds it.
+/// The search stops as soon as a centre's gap is at or below `settle_at` (the
+/// contact resolution: the pair is settled; `witness` is that centre).
 /// `searched` is false when more than `max_cells` cells would be needed; then
 /// nothing is known about the cap. Leaves hold <= `leaf_points` differences.
 /// `cells` counts the cells examined (one support evaluation each, over the
@@ -26,9 +34,11 @@ namespace pd {
 struct SubdividedSearch {
   CapSearch result;
   long cells = 0;
+  Vec3 witness = Vec3::UnitZ();
+  double witness_gap = 0;
 };
-SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const Vec3& centre,
-                                         double radius, double best, long leaf_points,
-                                         long max_cells);
+SubdividedSearch lowest_facet_subdivided(
+    const Points& p, const Points& q, const Vec3& centre, double radius, double best,
+    long leaf_points, long max_cells, double settle_at = -std::numeric_limits<double>::infinity());
 
 }  // namespace pd

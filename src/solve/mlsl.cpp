@@ -109,10 +109,16 @@ bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& st
       if (!c.searched) {
         // Too many differences for one hull (bumpy faces resting on faces): cut
         // the cap into cells bounded like the grid's, down to small exact searches.
-        const SubdividedSearch s = lowest_facet_subdivided(
-            pr.p(), pr.q(), centre, radius, gap, tol::kNeighbourhoodPoints, tol::kSubdivisionCells);
+        const SubdividedSearch s =
+            lowest_facet_subdivided(pr.p(), pr.q(), centre, radius, gap, tol::kNeighbourhoodPoints,
+                                    tol::kSubdivisionCells, tol::kTouch);
         stats.alpha_evaluations += s.cells;
         c = s.result;
+        // Its lowest cell centre is a real direction too: keep it when it is lower
+        // (the next round certifies it or finds the facet below it).
+        if (s.result.searched && s.witness_gap < gap &&
+            (!c.lowest || s.witness_gap < c.lowest->offset))
+          c.lowest = FacetCandidate{s.witness, s.witness_gap};
       }
       if (!c.searched) return false;  // a cap too large to search proves nothing
       if (!c.lowest) continue;
@@ -122,6 +128,7 @@ bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& st
         gap = g;
         improved = true;
       }
+      if (gap <= tol::kTouch) return true;  // settled: the caller reports the contact
     }
     if (!improved) return true;
     // The cap's facet is a facet of P − Q, exact to rounding: no Ipopt polish;
