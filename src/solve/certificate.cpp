@@ -61,8 +61,8 @@ CellSupports cell_supports(const PairProblem& pr, int grid) {
   for (size_t k = 0; k < nc; ++k) {
     const Vec3& c = cells[k].centre;
     Eigen::Index ip = 0, iq = 0;
-    const double hp = (c.transpose() * pr.p()).maxCoeff(&ip);
-    const double hq = (c.transpose() * pr.q()).minCoeff(&iq);
+    const double hp = pr.p_soa().max_dot(c, &ip);
+    const double hq = pr.q_soa().min_dot(c, &iq);
     s.x[k] = pr.p().col(ip) - pr.q().col(iq);
     s.g[k] = hp - hq;
   }

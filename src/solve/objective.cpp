@@ -7,11 +7,13 @@ namespace pd {
 PairProblem::PairProblem(const Points& a_world, const Points& b_world)
     : frame_(pair_frame(a_world, b_world)),
       p_(frame_.to_local(a_world)),
-      q_(frame_.to_local(b_world)) {}
+      q_(frame_.to_local(b_world)),
+      p_soa_(p_),
+      q_soa_(q_) {}
 
 double PairProblem::gap(const Vec3& v) const {
   ++evaluations_;
-  return (v.transpose() * p_).maxCoeff() - (v.transpose() * q_).minCoeff();
+  return p_soa_.max_dot(v) - q_soa_.min_dot(v);
 }
 
 std::vector<int> near_extreme(const Points& x, const Vec3& v, double band, bool top) {

@@ -14,6 +14,7 @@
 
 #include "geometry/frame.h"
 #include "geometry/types.h"
+#include "solve/support_scan.h"
 
 namespace pd {
 
@@ -25,6 +26,9 @@ class PairProblem {
   const Points& p() const { return p_; }
   const Points& q() const { return q_; }
   const Frame& frame() const { return frame_; }
+  /// p and q as coordinate arrays, for support values without a temporary.
+  const SoaPoints& p_soa() const { return p_soa_; }
+  const SoaPoints& q_soa() const { return q_soa_; }
 
   /// gap(v) in O(n + m); counts one evaluation.
   double gap(const Vec3& v) const;
@@ -34,6 +38,7 @@ class PairProblem {
  private:
   Frame frame_;
   Points p_, q_;
+  SoaPoints p_soa_, q_soa_;
   mutable long evaluations_ = 0;
 };
 
