@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -85,8 +86,9 @@ struct SceneSpec {
 /// relative to `base_dir`. Throws SceneError.
 /// `units` (the command line's --units), when given, replaces the scene's unit.
 /// `threads` > 1 parses and converts the parts in parallel; the result and any
-/// error message are the same as with one thread.
-SceneSpec parse_scene_json(const std::string& text, const std::string& path,
+/// error message are the same as with one thread. Inline vertex lists are read
+/// by scan_vertex_array when plain (scene/vertex_scan.h).
+SceneSpec parse_scene_json(std::string_view text, const std::string& path,
                            const std::string& base_dir,
                            const std::optional<std::string>& units = std::nullopt, int threads = 1);
 

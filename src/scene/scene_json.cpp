@@ -1,3 +1,8 @@
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <Eigen/LU>
 #include <cmath>
 #include <filesystem>
@@ -13,6 +18,7 @@
 #include "scene/json_strict.h"
 #include "scene/scene.h"
 #include "scene/units.h"
+#include "scene/vertex_scan.h"
 
 namespace pd {
 
@@ -106,8 +112,10 @@ Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
   return p;
 }
 
+/// `scanned`, when given, is the part's vertex list already read by
+/// scan_vertex_array (its "vertices" value in `j` is then a placeholder).
 PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
-              const std::string& scene_units) {
+              const std::string& scene_units, std::optional<Points>* scanned) {
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
   only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces", "motion"});
   PartSpec p;
@@ -123,7 +131,8 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     p.mesh =
         (m.is_absolute() || base_dir.empty() ? m : std::filesystem::path(base_dir) / m).string();
   } else {
-    p.vertices = vertex_list(c, j["vertices"], at + ".vertices");
+    p.vertices =
+        scanned && *scanned ? std::move(*scanned) : vertex_list(c, j["vertices"], at + ".vertices");
   }
   if (j.contains("units")) {
     p.to_scene_units = *unit_in_mm(unit(c, j["units"], at + ".units")) / *unit_in_mm(scene_units);
@@ -133,7 +142,8 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     const std::string v = string(c, j["pieces"], at + ".pieces");
     const std::optional<Pieces> mode = parse_pieces(v);
     if (!mode)
-      c.fail(at + ".pieces", "expected one of " + std::string(kPiecesNames) + ", got \"" + v + "\"");
+      c.fail(at + ".pieces",
+             "expected one of " + std::string(kPiecesNames) + ", got \"" + v + "\"");
     p.pieces = *mode;
     if ((p.pieces == Pieces::kMeshes || p.pieces == Pieces::kDecompose) && !has_mesh)
       c.fail(at + ".pieces", "\"" + v + "\" needs a mesh file");
@@ -266,7 +276,7 @@ SolverOverrides solver(const Ctx& c, const json& j) {
   return o;
 }
 
-std::string line_column(const std::string& text, size_t byte) {
+std::string line_column(std::string_view text, size_t byte) {
   size_t line = 1, col = 1;
   for (size_t k = 0; k + 1 < byte && k < text.size(); ++k) {
     if (text[k] == '\n')
@@ -290,9 +300,9 @@ void SolverOverrides::apply(SolverSettings& s) const {
 
 namespace {
 
-json parse_json(const std::string& text, const std::string& path) {
+json parse_json(std::string_view text, const std::string& path) {
   try {
-    return parse_json_strict(text);
+    return parse_json_strict(text.data(), text.data() + text.size());
   } catch (const JsonTextError& e) {
     std::string msg = e.what();
     const auto pos = msg.find("error while parsing");
@@ -338,9 +348,9 @@ SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::s
 
 /// Part k of the scene, its motion included.
 PartSpec scene_part(const Ctx& c, const json& j, size_t k, const std::string& base_dir,
-                    const SceneSpec& s) {
+                    const SceneSpec& s, std::optional<Points>* scanned = nullptr) {
   const std::string at = "parts[" + std::to_string(k) + "]";
-  PartSpec p = part(c, j, at, base_dir, s.units.value_or("mm"));
+  PartSpec p = part(c, j, at, base_dir, s.units.value_or("mm"), scanned);
   if (j.contains("motion")) {
     if (!s.checks.motion)
       c.fail(at + ".motion", "a motion needs a time grid: add checks.motion {t0, t1, dt}");
@@ -349,22 +359,43 @@ PartSpec scene_part(const Ctx& c, const json& j, size_t k, const std::string& ba
   return p;
 }
 
+/// Part element [b, e) of the text. Its inline vertex list, when plain, is read
+/// by scan_vertex_array and the rest of the element by the general parser with
+/// `null` in its place (the general parse of 3 numbers per vertex was most of
+/// a large scene's load: docs/performance.md).
+PartSpec parse_part_element(const Ctx& c, const char* b, const char* e, size_t k,
+                            const std::string& base_dir, const SceneSpec& s) {
+  const std::string_view element(b, static_cast<size_t>(e - b));
+  if (const auto span = top_level_array(element, "vertices")) {
+    std::optional<Points> scanned =
+        scan_vertex_array(element.substr(span->begin, span->end - span->begin));
+    if (scanned) {
+      std::string rest;
+      rest.reserve(element.size() - (span->end - span->begin) + 4);
+      rest.append(element.substr(0, span->begin)).append("null").append(element.substr(span->end));
+      return scene_part(c, parse_json_strict(rest), k, base_dir, s, &scanned);
+    }
+  }
+  return scene_part(c, parse_json_strict(b, e), k, base_dir, s);
+}
+
 /// The parts array split at its elements, each parsed and converted on its own
 /// thread. std::nullopt on anything unexpected: the whole-text parse then runs
 /// and reports the error with the right line and column.
-std::optional<SceneSpec> parse_in_slices(const std::string& text, const Ctx& c,
+std::optional<SceneSpec> parse_in_slices(std::string_view text, const Ctx& c,
                                          const std::string& base_dir,
                                          const std::optional<std::string>& units, int threads) {
   const auto span = top_level_array(text, "parts");
   if (!span || span->elements.size() < 2) return std::nullopt;
   try {
-    const json doc = parse_json_strict(text.substr(0, span->begin) + "[]" + text.substr(span->end));
+    std::string rest(text.substr(0, span->begin));
+    rest.append("[]").append(text.substr(span->end));
+    const json doc = parse_json_strict(rest);
     SceneSpec s = scene_fields(c, doc, units);
     s.parts.resize(span->elements.size());
     parallel_for(s.parts.size(), threads, [&](size_t k) {
       const auto [b, e] = span->elements[k];
-      s.parts[k] =
-          scene_part(c, parse_json_strict(text.data() + b, text.data() + e), k, base_dir, s);
+      s.parts[k] = parse_part_element(c, text.data() + b, text.data() + e, k, base_dir, s);
     });
     return s;
   } catch (const std::exception&) {
@@ -374,12 +405,12 @@ std::optional<SceneSpec> parse_in_slices(const std::string& text, const Ctx& c,
 
 }  // namespace
 
-SceneSpec parse_scene_json(const std::string& text, const std::string& path,
+SceneSpec parse_scene_json(std::string_view text, const std::string& path,
                            const std::string& base_dir, const std::optional<std::string>& units,
                            int threads) {
   const Ctx c{path};
   std::optional<SceneSpec> s;
-  if (threads > 1) s = parse_in_slices(text, c, base_dir, units, threads);
+  s = parse_in_slices(text, c, base_dir, units, threads);
   if (!s) {
     const json doc = parse_json(text, path);
     s = scene_fields(c, doc, units);
@@ -393,39 +424,58 @@ SceneSpec parse_scene_json(const std::string& text, const std::string& path,
 
 namespace {
 
-/// The whole file: one read of its size when it is a regular file (scenes reach
-/// 100 MB), a streamed read otherwise (a FIFO such as `<(generate-scene)`).
-std::string read_scene_text(const std::string& path) {
-  std::error_code ec;
-  const auto st = std::filesystem::status(path, ec);
-  if (std::filesystem::is_directory(st))
-    throw SceneError(path + ": is a directory, not a scene file");
-  std::string text;
-  if (std::filesystem::is_regular_file(st)) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) throw SceneError(path + ": cannot open the scene file");
-    const std::streamoff size = in.tellg();  // -1 when the file cannot be sized
-    if (size < 0) throw SceneError(path + ": cannot read the scene file");
-    text.resize(static_cast<size_t>(size));
-    in.seekg(0);
-    if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
-      throw SceneError(path + ": cannot read the scene file");
-  } else {
+/// The whole file. A regular file is mapped (scenes reach 100 MB: a read into
+/// a string first zero-fills its pages and then copies, each page faulted in,
+/// which was a third of a large scene's load); anything else (a FIFO such as
+/// `<(generate-scene)`) or a failed map is read as a stream.
+class SceneText {
+ public:
+  explicit SceneText(const std::string& path) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(st))
+      throw SceneError(path + ": is a directory, not a scene file");
+    if (std::filesystem::is_regular_file(st) && map(path)) return;
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path + ": cannot open the scene file");
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    read_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (in.bad()) throw SceneError(path + ": cannot read the scene file");
+    view_ = read_;
   }
-  return text;
-}
+  ~SceneText() {
+    if (mapped_) munmap(mapped_, view_.size());
+  }
+  SceneText(const SceneText&) = delete;
+  SceneText& operator=(const SceneText&) = delete;
+  std::string_view text() const { return view_; }
+
+ private:
+  bool map(const std::string& path) {
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    struct stat st;
+    void* p = MAP_FAILED;
+    if (fstat(fd, &st) == 0 && st.st_size > 0)
+      p = mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd,
+               0);
+    close(fd);
+    if (p == MAP_FAILED) return false;
+    mapped_ = p;
+    view_ = std::string_view(static_cast<const char*>(p), static_cast<size_t>(st.st_size));
+    return true;
+  }
+  void* mapped_ = nullptr;
+  std::string read_;
+  std::string_view view_;
+};
 
 }  // namespace
 
 SceneSpec load_scene_file(const std::string& path, const std::optional<std::string>& units,
                           int threads) {
-  const std::string text = read_scene_text(path);
+  const SceneText file(path);
   const std::string base = std::filesystem::path(path).parent_path().string();
-  return parse_scene_json(text, path, base, units, threads);
+  return parse_scene_json(file.text(), path, base, units, threads);
 }
 
 void validate_scene(const SceneSpec& s) {
