@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "memory_limit.h"
 #include "run_capture.h"
 
 using nlohmann::json;
@@ -161,4 +162,49 @@ TEST(MeshIsolation, FilesThatHangAssimpCostOnlyTheirPart) {
       pdcheck(scene_with("c.obj", file_bytes(known + "obj/segv-in-assimp-from-memory.obj")) +
               " --quiet --load-timeout 5");
   expect_only_c_lost(obj, "c.obj");
+}
+
+namespace {
+/// A binary STL of `n` small triangles in a row (50 bytes each).
+std::string binary_stl(int n) {
+  std::string s(80, '\0');
+  const auto put = [&](const void* p, size_t k) { s.append(static_cast<const char*>(p), k); };
+  const std::uint32_t count = n;
+  put(&count, 4);
+  for (int i = 0; i < n; ++i) {
+    const float x = float(i % 1000), y = float(i / 1000);
+    const float t[12] = {0, 0, 1, x, y, 0, x + 1, y, 0, x, y + 1, 0.5f};
+    put(t, sizeof t);
+    s.append(2, '\0');
+  }
+  return s;
+}
+}  // namespace
+
+// A loader may allocate only its share of memory (--load-memory): a file that
+// needs more costs its part, named with the limit, and the batch goes on. A
+// real 10 MB STL, no fault injection; assimp needs several times its size.
+TEST(MeshIsolation, AFileNeedingMoreThanTheLoadMemoryCostsOnlyItsPart) {
+  if (!pd::can_cap_address_space()) GTEST_SKIP() << "no address-space cap under AddressSanitizer";
+  const std::string scene = scene_with("big.stl", binary_stl(200000));
+  const CliRun capped = pdcheck(scene + " --quiet --load-memory 16");
+  expect_only_c_lost(capped, "memory limit of 16 MB (--load-memory)");
+  const CliRun room = pdcheck(scene + " --quiet --load-memory 2000");
+  EXPECT_EQ(room.code, 1) << room.err;
+  EXPECT_FALSE(json::parse(room.out)["parts"][2].contains("error"));
+}
+
+TEST(MeshIsolation, LoadMemoryMustBeANumberOfMegabytes) {
+  for (const char* bad : {"-1", "nan", "inf", "1e300"}) {
+    const CliRun r = pdcheck(scene_with("c.stl") + " --quiet --load-memory " + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--load-memory"), std::string::npos) << r.err;
+  }
+}
+
+TEST(MemoryLimit, LoadersShareHalfTheMemory) {
+  EXPECT_DOUBLE_EQ(pd::memory_share_mb(16000, 4), 2000);
+  EXPECT_DOUBLE_EQ(pd::memory_share_mb(16000, 0), 8000);  // at least one loader
+  EXPECT_EQ(pd::memory_share_mb(0, 4), 0);                // unknown: no limit
+  EXPECT_GT(pd::available_memory_mb(), 0);
 }

@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
   std::string scene_arg, output, format = "json", method_arg, units_arg, pieces_arg, cache_dir;
   bool no_cache = false;
   double tolerance = 0.0, pair_timeout = 0.0, load_timeout = pd::kDefaultLoadTimeout;
+  double load_memory = pd::kAutoLoadMemory;
   int jobs = 0;
   std::uint64_t seed = 0;
   bool quiet = false;
@@ -165,6 +166,9 @@ int main(int argc, char** argv) {
                  "seconds one mesh file may take to read before its loader process is killed and "
                  "its parts reported as errors (default: " +
                      std::to_string(int(pd::kDefaultLoadTimeout)) + "; 0: none)");
+  app.add_option("--load-memory", load_memory,
+                 "MB one mesh loader process may allocate before its file is reported as an "
+                 "error (default: half the machine's memory shared among the loaders; 0: none)");
   app.add_flag("-q,--quiet", quiet, "no progress and no summary line on stderr");
   std::vector<std::string> bars;
   std::string bar_help = "which findings make the exit code 1:";
@@ -297,6 +301,10 @@ int main(int argc, char** argv) {
     say("error", "--load-timeout: must be a number of seconds from 0 to 1e6");
     return kExitUsage;
   }
+  if (app.count("--load-memory") && !(load_memory >= 0 && load_memory <= 1e9)) {
+    say("error", "--load-memory: must be a number of MB from 0 to 1e9");
+    return kExitUsage;
+  }
   if (jobs <= 0) jobs = static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
   pd::SceneSpec scene;
   pd::SolverSettings solver;
@@ -380,6 +388,7 @@ int main(int argc, char** argv) {
   opt.jobs = jobs;
   opt.pair_timeout = pair_timeout;
   opt.load_timeout = load_timeout;
+  opt.load_memory_mb = load_memory;
   opt.quiet = quiet;
   opt.shard = shard;
   opt.reuse = prior ? &*prior : nullptr;

@@ -153,7 +153,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     Progress progress(to_load.parts.size(), options.quiet, "parts");
     out.parts = build_parts(
         to_load, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout,
-        {options.cache_dir, &file_hashes});
+        {options.cache_dir, &file_hashes}, options.load_memory_mb);
     progress.finish();
   }
   for (size_t k = 0; k < out.parts.size(); ++k)

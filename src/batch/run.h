@@ -23,6 +23,8 @@ struct RunOptions {
   bool quiet = false;         ///< no progress on stderr
   /// Seconds one mesh file may take to read (in a loader process), 0 = none.
   double load_timeout = kDefaultLoadTimeout;
+  /// MB one loader process may allocate (kAutoLoadMemory: a share of the machine's; 0 = none).
+  double load_memory_mb = kAutoLoadMemory;
   std::string cache_dir;  ///< cached decompositions (batch/decomposition_cache.h); "" = none
   /// Called in the parent as each pair ends (completion order), e.g. for JSON Lines.
   std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;

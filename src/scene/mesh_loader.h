@@ -25,13 +25,13 @@ class MeshError : public std::runtime_error {
 /// three vertices are fanned; points and lines contribute vertices only.
 std::vector<Mesh> load_meshes(const std::string& path, bool split_instances);
 
-/// Reads a mesh file's bytes in this process (no time limit, no isolation: for
-/// the loader process and for fuzzing): a PLY (recognized by its first line,
-/// whatever the hint) is checked and, where Debian's assimp 5.2.5 would misread
-/// it, handed over rewritten (scene/ply_check.h); then assimp reads from memory.
-/// `extension` is the format hint for assimp ("stl", "obj", "ply", "glb", …).
-/// Returns what load_meshes returns; throws MeshError with the reason (the
-/// caller names the file). A glTF with external buffers needs load_meshes.
+/// Reads a mesh file's bytes in this process (no time limit, no isolation; for
+/// tests of the PLY check: runs read files by path, load_meshes): a PLY (recognized by its first
+/// line, whatever the hint) is checked and, where Debian's assimp 5.2.5 would misread it, handed
+/// over rewritten (scene/ply_check.h); then assimp reads from memory. `extension` is the format
+/// hint for assimp ("stl", "obj", "ply", "glb", …). Returns what load_meshes returns; throws
+/// MeshError with the reason (the caller names the file). A glTF with external buffers needs
+/// load_meshes.
 std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
                               bool split_instances);
 
@@ -39,6 +39,12 @@ std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extensi
 /// (--load-timeout). Generous: assimp reads STL at tens of MB/s and a large
 /// CAD part is rarely over 100 MB; a reader stuck in a loop is what it stops.
 constexpr double kDefaultLoadTimeout = 60.0;
+
+/// --load-memory's default: each loader process may allocate an equal share of
+/// half the machine's memory (or its container's limit), so loaders reading
+/// damaged files cannot drive the machine into its OOM killer together
+/// (memory_limit.h). A positive value is MB per loader; 0 is no limit.
+constexpr double kAutoLoadMemory = -1.0;
 
 /// One file for load_meshes_isolated.
 struct MeshRequest {
@@ -53,11 +59,13 @@ struct LoadedMeshes {
 };
 
 /// load_meshes on each file in up to `jobs` loader processes: a file whose
-/// reader crashes, or runs longer than `timeout` seconds (0 = no limit), gets
-/// an error and costs nothing else. Forks: call it from a process with one
-/// thread (see mesh_loader_processes.cpp).
+/// reader crashes, runs longer than `timeout` seconds (0 = no limit), or
+/// allocates more than `memory_mb` MB (kAutoLoadMemory: a share of the
+/// machine's; 0 = no limit) gets an error and costs nothing else. Forks: call
+/// it from a process with one thread (see mesh_loader_processes.cpp).
 std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
-                                               double timeout = kDefaultLoadTimeout);
+                                               double timeout = kDefaultLoadTimeout,
+                                               double memory_mb = kAutoLoadMemory);
 
 /// The vertices of load_meshes, without triangles.
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances);

@@ -28,6 +28,7 @@
 #include <cstring>
 #include <new>
 
+#include "memory_limit.h"
 #include "scene/mesh_loader.h"
 #include "work_queue.h"
 
@@ -106,8 +107,16 @@ bool ends_with(const std::string& s, const char* tail) {
   return n > 0 && s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
 }
 
-/// Runs in a loader process.
-std::string load_one(const MeshRequest& f) {
+std::string megabytes(double mb) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.0f", mb);
+  return b;
+}
+
+/// Runs in a loader process. `memory_mb` > 0 caps what it may allocate, set
+/// once per process (a worker reads many files and keeps its heap).
+std::string load_one(const MeshRequest& f, double memory_mb) {
+  static const bool capped = cap_address_space_growth(memory_mb);
   // assimp's line readers (OBJ, PLY) allocate and fill buffers of 4 MB per
   // line; glibc hands such blocks back to the kernel on free, so every read
   // paid for fresh zeroed pages (about 25 ms a PLY). A loader keeps its heap.
@@ -125,7 +134,10 @@ std::string load_one(const MeshRequest& f) {
   } catch (const MeshError& e) {
     return std::string("E") + e.what();
   } catch (const std::bad_alloc&) {
-    return "Emesh file " + f.path + ": out of memory while loading (corrupt file?)";
+    return "Emesh file " + f.path + ": " +
+           (capped ? "reading it needed more than the loader's memory limit of " +
+                         megabytes(memory_mb) + " MB (--load-memory); damaged file?"
+                   : std::string("out of memory while loading (damaged file?)"));
   } catch (const std::exception& e) {
     return "Emesh file " + f.path + ": " + e.what();
   }
@@ -140,8 +152,10 @@ std::string seconds(double s) {
 }  // namespace
 
 std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
-                                               double timeout) {
+                                               double timeout, double memory_mb) {
   std::vector<LoadedMeshes> out(files.size());
+  const int loaders = std::max(1, jobs);
+  if (memory_mb < 0) memory_mb = memory_share_mb(available_memory_mb(), loaders);
   // Largest files first: no loader idles at the end on a long tail.
   std::vector<size_t> order(files.size());
   std::vector<off_t> size(files.size(), 0);
@@ -152,15 +166,20 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return size[a] > size[b]; });
-  auto task = [&](size_t k) { return load_one(files[k]); };
+  auto task = [&](size_t k) { return load_one(files[k], memory_mb); };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
     const std::string& path = files[k].path;
     if (!ok) {
       const bool late = payload.rfind("timed out", 0) == 0;
-      out[k].error = "cannot load mesh file " + path + ": " +
-                     (late ? "reading it took longer than the load limit of " + seconds(timeout) +
-                                 " s (--load-timeout); the loader was stopped"
-                           : "the loader process failed: " + payload);
+      out[k].error =
+          "cannot load mesh file " + path + ": " +
+          (late
+               ? "reading it took longer than the load limit of " + seconds(timeout) +
+                     " s (--load-timeout); the loader was stopped"
+               : "the loader process failed: " + payload +
+                     (memory_mb > 0 && can_cap_address_space()
+                          ? " (its memory limit was " + megabytes(memory_mb) + " MB, --load-memory)"
+                          : ""));
       return;
     }
     try {
@@ -169,7 +188,7 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
       out[k] = {{}, "cannot load mesh file " + path + ": " + e.what()};
     }
   };
-  run_work_queue(order, {std::max(1, jobs), timeout, {}}, task, done);
+  run_work_queue(order, {loaders, timeout, {}}, task, done);
   return out;
 }
 

@@ -197,7 +197,7 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
 
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
                               const std::function<void(size_t)>& on_built, double load_timeout,
-                              const PartsCache& cache) {
+                              const PartsCache& cache, double load_memory_mb) {
   // Distinct geometry first: the same mesh file under the same units,
   // transform and pieces is hulled once, and read once under any transform.
   // Inline parts are distinct.
@@ -238,7 +238,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     if (file_of[u])
       requests[*file_of[u]] = {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes};
   if (!requests.empty()) {
-    std::vector<LoadedMeshes> read = load_meshes_isolated(requests, threads, load_timeout);
+    std::vector<LoadedMeshes> read =
+        load_meshes_isolated(requests, threads, load_timeout, load_memory_mb);
     for (size_t f = 0; f < read.size(); ++f) mesh_files[f].read = std::move(read[f]);
   }
   parallel_for(unique.size(), threads, [&](size_t u) {

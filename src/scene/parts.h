@@ -69,8 +69,9 @@ struct Part {
 /// `on_built(n)`, when given, is called (from the building thread) as the geometry
 /// of n scene parts is ready, for progress. Mesh files are read first, in up to
 /// `threads` loader processes, each file within `load_timeout` seconds (0 = no
-/// limit): a reader that hangs or crashes costs only its file's parts. Forks:
-/// call it from a process with one thread.
+/// limit) and `load_memory_mb` (load_meshes_isolated): a reader that hangs,
+/// crashes or allocates without end costs only its file's parts. Forks: call
+/// it from a process with one thread.
 /// `cache` (optional): where measured convexities are cached, and the mesh
 /// files' content hashes when the caller has them (else each file is hashed here).
 struct PartsCache {
@@ -80,6 +81,7 @@ struct PartsCache {
 std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
                               const std::function<void(size_t)>& on_built = {},
                               double load_timeout = kDefaultLoadTimeout,
-                              const PartsCache& cache = {});
+                              const PartsCache& cache = {},
+                              double load_memory_mb = kAutoLoadMemory);
 
 }  // namespace pd
