@@ -104,3 +104,23 @@ TEST(Convexity, MeshVolumeIsTranslationInvariant) {
   EXPECT_NEAR(mesh_volume(translated(b, kFar)), mesh_volume(b), 1e-9);
   EXPECT_NEAR(mesh_volume(b), 60 - 2 * 3 * 4, 1e-12);
 }
+
+TEST(Convexity, ScreenStopsOnlyAboveItsThreshold) {
+  // The L-bracket's concavity is 17.5: a threshold below it stops the estimate
+  // early with a lower bound above the threshold; one above it changes nothing.
+  const Mesh l = float32(translated(l_bracket(40, 5, 20), kFar));
+  const Convexity full = measure_convexity(l, 0.01);
+  const ConvexityScreen early = screen_convexity(l, 0.01, 0.5);
+  EXPECT_TRUE(early.closed);
+  EXPECT_TRUE(early.concavity.stopped);
+  EXPECT_GT(early.concavity.value, 0.5);
+  EXPECT_LE(early.concavity.value, full.concavity.value);
+  const ConvexityScreen all = screen_convexity(l, 0.01, 100.0);
+  EXPECT_FALSE(all.concavity.stopped);
+  EXPECT_EQ(all.concavity.value, full.concavity.value);
+  // A convex part is never stopped: its estimate stays within the tolerance.
+  const ConvexityScreen cyl =
+      screen_convexity(float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFar)), 0.01, 0.01);
+  EXPECT_FALSE(cyl.concavity.stopped);
+  EXPECT_LE(cyl.concavity.value, 0.01);
+}

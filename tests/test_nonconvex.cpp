@@ -300,8 +300,8 @@ TEST(Nonconvex, DecideRefinedNeverQuietlyPassesAnUndecidedPair) {
 }
 
 TEST(Nonconvex, ConvexOnlySceneReportIsUnchangedApartFromTheNewFields) {
-  // The generator's convex parts alone (bolts, pins, blocks, a rod): the default
-  // (hull) and --pieces auto report the same, apart from the new fields.
+  // The generator's convex parts alone (bolts, pins, blocks, a rod): --pieces
+  // hull and the default (auto) report the same, apart from the new fields.
   const fs::path d = generate("nonconvex_convex_only");
   const json expected = read_json(d / "expected.json");
   json scene = read_json(d / "scene.json");
@@ -316,8 +316,8 @@ TEST(Nonconvex, ConvexOnlySceneReportIsUnchangedApartFromTheNewFields) {
                     {"transform", {{1, 0, 0, dx}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}});
   scene["parts"] = kept;
   std::ofstream(d / "scene.json") << scene.dump();
-  json hull = without_timings(pdcheck(d, "--no-cache"));
-  json auto_ = without_timings(pdcheck(d, "--pieces auto --no-cache"));
+  json hull = without_timings(pdcheck(d, "--pieces hull --no-cache"));
+  json auto_ = without_timings(pdcheck(d, "--no-cache"));
   ASSERT_GE(auto_["pairs"].size(), 4u);
   for (auto& p : auto_["parts"]) {
     EXPECT_EQ(p["convex"], true) << p["id"];

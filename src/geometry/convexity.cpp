@@ -37,7 +37,8 @@ bool facets_of(const Points& p, Facets& out) {
 }  // namespace
 
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
-                         double missing_volume, const Points& surface, int samples) {
+                         double missing_volume, const Points& surface, int samples,
+                         double stop_above) {
   Concavity c;
   Facets h;
   // qhull works on centred coordinates; distances are taken back in the part's.
@@ -47,6 +48,11 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
   auto consider = [&](const Vec3& x) {
     const double d = part.outside_distance(x + centre);
     if (d > c.value) c.value = d, c.witness = x + centre;
+    c.stopped = c.value > stop_above;
+  };
+  auto finish = [&] {
+    if (c.value > 0) c.closest = part.closest_point(c.witness);
+    return c;
   };
 
   // A lattice on every facet: k subdivisions of its longest edge, spacing s
@@ -65,7 +71,10 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
     const int k = std::max(1, static_cast<int>(std::ceil(longest[i] / s)));
     const Vec3 a = p.col(t[0]), ab = p.col(t[1]) - a, ac = p.col(t[2]) - a;
     for (int u = 0; u <= k; ++u)
-      for (int v = 0; u + v <= k; ++v) consider(a + (double(u) / k) * ab + (double(v) / k) * ac);
+      for (int v = 0; u + v <= k; ++v) {
+        consider(a + (double(u) / k) * ab + (double(v) / k) * ac);
+        if (c.stopped) return finish();
+      }
     // Any point of a lattice cell is within its longest edge / √3 of a corner.
     c.resolution = std::max(c.resolution, longest[i] / k / std::sqrt(3.0));
   }
@@ -88,6 +97,7 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
     for (std::size_t f = 0; f < h.f.normals.size() && in; ++f)
       in = h.f.normals[f].dot(x) + h.f.offsets[f] <= 1e-12 * (hi - lo).norm();
     if (in) consider(x);
+    if (c.stopped) return finish();
   }
 
   // Enclosed voids: only a void holding a ball of radius void_radius matters,
@@ -107,12 +117,12 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
             // Cheap first: only a point farther than the best can raise it.
             if (part.distance(q + centre) <= c.value) continue;
             consider(q);
+            if (c.stopped) return finish();
           }
       c.resolution = std::max(c.resolution, g * std::sqrt(3.0) / 2);
     }
   }
-  if (c.value > 0) c.closest = part.closest_point(c.witness);
-  return c;
+  return finish();
 }
 
 double mesh_volume(const Mesh& m) {
@@ -200,6 +210,19 @@ bool nested(const std::vector<Mesh>& shells) {
 }
 
 }  // namespace
+
+ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above) {
+  ConvexityScreen r;
+  const PreparedMesh part(m);
+  r.closed = part.closed();
+  const Vec3 centre = m.vertices.rowwise().mean();
+  Facets h;
+  const double hull_volume = facets_of(m.vertices.colwise() - centre, h) ? h.volume : 0.0;
+  r.concavity = hull_concavity(m.vertices, part, concavity_tol,
+                               r.closed ? hull_volume - mesh_volume(m) : -1.0, m.vertices,
+                               kConvexitySamples, stop_above);
+  return r;
+}
 
 Convexity measure_convexity(const Mesh& m, double concavity_tol) {
   Convexity r;

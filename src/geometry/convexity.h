@@ -3,6 +3,7 @@
 // concavity tolerance, and decomposes it otherwise.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -30,14 +31,18 @@ struct Concavity {
   double value = 0.0;
   double resolution = 0.0;
   Vec3 witness = Vec3::Zero(), closest = Vec3::Zero();
+  bool stopped = false;  ///< stopped above hull_concavity's `stop_above`: a lower bound
 };
 /// `points` need at least 4 affinely independent points (else value 0: a flat
 /// or smaller hull lies on the part). `missing_volume` is hull volume − the
 /// part's volume inside the hull, or a negative value when unknown (then the
-/// interior grid always runs).
+/// interior grid always runs). The estimate stops as soon as it exceeds
+/// `stop_above`: then `value` is only a lower bound, above that threshold
+/// (enough to call the part nonconvex at any tolerance up to it), and
+/// `stopped` is set.
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
                          double missing_volume, const Points& surface,
-                         int samples = kConvexitySamples);
+                         int samples = kConvexitySamples, double stop_above = INFINITY);
 
 /// A mesh's nonconvexity (scene units throughout).
 struct Convexity {
@@ -58,6 +63,16 @@ struct Convexity {
   /// Some shell lies inside another (a cavity): measured only when not convex.
   bool nested_shells = false;
 };
+
+/// What the parts stage needs of a mesh: whether it is closed, and its
+/// concavity (as hull_concavity, with the void radius `concavity_tol`),
+/// estimated only until it exceeds `stop_above` (then a lower bound: the
+/// part is nonconvex at every tolerance up to `stop_above`).
+struct ConvexityScreen {
+  bool closed = false;
+  Concavity concavity;
+};
+ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above);
 
 /// Measures m once. A convex (within concavity_tol) single-shell mesh is its
 /// own piece. Open meshes: the concavity is against the surface, volume 0.

@@ -12,13 +12,14 @@ namespace pd {
 
 namespace {
 
-constexpr CacheKind kKind{"pdcheck-convexity-1", ".pdv"};
+constexpr CacheKind kKind{"pdcheck-convexity-2", ".pdv"};
 
 }  // namespace
 
-std::string convexity_key(const std::string& content_hash, double concavity_tol) {
+std::string convexity_key(const std::string& content_hash, double concavity_tol,
+                          double stop_above) {
   Hasher h;
-  h.add(kKind.format).add(content_hash).add(concavity_tol);
+  h.add(kKind.format).add(content_hash).add(concavity_tol).add(stop_above);
   h.add(static_cast<double>(kConvexitySamples));
   return h.hex();
 }

@@ -11,13 +11,14 @@ namespace pd {
 
 /// What the parts stage keeps of a measurement (file units).
 struct StoredConvexity {
-  double concavity = 0.0;  ///< the estimated concavity of the mesh's hull against the mesh
+  double concavity = 0.0;  ///< the estimated concavity (a lower bound when above the threshold)
   bool closed = false;     ///< the mesh bounds a solid
 };
 
 /// The key of a file's measurement: its content hash, the concavity tolerance
-/// (file units, exact bits), the sampling density and the format version.
-std::string convexity_key(const std::string& content_hash, double concavity_tol);
+/// and the threshold its estimate stops above (file units, exact bits), the
+/// sampling density and the format version.
+std::string convexity_key(const std::string& content_hash, double concavity_tol, double stop_above);
 
 std::optional<StoredConvexity> read_cached_convexity(const std::string& dir,
                                                      const std::string& key);

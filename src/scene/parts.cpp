@@ -1,6 +1,8 @@
 #include "scene/parts.h"
 
 #include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -67,6 +69,7 @@ struct MeshFile {
   std::string hash;
   double concavity = 0.0;  ///< file units
   bool closed = false;
+  double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
 };
 
 bool keeps_surface(Pieces p) {
@@ -93,11 +96,11 @@ Mat4 placement(const PartSpec& spec) {
 
 // The file's nonconvexity, from the cache when it holds this file's bytes at
 // this tolerance, else measured (and stored, best effort).
-StoredConvexity convexity_of(const Mesh& m, const std::string& hash, double tol,
+StoredConvexity convexity_of(const Mesh& m, const std::string& hash, double tol, double stop_above,
                              const std::string& cache_dir) {
-  const std::string key = convexity_key(hash, tol);
+  const std::string key = convexity_key(hash, tol, stop_above);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
-  const Convexity c = measure_convexity(m, tol);
+  const ConvexityScreen c = screen_convexity(m, tol, stop_above);
   const StoredConvexity s{c.concavity.value, c.closed};
   write_cached_convexity(cache_dir, key, s);
   return s;
@@ -107,6 +110,12 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
+    // Hulls first: a mesh they reject (non-finite coordinates, ...) fails as in
+    // pieces "hull", before any measurement.
+    for (const Mesh& m : meshes) {
+      f.counts.push_back(m.vertices.cols());
+      f.reduced.push_back(convex_hull(m.vertices).vertices);
+    }
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
       const auto known = cache.file_hashes ? cache.file_hashes->find(*spec.mesh)
@@ -114,16 +123,13 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
       f.hash = cache.file_hashes && known != cache.file_hashes->end()
                    ? known->second
                    : file_content_hash(*spec.mesh);
-      // Measured once, in file units, at the first instance's tolerance; each
-      // instance scales the value by its own stretch.
-      const StoredConvexity c =
-          convexity_of(*f.mesh, f.hash, concavity_tol / stretch(placement(spec)), cache.dir);
+      // Measured once, in file units; each instance scales the value by its own
+      // stretch. Voids count at the strictest instance's tolerance; the
+      // estimate stops once it is nonconvex for the most lenient one.
+      const StoredConvexity c = convexity_of(*f.mesh, f.hash, concavity_tol / f.max_stretch,
+                                             concavity_tol / f.min_stretch, cache.dir);
       f.concavity = c.concavity;
       f.closed = c.closed;
-    }
-    for (const Mesh& m : meshes) {
-      f.counts.push_back(m.vertices.cols());
-      f.reduced.push_back(convex_hull(m.vertices).vertices);
     }
   } catch (const std::exception& e) {
     f.reduced.clear();
@@ -237,6 +243,13 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   for (size_t u = 0; u < unique.size(); ++u)
     if (file_of[u])
       requests[*file_of[u]] = {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes};
+  for (size_t u = 0; u < unique.size(); ++u)
+    if (file_of[u]) {
+      MeshFile& f = mesh_files[*file_of[u]];
+      const double s = stretch(placement(*unique[u]));
+      f.min_stretch = std::min(f.min_stretch, s);
+      f.max_stretch = std::max(f.max_stretch, s);
+    }
   if (!requests.empty()) {
     std::vector<LoadedMeshes> read =
         load_meshes_isolated(requests, threads, load_timeout, load_memory_mb);

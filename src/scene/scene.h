@@ -38,7 +38,7 @@ struct PartSpec {
   std::optional<Points> vertices;   ///< inline vertices, in the part's units
   double to_scene_units = 1.0;      ///< part unit / scene unit
   Mat4 transform = Mat4::Identity();
-  Pieces pieces = Pieces::kHull;      ///< auto/decompose are opt-in (slow decompositions)
+  Pieces pieces = Pieces::kAuto;      ///< the hull, refined where it flags a nonconvex part
   std::optional<RigidMotion> motion;  ///< only with checks.motion
 };
 
