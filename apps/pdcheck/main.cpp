@@ -135,9 +135,9 @@ int main(int argc, char** argv) {
   app.add_option("--method", method_arg,
                  "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
   app.add_option("--pieces", pieces_arg,
-                 "convex pieces of every mesh part, overriding the scene: hull (default), "
-                 "auto (the hull, refined where the hull stage flags a nonconvex part; opt-in, "
-                 "slow: docs/performance.md), meshes, decompose");
+                 "convex pieces of every mesh part, overriding the scene: auto (default: the "
+                 "hull, refined where the hull stage flags a nonconvex part), hull (never "
+                 "refined), meshes, decompose");
   app.add_option("--cache", cache_dir,
                  "directory of cached decompositions (default: $XDG_CACHE_HOME/pdcheck or "
                  "~/.cache/pdcheck)");
