@@ -1,10 +1,8 @@
 #include "batch/content_hashes.h"
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 
+#include "file_hash.h"
 #include "hash.h"
 
 namespace pd {
@@ -15,26 +13,12 @@ void add_vec(Hasher& h, const Vec3& v) {
   for (int k = 0; k < 3; ++k) h.add(v[k]);
 }
 
-std::string file_hash(const std::string& path) {
-  try {  // only regular files: a FIFO or device could block or never end (its load says why)
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return content_hash("not a file|" + path);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return content_hash("unreadable|" + path);
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) return content_hash("unreadable|" + path);
-    return content_hash(bytes);
-  } catch (const std::exception&) {
-    return content_hash("unreadable|" + path);
-  }
-}
-
 }  // namespace
 
 std::map<std::string, std::string> mesh_file_hashes(const SceneSpec& scene) {
   std::map<std::string, std::string> files;
   for (const PartSpec& p : scene.parts)
-    if (p.mesh && !files.count(*p.mesh)) files.emplace(*p.mesh, file_hash(*p.mesh));
+    if (p.mesh && !files.count(*p.mesh)) files.emplace(*p.mesh, file_content_hash(*p.mesh));
   return files;
 }
 
@@ -51,7 +35,7 @@ std::vector<std::string> part_content_hashes(const SceneSpec& scene,
     h.add("pdcheck-part-v1");
     if (p.mesh) {
       const auto it = files.find(*p.mesh);
-      h.add("mesh").add(it != files.end() ? it->second : file_hash(*p.mesh));
+      h.add("mesh").add(it != files.end() ? it->second : file_content_hash(*p.mesh));
     } else {
       const Points& v = *p.vertices;
       h.add("inline").add(std::string_view(reinterpret_cast<const char*>(v.data()),

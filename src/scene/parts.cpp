@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "file_hash.h"
 #include "geometry/convexity.h"
 #include "hash.h"
 #include "parallel_for.h"
@@ -74,12 +75,6 @@ struct MeshFile {
 
 bool keeps_surface(Pieces p) {
   return p == Pieces::kAuto || p == Pieces::kDecompose;
-}
-
-std::string file_content_hash(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  return content_hash(bytes);
 }
 
 // The largest factor by which the placement stretches a length.

@@ -1,0 +1,72 @@
+// The one file hash (file_hash.h) and the per-part hashes built on it
+// (batch/content_hashes.h): a regular file hashes its bytes; anything else
+// never matches a readable file (a directory is not an empty file).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "batch/content_hashes.h"
+#include "file_hash.h"
+#include "hash.h"
+
+using namespace pd;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(PDCHECK_BINARY_DIR) / "test-file-hash" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+void write(const fs::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+}  // namespace
+
+TEST(FileHash, RegularFileIsItsBytes) {
+  const fs::path d = fresh_dir("bytes");
+  const std::string bytes("solid x\n\0\x01\xff end", 16);
+  write(d / "a.stl", bytes);
+  EXPECT_EQ(file_content_hash((d / "a.stl").string()), content_hash(bytes));
+  write(d / "empty.stl", "");
+  EXPECT_EQ(file_content_hash((d / "empty.stl").string()), content_hash(""));
+}
+
+TEST(FileHash, NonFilesNeverMatchAReadableFile) {
+  const fs::path d = fresh_dir("nonfiles");
+  write(d / "empty.stl", "");
+  const std::string empty = file_content_hash((d / "empty.stl").string());
+  fs::create_directory(d / "dir.stl");
+  const std::string dir = file_content_hash((d / "dir.stl").string());
+  const std::string missing = file_content_hash((d / "missing.stl").string());
+  EXPECT_NE(dir, empty);
+  EXPECT_NE(missing, empty);
+  EXPECT_NE(dir, missing);  // the path and the reason are in the hash
+}
+
+// A part's hash follows its file's bytes, read once per file however many
+// parts use it (the map), and the map agrees with reading the file again.
+TEST(FileHash, PartHashesFollowTheFile) {
+  const fs::path d = fresh_dir("parts");
+  write(d / "m.stl", "one");
+  SceneSpec s;
+  for (const char* id : {"a", "b"}) {
+    PartSpec p;
+    p.id = id;
+    p.mesh = (d / "m.stl").string();
+    s.parts.push_back(p);
+  }
+  const auto files = mesh_file_hashes(s);
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files.begin()->second, file_content_hash((d / "m.stl").string()));
+  const auto before = part_content_hashes(s, files);
+  EXPECT_EQ(before, part_content_hashes(s));
+  EXPECT_EQ(before[0], before[1]);
+  write(d / "m.stl", "two");
+  EXPECT_NE(part_content_hashes(s)[0], before[0]);
+}
