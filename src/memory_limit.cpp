@@ -34,14 +34,6 @@ double cgroup_limit_mb() {
   }
 }
 
-/// Bytes of address space this process maps now (/proc/self/statm, first field).
-double mapped_bytes() {
-  std::ifstream in("/proc/self/statm");
-  double pages = 0.0;
-  if (!(in >> pages)) return -1.0;
-  return pages * double(sysconf(_SC_PAGESIZE));
-}
-
 }  // namespace
 
 double available_memory_mb() {
@@ -64,6 +56,19 @@ bool can_cap_address_space() {
   return true;
 #endif
 }
+
+#ifndef PD_ADDRESS_SANITIZER
+namespace {
+/// Bytes of address space this process maps now (/proc/self/statm, first field).
+double mapped_bytes() {
+  std::ifstream in("/proc/self/statm");
+  double pages = 0.0;
+  if (!(in >> pages)) return -1.0;
+  return pages * double(sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+#endif
 
 bool cap_address_space_growth(double mb) {
 #ifdef PD_ADDRESS_SANITIZER

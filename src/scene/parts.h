@@ -61,6 +61,13 @@ struct Part {
   long hull_vertex_count() const;
 };
 
+/// Where build_parts caches measured convexities, and the mesh files' content
+/// hashes when the caller has them (else each file is hashed there).
+struct PartsCache {
+  std::string dir;                                                  ///< "" = no cache
+  const std::map<std::string, std::string>* file_hashes = nullptr;  ///< path -> content hash
+};
+
 /// Loads, transforms and hulls every part. A part that fails gets `error` set
 /// and the rest go on. A mesh file is read once (and reduced to its hull's
 /// vertices once) whatever its instances' transforms; the same file under the
@@ -72,12 +79,7 @@ struct Part {
 /// limit) and `load_memory_mb` (load_meshes_isolated): a reader that hangs,
 /// crashes or allocates without end costs only its file's parts. Forks: call
 /// it from a process with one thread.
-/// `cache` (optional): where measured convexities are cached, and the mesh
-/// files' content hashes when the caller has them (else each file is hashed here).
-struct PartsCache {
-  std::string dir;                                                  ///< "" = no cache
-  const std::map<std::string, std::string>* file_hashes = nullptr;  ///< path -> content hash
-};
+/// `cache`: where measured convexities are cached (PartsCache).
 std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
                               const std::function<void(size_t)>& on_built = {},
                               double load_timeout = kDefaultLoadTimeout,
