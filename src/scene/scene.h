@@ -92,6 +92,13 @@ SceneSpec parse_scene_json(std::string_view text, const std::string& path,
                            const std::string& base_dir,
                            const std::optional<std::string>& units = std::nullopt, int threads = 1);
 
+/// The reference reading parse_scene_json must agree with: the whole text
+/// through the general JSON parser, every vertex by it, one thread. Slower;
+/// for differential tests and fuzzing (tests/fuzz/fuzz_scene.cpp).
+SceneSpec parse_scene_json_whole(std::string_view text, const std::string& path,
+                                 const std::string& base_dir,
+                                 const std::optional<std::string>& units = std::nullopt);
+
 /// Reads a scene file from disk (throws SceneError when unreadable).
 SceneSpec load_scene_file(const std::string& path,
                           const std::optional<std::string>& units = std::nullopt, int threads = 1);

@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <Eigen/LU>
+#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iterator>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -408,26 +410,34 @@ std::optional<SceneSpec> parse_in_slices(std::string_view text, const Ctx& c,
 SceneSpec parse_scene_json(std::string_view text, const std::string& path,
                            const std::string& base_dir, const std::optional<std::string>& units,
                            int threads) {
-  const Ctx c{path};
-  std::optional<SceneSpec> s;
-  s = parse_in_slices(text, c, base_dir, units, threads);
-  if (!s) {
-    const json doc = parse_json(text, path);
-    s = scene_fields(c, doc, units);
-    const json& parts = doc["parts"];
-    for (size_t k = 0; k < parts.size(); ++k)
-      s->parts.push_back(scene_part(c, parts[k], k, base_dir, *s));
-  }
+  std::optional<SceneSpec> s = parse_in_slices(text, Ctx{path}, base_dir, units, threads);
+  if (!s) return parse_scene_json_whole(text, path, base_dir, units);
   validate_scene(*s);
   return std::move(*s);
 }
 
+SceneSpec parse_scene_json_whole(std::string_view text, const std::string& path,
+                                 const std::string& base_dir,
+                                 const std::optional<std::string>& units) {
+  const Ctx c{path};
+  const json doc = parse_json(text, path);
+  SceneSpec s = scene_fields(c, doc, units);
+  const json& parts = doc["parts"];
+  for (size_t k = 0; k < parts.size(); ++k)
+    s.parts.push_back(scene_part(c, parts[k], k, base_dir, s));
+  validate_scene(s);
+  return s;
+}
+
 namespace {
 
-/// The whole file. A regular file is mapped (scenes reach 100 MB: a read into
-/// a string first zero-fills its pages and then copies, each page faulted in,
-/// which was a third of a large scene's load); anything else (a FIFO such as
-/// `<(generate-scene)`) or a failed map is read as a stream.
+/// The whole file. A regular file is read with read(2) straight into a buffer
+/// of its size (scenes reach 100 MB: a read into a string first zero-fills its
+/// pages and then copies, which was a third of a large scene's load). Not
+/// mapped: a file cut short while mapped (an exporter rewriting it in place)
+/// kills the reader with SIGBUS, where a read just sees a shorter file, whose
+/// JSON error names it. Anything else (a FIFO such as `<(generate-scene)`) is
+/// read as a stream.
 class SceneText {
  public:
   explicit SceneText(const std::string& path) {
@@ -435,7 +445,7 @@ class SceneText {
     const auto st = std::filesystem::status(path, ec);
     if (std::filesystem::is_directory(st))
       throw SceneError(path + ": is a directory, not a scene file");
-    if (std::filesystem::is_regular_file(st) && map(path)) return;
+    if (std::filesystem::is_regular_file(st) && read_whole(path)) return;
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path + ": cannot open the scene file");
     read_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -443,28 +453,49 @@ class SceneText {
     view_ = read_;
   }
   ~SceneText() {
-    if (mapped_) munmap(mapped_, view_.size());
+    if (buffer_) munmap(buffer_, capacity_);
   }
   SceneText(const SceneText&) = delete;
   SceneText& operator=(const SceneText&) = delete;
   std::string_view text() const { return view_; }
 
  private:
-  bool map(const std::string& path) {
+  /// False (the stream reads it instead) when the file cannot be opened or read this way.
+  bool read_whole(const std::string& path) {
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return false;
     struct stat st;
-    void* p = MAP_FAILED;
-    if (fstat(fd, &st) == 0 && st.st_size > 0)
-      p = mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd,
-               0);
+    bool ok = fstat(fd, &st) == 0 && st.st_size > 0;
+    size_t got = 0;
+    if (ok) {
+      const size_t size = static_cast<size_t>(st.st_size);
+      // Anonymous memory populated in one call: page by page, the faults on a
+      // 50 MB buffer cost about as much as the read itself.
+      void* p = mmap(nullptr, size, PROT_READ | PROT_WRITE,
+                     MAP_PRIVATE | MAP_ANONYMOUS | MAP_POPULATE, -1, 0);
+      if (p == MAP_FAILED) {
+        close(fd);
+        return false;
+      }
+      buffer_ = static_cast<char*>(p);
+      capacity_ = size;
+      while (got < size) {
+        const ssize_t n = ::read(fd, buffer_ + got, size - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+          ok = n == 0;  // end of file: the file shrank, read what is there
+          break;
+        }
+        got += static_cast<size_t>(n);
+      }
+    }
     close(fd);
-    if (p == MAP_FAILED) return false;
-    mapped_ = p;
-    view_ = std::string_view(static_cast<const char*>(p), static_cast<size_t>(st.st_size));
+    if (!ok) return false;
+    view_ = std::string_view(buffer_, got);
     return true;
   }
-  void* mapped_ = nullptr;
+  char* buffer_ = nullptr;
+  size_t capacity_ = 0;
   std::string read_;
   std::string_view view_;
 };

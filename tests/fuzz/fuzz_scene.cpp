@@ -3,7 +3,9 @@
 //
 // Oracles beyond "no crash, no exception but SceneError":
 //  - parse_scene_json gives the same scene, or the same error message, on one
-//    thread and on three (the threaded path splits the parts array itself);
+//    thread and on three, as the reference reading parse_scene_json_whole (the
+//    fast path splits the parts array itself and scans vertex lists with its
+//    own number reader);
 //  - when top_level_array finds the parts and the whole text is valid JSON, its
 //    elements are exactly the parts array's elements.
 #include <cstdint>
@@ -76,6 +78,14 @@ std::string parse(const std::string& text, int threads) {
   }
 }
 
+std::string parse_whole(const std::string& text) {
+  try {
+    return dump(pd::parse_scene_json_whole(text, "fuzz.json", "base"));
+  } catch (const pd::SceneError& e) {
+    return std::string("!") + e.what();
+  }
+}
+
 void check_split(const std::string& text) {
   const auto span = pd::top_level_array(text, "parts");
   if (!span) return;
@@ -104,6 +114,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_split(text);
   const std::string one = parse(text, 1);
   check(one == parse(text, 3), "one thread and three threads agree");
+  check(one == parse_whole(text), "the fast path agrees with the whole-text reading");
   try {
     pd::parse_part_list(text, "fuzz.txt");
   } catch (const pd::SceneError&) {
