@@ -258,13 +258,17 @@ TEST(Contacts, SubdivisionStopsAtACentreWithinContactResolution) {
   const PairProblem pr(t.c.a, t.c.b);
   const SubdividedSearch endless =
       lowest_facet_subdivided(pr.p(), pr.q(), t.centre, 0.1, 1e-3, tol::kNeighbourhoodPoints, 5000);
-  EXPECT_FALSE(endless.result.searched);
   const SubdividedSearch settled = lowest_facet_subdivided(
       pr.p(), pr.q(), t.centre, 0.1, 1e-3, tol::kNeighbourhoodPoints, 5000, tol::kTouch);
   ASSERT_TRUE(settled.result.searched);
   EXPECT_LE(settled.witness_gap, tol::kTouch);
   EXPECT_NEAR(pr.gap(settled.witness), settled.witness_gap, 1e-15);
   EXPECT_LE(settled.cells, 600);
+  // Without the stop the search runs into its limit of 5,000 cells with GCC's
+  // rounding, and closes only after ~680 with clang's (the ASan build): which
+  // depends on last-bit gaps at the contact, so the test asks only that the
+  // stop comes first.
+  EXPECT_LT(settled.cells, endless.cells);
 }
 
 TEST(Contacts, TouchingRotatedBoxOnABoardIsSettledInOneCertificate) {

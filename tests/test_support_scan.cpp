@@ -17,7 +17,7 @@ TEST(SupportScan, MatchesEigensSupportAndFirstIndexAtEveryBlockBoundary) {
     if (n > 70) x.col(n - 1) = x.col(66) = x.col(5) = 3 * r.direction();  // the top, 3 times
     const SoaPoints s(x);
     for (int t = 0; t < 50; ++t) {
-      const Vec3 v = t == 0 ? Vec3(x.col(5).normalized()) : r.direction();
+      const Vec3 v = t == 0 && n > 5 ? Vec3(x.col(5).normalized()) : r.direction();
       Eigen::Index ie = 0, is = 0, je = 0, js = 0;
       const double hi = (v.transpose() * x).maxCoeff(&ie);
       const double lo = (v.transpose() * x).minCoeff(&je);
