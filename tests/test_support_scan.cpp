@@ -2,6 +2,8 @@
 // values without a temporary) against Eigen's v^T·P with its argmax.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "corpus/generators.h"
 #include "solve/support_scan.h"
 
@@ -27,6 +29,39 @@ TEST(SupportScan, MatchesEigensSupportAndFirstIndexAtEveryBlockBoundary) {
       EXPECT_EQ(is, ie);
       EXPECT_EQ(js, je);
       EXPECT_DOUBLE_EQ(s.max_dot(v), x.col(is).dot(v));
+    }
+  }
+}
+
+TEST(SupportScan, BatchedDirectionsGiveEachSupportBitForBitWithItsFirstIndex) {
+  SphereSampler r(11);
+  // Direction counts around the 32-direction blocks; sizes from empty to several
+  // 64-point blocks; repeated points so that ties must keep the first index.
+  for (int n : {0, 1, 3, 8, 64, 65, 200}) {
+    Points x(3, n);
+    for (int k = 0; k < n; ++k) x.col(k) = r.direction() * (1 + r.uniform());
+    if (n > 10) x.col(n - 1) = x.col(7) = x.col(3) = 3 * r.direction();  // the top, 3 times
+    const SoaPoints s(x);
+    for (size_t count : {size_t(1), size_t(31), size_t(32), size_t(33), size_t(100)}) {
+      std::vector<Vec3> v(count);
+      for (Vec3& d : v) d = r.direction();
+      if (n > 10) v[0] = x.col(3).normalized();  // the tied top
+      for (double sign : {1.0, -1.0}) {
+        std::vector<double> out(count);
+        std::vector<Eigen::Index> at(count);
+        s.max_dots(v.data(), count, sign, out.data(), at.data());
+        std::vector<double> plain(count);
+        s.max_dots(v.data(), count, sign, plain.data());
+        for (size_t d = 0; d < count; ++d) {
+          SCOPED_TRACE("n " + std::to_string(n) + " count " + std::to_string(count) + " d " +
+                       std::to_string(d) + " sign " + std::to_string(sign));
+          Eigen::Index one = 0;
+          const double want = sign > 0 ? s.max_dot(v[d], &one) : -s.min_dot(v[d], &one);
+          EXPECT_EQ(out[d], want);  // bit for bit: the sampling's gaps must not change
+          EXPECT_EQ(plain[d], want);
+          EXPECT_EQ(at[d], one);
+        }
+      }
     }
   }
 }

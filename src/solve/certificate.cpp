@@ -58,13 +58,20 @@ CellSupports cell_supports(const PairProblem& pr, int grid) {
   CellSupports s;
   s.x.resize(nc);
   s.g.resize(nc);
+  thread_local std::vector<Vec3> centres;
+  thread_local std::vector<double> hp, hq;
+  thread_local std::vector<Eigen::Index> ip, iq;
+  centres.resize(nc);
+  hp.resize(nc);
+  hq.resize(nc);
+  ip.resize(nc);
+  iq.resize(nc);
+  for (size_t k = 0; k < nc; ++k) centres[k] = cells[k].centre;
+  pr.p_soa().max_dots(centres.data(), nc, 1.0, hp.data(), ip.data());
+  pr.q_soa().max_dots(centres.data(), nc, -1.0, hq.data(), iq.data());  // −min_j q_j·c
   for (size_t k = 0; k < nc; ++k) {
-    const Vec3& c = cells[k].centre;
-    Eigen::Index ip = 0, iq = 0;
-    const double hp = pr.p_soa().max_dot(c, &ip);
-    const double hq = pr.q_soa().min_dot(c, &iq);
-    s.x[k] = pr.p().col(ip) - pr.q().col(iq);
-    s.g[k] = hp - hq;
+    s.x[k] = pr.p().col(ip[k]) - pr.q().col(iq[k]);
+    s.g[k] = hp[k] - -hq[k];  // max − min, as max_dot − min_dot
   }
   return s;
 }

@@ -1,6 +1,7 @@
 #include "solve/objective.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace pd {
 
@@ -14,6 +15,15 @@ PairProblem::PairProblem(const Points& a_world, const Points& b_world)
 double PairProblem::gap(const Vec3& v) const {
   ++evaluations_;
   return p_soa_.max_dot(v) - q_soa_.min_dot(v);
+}
+
+void PairProblem::gaps(const Vec3* v, size_t count, double* out) const {
+  evaluations_ += static_cast<long>(count);
+  thread_local std::vector<double> low;  // max_i −q_i·v = −min_j q_j·v
+  low.resize(count);
+  p_soa_.max_dots(v, count, 1.0, out);
+  q_soa_.max_dots(v, count, -1.0, low.data());
+  for (size_t k = 0; k < count; ++k) out[k] -= -low[k];  // gap()'s subtraction, exactly
 }
 
 std::vector<int> near_extreme(const Points& x, const Vec3& v, double band, bool top) {

@@ -33,4 +33,46 @@ double SoaPoints::max_dot(const Vec3& v, Eigen::Index* index) const {
   return best;
 }
 
+void SoaPoints::max_dots(const Vec3* v, size_t count, double sign, double* out,
+                         Eigen::Index* index) const {
+  constexpr size_t kBlock = 32;
+  alignas(64) double dx[kBlock], dy[kBlock], dz[kBlock], best[kBlock];
+  alignas(64) Eigen::Index at[kBlock];
+  const size_t n = x_.size();
+  for (size_t b = 0; b < count; b += kBlock) {
+    const size_t m = std::min(kBlock, count - b);
+    for (size_t d = 0; d < kBlock; ++d) {
+      // Negation is exact, so sign·v gives max_dot(−v)'s products bit for bit;
+      // the unused tail of a block computes zeros that are never read.
+      const Vec3 u = d < m ? Vec3(sign * v[b + d]) : Vec3::Zero();
+      dx[d] = u.x();
+      dy[d] = u.y();
+      dz[d] = u.z();
+      best[d] = -std::numeric_limits<double>::infinity();
+      at[d] = 0;
+    }
+    // The sum in max_dot's order, (x·vx + y·vy) + z·vz: the same rounding.
+    if (index) {
+      for (size_t i = 0; i < n; ++i) {
+        const double xi = x_[i], yi = y_[i], zi = z_[i];
+        for (size_t d = 0; d < kBlock; ++d) {
+          const double s = xi * dx[d] + yi * dy[d] + zi * dz[d];
+          at[d] = s > best[d] ? static_cast<Eigen::Index>(i) : at[d];  // the first index wins
+          best[d] = s > best[d] ? s : best[d];
+        }
+      }
+      std::copy(at, at + m, index + b);
+    } else {
+      for (size_t i = 0; i < n; ++i) {
+        const double xi = x_[i], yi = y_[i], zi = z_[i];
+        for (size_t d = 0; d < kBlock; ++d) {
+          const double s = xi * dx[d] + yi * dy[d] + zi * dz[d];
+          best[d] = s > best[d] ? s : best[d];
+        }
+      }
+    }
+    std::copy(best, best + m, out + b);
+  }
+}
+
 }  // namespace pd

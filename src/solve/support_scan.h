@@ -26,6 +26,14 @@ class SoaPoints {
   /// (negation is exact in floating point).
   double min_dot(const Vec3& v, Eigen::Index* index = nullptr) const { return -max_dot(-v, index); }
 
+  /// max_dot(sign·v[d]) for each of `count` directions, bit for bit, with the
+  /// first index reaching it when `index` is given. One pass over the points per
+  /// block of directions, vectorised across the directions: on small sets (the
+  /// common contact of two 8-vertex boxes) a per-direction scan is all overhead.
+  /// sign is +1 or −1 (then −out[d] is min_dot(v[d])).
+  void max_dots(const Vec3* v, size_t count, double sign, double* out,
+                Eigen::Index* index = nullptr) const;
+
  private:
   std::vector<double> x_, y_, z_;
 };
