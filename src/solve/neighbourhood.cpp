@@ -1,9 +1,12 @@
 #include "solve/neighbourhood.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/hull.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -26,6 +29,67 @@ int extreme_index(const Points& x, const std::vector<int>& among, const Vec3& u,
     if (top ? s > bv : s < bv) best = i, bv = s;
   }
   return best;
+}
+
+// The local support h(n) = max_{i∈pi} p_i·n − min_{j∈qj} q_j·n: the gap at n
+// when pi and qj hold every vertex extreme at n.
+double local_support(const Points& p, const Points& q, const std::vector<int>& pi,
+                     const std::vector<int>& qj, const Vec3& n) {
+  double hi = -std::numeric_limits<double>::infinity(), lo = -hi;
+  for (int i : pi) hi = std::max(hi, p.col(i).dot(n));
+  for (int j : qj) lo = std::min(lo, q.col(j).dot(n));
+  return hi - lo;
+}
+
+// The lowest facet in the cap from the facet normals' candidates, without a hull.
+// A facet of P' − Q' is a face of P' minus a face of Q' spanning a plane: a
+// facet of P' (a plane through three of its points), a facet of Q', or an edge
+// of each (the cross product of a pair of P' points' difference and of Q'
+// points'). So these candidates hold every facet normal; each is valued by the
+// local support, exactly. A candidate that is not a facet is still a real
+// direction in the cap, and its value the gap there. Returns false when no
+// candidate spans a plane (collinear sets: the hull path decides).
+bool lowest_from_candidates(const Points& p, const Points& q, const std::vector<int>& pi,
+                            const std::vector<int>& qj, const Vec3& v, double cos_r,
+                            std::optional<FacetCandidate>& lowest) {
+  bool spanned = false;
+  auto consider = [&](Vec3 n, double scale) {
+    const double len = n.norm();
+    if (!(len > 1e-12 * scale)) return;  // parallel or coincident: no plane
+    spanned = true;
+    n /= len;
+    if (n.dot(v) < 0) n = -n;
+    if (n.dot(v) < cos_r) return;
+    const double h = local_support(p, q, pi, qj, n);
+    if (!lowest || h < lowest->offset) lowest = FacetCandidate{n, h};
+  };
+  auto triples = [&](const Points& x, const std::vector<int>& ids) {
+    for (size_t a = 0; a < ids.size(); ++a)
+      for (size_t b = a + 1; b < ids.size(); ++b)
+        for (size_t c = b + 1; c < ids.size(); ++c) {
+          const Vec3 e1 = x.col(ids[b]) - x.col(ids[a]), e2 = x.col(ids[c]) - x.col(ids[a]);
+          consider(e1.cross(e2), e1.norm() * e2.norm());
+        }
+  };
+  triples(p, pi);
+  triples(q, qj);
+  for (size_t a = 0; a < pi.size(); ++a)
+    for (size_t b = a + 1; b < pi.size(); ++b) {
+      const Vec3 e1 = p.col(pi[b]) - p.col(pi[a]);
+      for (size_t c = 0; c < qj.size(); ++c)
+        for (size_t d = c + 1; d < qj.size(); ++d) {
+          const Vec3 e2 = q.col(qj[d]) - q.col(qj[c]);
+          consider(e1.cross(e2), e1.norm() * e2.norm());
+        }
+    }
+  return spanned;
+}
+
+// Candidates of lowest_from_candidates times their valuation's cost.
+double candidate_work(size_t a, size_t b) {
+  auto c2 = [](double n) { return n * (n - 1) / 2; };
+  auto c3 = [](double n) { return n * (n - 1) * (n - 2) / 6; };
+  return (c3(double(a)) + c3(double(b)) + c2(double(a)) * c2(double(b))) * double(a + b);
 }
 
 }  // namespace
@@ -78,11 +142,15 @@ std::optional<FacetCandidate> lowest_local_facet(const Points& p, const Points& 
                                                  const std::vector<int>& pi,
                                                  const std::vector<int>& qj, const Vec3& v,
                                                  double radius) {
+  const double cos_r = std::cos(radius);
+  if (candidate_work(pi.size(), qj.size()) <= tol::kCandidateFacetWork) {
+    std::optional<FacetCandidate> lowest;
+    if (lowest_from_candidates(p, q, pi, qj, v, cos_r, lowest)) return lowest;
+  }
   Points m(3, pi.size() * qj.size());
   Eigen::Index k = 0;
   for (int i : pi)
     for (int j : qj) m.col(k++) = p.col(i) - q.col(j);
-  const double cos_r = std::cos(radius);
   HullFacets f;
   if (m.cols() < 3) return std::nullopt;  // a vertex or an edge: no facet normal inside
   if (m.cols() == 3 || !hull_facets(m, f)) {
