@@ -17,7 +17,8 @@ namespace pd::test {
 inline const std::string kSource = PDCHECK_SOURCE_DIR;
 
 struct CliResult {
-  int code = -1;
+  int code = -1;   ///< exit code, or -1 when killed by a signal
+  int signal = 0;  ///< the signal that ended it, if any
   std::string out, err;
 };
 
@@ -46,8 +47,29 @@ inline CliResult shell(const std::string& cmd) {
   return r;
 }
 
-inline CliResult pdcheck(const std::string& args) {
-  return shell(std::string(PDCHECK_BINARY) + " " + args);
+/// pdcheck with `stdin_text` on its standard input (none: /dev/null) and the
+/// shell assignments `env` before it. The shell execs it, so a signal that
+/// ends it is reported as such (a shell would exit with 128 + the signal).
+inline CliResult pdcheck(const std::string& args, const std::string& stdin_text = "",
+                         const std::string& env = "") {
+  const std::string tag = std::to_string(getpid());  // ctest runs tests in parallel processes
+  const std::string err_file = testing::TempDir() + "pdcheck_err_" + tag + ".txt";
+  std::string cmd = env + " exec " + std::string(PDCHECK_BINARY) + " " + args;
+  if (!stdin_text.empty()) {
+    const std::string in_file = testing::TempDir() + "pdcheck_in_" + tag + ".txt";
+    std::ofstream(in_file) << stdin_text;
+    cmd += " <" + in_file;
+  } else {
+    cmd += " </dev/null";
+  }
+  const pd_test::Captured c = pd_test::run_capture(cmd, err_file);
+  CliResult r;
+  r.out = c.out;
+  r.err = c.err;
+  if (WIFEXITED(c.status) && WEXITSTATUS(c.status) > 128) r.signal = WEXITSTATUS(c.status) - 128;
+  if (WIFSIGNALED(c.status)) r.signal = WTERMSIG(c.status);
+  r.code = WIFEXITED(c.status) && !r.signal ? WEXITSTATUS(c.status) : -1;
+  return r;
 }
 
 inline bool have_command(const std::string& name) {

@@ -9,48 +9,18 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "run_capture.h"
+#include "cli_support.h"
 
 using nlohmann::json;
 
 namespace {
 
-const std::string kSource = PDCHECK_SOURCE_DIR;
+using pd::test::kSource;
 const std::string kDemo = kSource + "/testdata/demo/scene.json";
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-// Runs pdcheck through the shell; stderr goes to a file so both can be read.
-CliRun pdcheck(const std::string& args, const std::string& stdin_text = "",
-               const std::string& env = "") {
-  // Per process: ctest runs tests in parallel, each in its own process.
-  const std::string err_file =
-      testing::TempDir() + "pdcheck_err_" + std::to_string(getpid()) + ".txt";
-  std::string cmd = env + " " + std::string(PDCHECK_BINARY) + " " + args;
-  if (!stdin_text.empty()) {
-    const std::string in_file =
-        testing::TempDir() + "pdcheck_in_" + std::to_string(getpid()) + ".txt";
-    std::ofstream(in_file) << stdin_text;
-    cmd += " <" + in_file;
-  } else {
-    cmd += " </dev/null";
-  }
-  pd_test::Captured c = pd_test::run_capture(cmd, err_file);
-  CliRun r;
-  r.code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : -1;
-  r.out = std::move(c.out);
-  r.err = std::move(c.err);
-  return r;
-}
-
-std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
+using CliRun = pd::test::CliResult;
+using pd::test::pdcheck;
+using pd::test::write_temp;
 
 std::map<std::string, std::string> statuses(const json& report) {
   std::map<std::string, std::string> s;

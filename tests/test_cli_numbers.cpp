@@ -11,49 +11,17 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "run_capture.h"
+#include "cli_support.h"
 
 using nlohmann::json;
 
 namespace {
 
-const std::string kSource = PDCHECK_SOURCE_DIR;
+using pd::test::kSource;
 
-struct CliRun {
-  int code = -1;   ///< exit code, or -1 when killed by a signal
-  int signal = 0;  ///< the signal that ended it, if any
-  std::string out, err;
-};
-
-// Runs pdcheck through the shell; stderr goes to a file so both can be read.
-CliRun pdcheck(const std::string& args, const std::string& stdin_text = "") {
-  const std::string tag = std::to_string(getpid());
-  const std::string err_file = testing::TempDir() + "pdcheck_num_err_" + tag + ".txt";
-  std::string cmd = "exec " + std::string(PDCHECK_BINARY) + " " + args;
-  if (!stdin_text.empty()) {
-    const std::string in_file = testing::TempDir() + "pdcheck_num_in_" + tag + ".txt";
-    std::ofstream(in_file) << stdin_text;
-    cmd += " <" + in_file;
-  } else {
-    cmd += " </dev/null";
-  }
-  pd_test::Captured c = pd_test::run_capture(cmd, err_file);
-  CliRun r;
-  const int status = c.status;
-  r.out = std::move(c.out);
-  r.err = std::move(c.err);
-  // The shell reports a child killed by signal s as exit code 128 + s.
-  if (WIFEXITED(status) && WEXITSTATUS(status) > 128) r.signal = WEXITSTATUS(status) - 128;
-  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
-  r.code = WIFEXITED(status) && !r.signal ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
+using CliRun = pd::test::CliResult;
+using pd::test::pdcheck;
+using pd::test::write_temp;
 
 // Two tetrahedra that overlap near the origin, every coordinate with the
 // exponent suffix `e` ("" for unit size, "e250" for huge), the tolerance too.
