@@ -56,11 +56,11 @@ TEST(Neighbourhood, CandidateFacetsNeverMissAFacetOfTheHullInTheCap) {
     if (std::isfinite(reference)) {
       ASSERT_TRUE(got.has_value());
       ++compared;
-      // Every facet normal is a candidate, so none lower is missed ...
-      EXPECT_LE(got->offset, reference + 1e-12);
+      // Every facet normal is a candidate and a facet is kept: the same lowest facet.
+      EXPECT_NEAR(got->offset, reference, 1e-12);
     }
     if (got) {
-      // ... and whatever is returned is a real direction in the cap, valued exactly.
+      // Whatever is returned is a direction in the cap, valued exactly.
       EXPECT_NEAR(got->normal.norm(), 1.0, 1e-15);
       EXPECT_GE(got->normal.dot(v), std::cos(radius) - 1e-15);
       EXPECT_NEAR(got->offset, (got->normal.transpose() * m).maxCoeff(), 1e-14);

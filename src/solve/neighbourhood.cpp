@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include "geometry/hull.h"
@@ -31,55 +32,57 @@ int extreme_index(const Points& x, const std::vector<int>& among, const Vec3& u,
   return best;
 }
 
-// The local support h(n) = max_{i∈pi} p_i·n − min_{j∈qj} q_j·n: the gap at n
-// when pi and qj hold every vertex extreme at n.
-double local_support(const Points& p, const Points& q, const std::vector<int>& pi,
-                     const std::vector<int>& qj, const Vec3& n) {
-  double hi = -std::numeric_limits<double>::infinity(), lo = -hi;
-  for (int i : pi) hi = std::max(hi, p.col(i).dot(n));
-  for (int j : qj) lo = std::min(lo, q.col(j).dot(n));
-  return hi - lo;
-}
-
 // The lowest facet in the cap from the facet normals' candidates, without a hull.
 // A facet of P' − Q' is a face of P' minus a face of Q' spanning a plane: a
 // facet of P' (a plane through three of its points), a facet of Q', or an edge
 // of each (the cross product of a pair of P' points' difference and of Q'
-// points'). So these candidates hold every facet normal; each is valued by the
-// local support, exactly. A candidate that is not a facet is still a real
-// direction in the cap, and its value the gap there. Returns false when no
-// candidate spans a plane (collinear sets: the hull path decides).
+// points'). So these candidates hold every facet normal. A candidate is kept
+// when it is one: its P' points lie at the top of P'·n and its Q' points at the
+// bottom of Q'·n (to rounding); its offset is the local support there, exactly.
+// Returns false when no candidate spans a plane (collinear sets: the hull path
+// decides).
 bool lowest_from_candidates(const Points& p, const Points& q, const std::vector<int>& pi,
                             const std::vector<int>& qj, const Vec3& v, double cos_r,
                             std::optional<FacetCandidate>& lowest) {
   bool spanned = false;
-  auto consider = [&](Vec3 n, double scale) {
+  auto consider = [&](Vec3 n, double scale, std::initializer_list<int> on_p,
+                      std::initializer_list<int> on_q) {
     const double len = n.norm();
     if (!(len > 1e-12 * scale)) return;  // parallel or coincident: no plane
     spanned = true;
     n /= len;
     if (n.dot(v) < 0) n = -n;
     if (n.dot(v) < cos_r) return;
-    const double h = local_support(p, q, pi, qj, n);
-    if (!lowest || h < lowest->offset) lowest = FacetCandidate{n, h};
+    double hi = -std::numeric_limits<double>::infinity(), lo = -hi;
+    for (int i : pi) hi = std::max(hi, p.col(i).dot(n));
+    for (int j : qj) lo = std::min(lo, q.col(j).dot(n));
+    const double slack = 1e-12 * std::max({1.0, std::abs(hi), std::abs(lo)});
+    for (int i : on_p)
+      if (p.col(i).dot(n) < hi - slack) return;  // not on P''s face at n: no facet
+    for (int j : on_q)
+      if (q.col(j).dot(n) > lo + slack) return;
+    if (!lowest || hi - lo < lowest->offset) lowest = FacetCandidate{n, hi - lo};
   };
-  auto triples = [&](const Points& x, const std::vector<int>& ids) {
+  auto triples = [&](const Points& x, const std::vector<int>& ids, bool of_p) {
     for (size_t a = 0; a < ids.size(); ++a)
       for (size_t b = a + 1; b < ids.size(); ++b)
         for (size_t c = b + 1; c < ids.size(); ++c) {
           const Vec3 e1 = x.col(ids[b]) - x.col(ids[a]), e2 = x.col(ids[c]) - x.col(ids[a]);
-          consider(e1.cross(e2), e1.norm() * e2.norm());
+          if (of_p)
+            consider(e1.cross(e2), e1.norm() * e2.norm(), {ids[a], ids[b], ids[c]}, {});
+          else
+            consider(e1.cross(e2), e1.norm() * e2.norm(), {}, {ids[a], ids[b], ids[c]});
         }
   };
-  triples(p, pi);
-  triples(q, qj);
+  triples(p, pi, true);
+  triples(q, qj, false);
   for (size_t a = 0; a < pi.size(); ++a)
     for (size_t b = a + 1; b < pi.size(); ++b) {
       const Vec3 e1 = p.col(pi[b]) - p.col(pi[a]);
       for (size_t c = 0; c < qj.size(); ++c)
         for (size_t d = c + 1; d < qj.size(); ++d) {
           const Vec3 e2 = q.col(qj[d]) - q.col(qj[c]);
-          consider(e1.cross(e2), e1.norm() * e2.norm());
+          consider(e1.cross(e2), e1.norm() * e2.norm(), {pi[a], pi[b]}, {qj[c], qj[d]});
         }
     }
   return spanned;

@@ -5,10 +5,14 @@
 
 namespace pd {
 
-SoaPoints::SoaPoints(const Points& x)
-    : x_(x.row(0).begin(), x.row(0).end()),
-      y_(x.row(1).begin(), x.row(1).end()),
-      z_(x.row(2).begin(), x.row(2).end()) {}
+SoaPoints::SoaPoints(const Points& x) : x_(x.cols()), y_(x.cols()), z_(x.cols()) {
+  // Column by column: a row iterator of an empty matrix offsets a null pointer.
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    x_[k] = x(0, k);
+    y_[k] = x(1, k);
+    z_[k] = x(2, k);
+  }
+}
 
 double SoaPoints::max_dot(const Vec3& v, Eigen::Index* index) const {
   using Arr = Eigen::Array<double, Eigen::Dynamic, 1>;
