@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
       std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
       scene = pd::parse_stdin_scene(text, units, jobs);
     } else {
-      scene = pd::load_scene_file(scene_arg, units, jobs);
+      scene = pd::load_scene_file(scene_arg, units, jobs, /*keep_vertices=*/!shard);
     }
     if (app.count("--tolerance")) {
       if (!(tolerance > 0 && std::isfinite(tolerance)))
@@ -410,6 +410,9 @@ int main(int argc, char** argv) {
   } catch (const pd::OutputError& e) {
     say("error", std::string(e.what()) + "; the run stopped");
     return kExitOutput;
+  } catch (const pd::SceneError& e) {  // a shard's scene file changed under it
+    say("error", e.what());
+    return kExitUsage;
   }
   const pd::Summary summary = pd::summarize(result);
   pd::ReportContext ctx{scene.path, scene.units.value_or("mm"), *scene.tolerance, solver,

@@ -32,14 +32,13 @@ std::vector<std::string> part_content_hashes(const SceneSpec& scene,
   out.reserve(scene.parts.size());
   for (const PartSpec& p : scene.parts) {
     Hasher h;
-    h.add("pdcheck-part-v1");
+    h.add("pdcheck-part-v2");
     if (p.mesh) {
       const auto it = files.find(*p.mesh);
       h.add("mesh").add(it != files.end() ? it->second : file_content_hash(*p.mesh));
     } else {
-      const Points& v = *p.vertices;
-      h.add("inline").add(std::string_view(reinterpret_cast<const char*>(v.data()),
-                                           sizeof(double) * static_cast<size_t>(v.size())));
+      // The list's own digest: a shard holds it without the list (VertexSummary).
+      h.add("inline").add(p.vertex_summary ? p.vertex_summary->digest : vertex_digest(*p.vertices));
     }
     h.add(p.to_scene_units);
     for (int i = 0; i < 16; ++i) h.add(p.transform(i / 4, i % 4));

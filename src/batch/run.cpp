@@ -147,8 +147,13 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     shard_scene.tolerance = scene.tolerance;
     shard_scene.checks = scene.checks;
     for (int k : loaded) shard_scene.parts.push_back(scene.parts[k]);
+    read_inline_vertices(shard_scene);  // only this shard's parts (scene/scene.h)
+  } else if (std::any_of(scene.parts.begin(), scene.parts.end(),
+                         [](const PartSpec& p) { return p.vertex_summary.has_value(); })) {
+    shard_scene = scene;  // every part is loaded: every list read again
+    read_inline_vertices(shard_scene);
   }
-  const SceneSpec& to_load = plan ? shard_scene : scene;
+  const SceneSpec& to_load = plan || !shard_scene.parts.empty() ? shard_scene : scene;
   {
     Progress progress(to_load.parts.size(), options.quiet, "parts");
     out.parts = build_parts(

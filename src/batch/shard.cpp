@@ -34,6 +34,13 @@ ShardSpec checked(long k, long n, const std::string& what) {
 
 // The placed points' box, widened by a rounding slack: it must contain the
 // box of any hull of these points, however the hull's vertices were computed.
+std::optional<Aabb> plan_box(const std::optional<Aabb>& placed_box) {
+  if (!placed_box) return std::nullopt;  // the hull fails too
+  const Aabb& box = *placed_box;
+  const double size = std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
+  return box.inflated(tol::kPlanBoxSlack * size);
+}
+
 std::optional<Aabb> plan_box(const Points& placed, const PartSpec& spec,
                              const std::optional<MotionCheck>& motion) {
   if (placed.cols() == 0 || !placed.allFinite()) return std::nullopt;  // the hull fails too
@@ -41,14 +48,7 @@ std::optional<Aabb> plan_box(const Points& placed, const PartSpec& spec,
   if (motion && spec.motion)
     for (long k = 0; k < motion->grid.steps(); ++k)
       box = box.merged(Aabb::of(spec.motion->at(placed, motion->grid.time(k))));
-  const double size = std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
-  return box.inflated(tol::kPlanBoxSlack * size);
-}
-
-Points place(const Points& p, const PartSpec& spec) {
-  const Points scaled = p * spec.to_scene_units;
-  return (spec.transform.topLeftCorner<3, 3>() * scaled).colwise() +
-         Vec3(spec.transform.topRightCorner<3, 1>());
+  return plan_box(box);
 }
 
 // Boxes and vertex counts of every part. Mesh files are read in batches so a
@@ -62,9 +62,12 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
     const PartSpec& s = scene.parts[k];
     if (s.mesh) {
       users[{*s.mesh, s.pieces == Pieces::kMeshes}].push_back(k);
+    } else if (s.vertex_summary) {  // the same box as below, computed when the list was read
+      plan.vertices[k] = s.vertex_summary->count;
+      plan.boxes[k] = plan_box(s.vertex_summary->placed_box);
     } else {
       plan.vertices[k] = s.vertices->cols();
-      plan.boxes[k] = plan_box(place(*s.vertices, s), s, scene.checks.motion);
+      plan.boxes[k] = plan_box(place_points(*s.vertices, s), s, scene.checks.motion);
     }
   }
   std::vector<std::pair<MeshRequest, const std::vector<size_t>*>> files;
@@ -88,7 +91,8 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
       }
       for (size_t k : *files[f].second) {
         plan.vertices[k] = count;
-        plan.boxes[k] = plan_box(place(all, scene.parts[k]), scene.parts[k], scene.checks.motion);
+        plan.boxes[k] =
+            plan_box(place_points(all, scene.parts[k]), scene.parts[k], scene.checks.motion);
       }
     }
   }

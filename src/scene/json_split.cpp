@@ -90,7 +90,11 @@ struct Scanner {
 
 }  // namespace
 
-std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view key) {
+namespace {
+
+/// `read`, when given, reads the array (read_top_level_array).
+std::optional<ArraySpan> find_array(std::string_view text, std::string_view key,
+                                    const std::function<std::size_t(std::string_view)>* read) {
   Scanner s{text};
   if (!s.expect('{')) return std::nullopt;
   std::optional<ArraySpan> found;
@@ -110,7 +114,15 @@ std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view
     if (name == key) {
       if (found || s.peek() != '[') return std::nullopt;  // duplicate, or not an array
       found.emplace();
-      if (!s.array_elements(*found)) return std::nullopt;
+      if (read) {
+        const std::size_t n = (*read)(text.substr(s.pos));
+        if (n == 0) return std::nullopt;
+        found->begin = s.pos;
+        s.pos += n;
+        found->end = s.pos;
+      } else if (!s.array_elements(*found)) {
+        return std::nullopt;
+      }
     } else if (!s.skip_value()) {
       return std::nullopt;
     }
@@ -124,6 +136,18 @@ std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view
   s.skip_space();
   if (!s.at_end()) return std::nullopt;
   return found;
+}
+
+}  // namespace
+
+std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view key) {
+  return find_array(text, key, nullptr);
+}
+
+std::optional<ArraySpan> read_top_level_array(
+    std::string_view text, std::string_view key,
+    const std::function<std::size_t(std::string_view)>& read) {
+  return find_array(text, key, &read);
 }
 
 }  // namespace pd

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,5 +26,14 @@ struct ArraySpan {
 /// has an escape, or its structure is broken; the caller then parses the whole
 /// text, which reports the error.
 std::optional<ArraySpan> top_level_array(std::string_view text, std::string_view key);
+
+/// Like top_level_array, where `read` reads the array (ArraySpan::elements
+/// stays empty): it is given the text from the array's '[' on and returns the
+/// array's length in bytes, or 0 when it cannot read it (the result is then
+/// std::nullopt). One pass over the array's bytes, not a scan for its end and
+/// then a read.
+std::optional<ArraySpan> read_top_level_array(
+    std::string_view text, std::string_view key,
+    const std::function<std::size_t(std::string_view)>& read);
 
 }  // namespace pd

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/aabb.h"
 #include "geometry/motion.h"
 #include "geometry/types.h"
 #include "solve/settings.h"
@@ -31,12 +32,24 @@ std::optional<Pieces> parse_pieces(const std::string& name);
 const char* pieces_name(Pieces p);
 inline constexpr const char* kPiecesNames = "auto, hull, meshes, decompose";
 
+/// An inline vertex list read but not kept (load_scene_file with keep_vertices
+/// false, for --shard): what the shard plan and the content hash need, and
+/// where to read the list again for the parts a shard loads (read_inline_vertices).
+struct VertexSummary {
+  long count = 0;
+  std::optional<Aabb> placed_box;      ///< of place_points(list); nullopt: not all finite
+  std::string digest;                  ///< content_hash of the list's doubles (vertex_digest)
+  std::size_t offset = 0, length = 0;  ///< the list's bytes in the scene file
+};
+
 struct PartSpec {
   std::string id;
   std::string where;                ///< "scene.json: parts[3]", for messages
   std::optional<std::string> mesh;  ///< a path usable from the working directory
   std::optional<Points> vertices;   ///< inline vertices, in the part's units
-  double to_scene_units = 1.0;      ///< part unit / scene unit
+  /// Instead of `vertices` when they were not kept (see VertexSummary).
+  std::optional<VertexSummary> vertex_summary;
+  double to_scene_units = 1.0;  ///< part unit / scene unit
   Mat4 transform = Mat4::Identity();
   Pieces pieces = Pieces::kAuto;      ///< the hull, refined where it flags a nonconvex part
   std::optional<RigidMotion> motion;  ///< only with checks.motion
@@ -100,8 +113,23 @@ SceneSpec parse_scene_json_whole(std::string_view text, const std::string& path,
                                  const std::optional<std::string>& units = std::nullopt);
 
 /// Reads a scene file from disk (throws SceneError when unreadable).
+/// `keep_vertices` false (a shard: it loads few parts but plans with all) keeps
+/// a VertexSummary instead of the vertices of each inline part read by the
+/// scanner, except moving parts (the plan sweeps their vertices).
 SceneSpec load_scene_file(const std::string& path,
-                          const std::optional<std::string>& units = std::nullopt, int threads = 1);
+                          const std::optional<std::string>& units = std::nullopt, int threads = 1,
+                          bool keep_vertices = true);
+
+/// Reads again, from the scene file, the vertices of every part of `s` that has
+/// a VertexSummary instead, and drops the summary. Throws SceneError, naming the
+/// part, when the file changed since it was read (the digest differs).
+void read_inline_vertices(SceneSpec& s);
+
+/// A part's points in scene units and place: its units, then its transform.
+Points place_points(const Points& p, const PartSpec& spec);
+
+/// The content hash of an inline vertex list: its doubles' bits.
+std::string vertex_digest(const Points& p);
 
 /// A plain part list: one mesh path per line, or "id<TAB>path"; blank lines and
 /// lines starting with '#' are skipped. Paths are relative to the working directory.

@@ -115,7 +115,8 @@ Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
 }
 
 /// `scanned`, when given, is the part's vertex list already read by
-/// scan_vertex_array (its "vertices" value in `j` is then a placeholder).
+/// scan_vertex_array (its "vertices" value in `j` is then a placeholder); when
+/// it holds nothing, the caller sets the vertices (or their VertexSummary).
 PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
               const std::string& scene_units, std::optional<Points>* scanned) {
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
@@ -132,9 +133,10 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     const std::filesystem::path m = string(c, j["mesh"], at + ".mesh");
     p.mesh =
         (m.is_absolute() || base_dir.empty() ? m : std::filesystem::path(base_dir) / m).string();
+  } else if (scanned) {
+    if (*scanned) p.vertices = std::move(*scanned);
   } else {
-    p.vertices =
-        scanned && *scanned ? std::move(*scanned) : vertex_list(c, j["vertices"], at + ".vertices");
+    p.vertices = vertex_list(c, j["vertices"], at + ".vertices");
   }
   if (j.contains("units")) {
     p.to_scene_units = *unit_in_mm(unit(c, j["units"], at + ".units")) / *unit_in_mm(scene_units);
@@ -361,21 +363,44 @@ PartSpec scene_part(const Ctx& c, const json& j, size_t k, const std::string& ba
   return p;
 }
 
-/// Part element [b, e) of the text. Its inline vertex list, when plain, is read
-/// by scan_vertex_array and the rest of the element by the general parser with
-/// `null` in its place (the general parse of 3 numbers per vertex was most of
-/// a large scene's load: docs/performance.md).
+/// Part element [b, e) of the text, `offset` bytes into the file. Its inline
+/// vertex list, when plain, is read by scan_vertex_array and the rest of the
+/// element by the general parser with `null` in its place (the general parse
+/// of 3 numbers per vertex was most of a large scene's load:
+/// docs/performance.md). Without `keep_vertices`, the list of a part that does
+/// not move is scanned into a reused buffer and only its VertexSummary kept.
 PartSpec parse_part_element(const Ctx& c, const char* b, const char* e, size_t k,
-                            const std::string& base_dir, const SceneSpec& s) {
+                            const std::string& base_dir, const SceneSpec& s, size_t offset,
+                            bool keep_vertices) {
   const std::string_view element(b, static_cast<size_t>(e - b));
-  if (const auto span = top_level_array(element, "vertices")) {
-    std::optional<Points> scanned =
-        scan_vertex_array(element.substr(span->begin, span->end - span->begin));
-    if (scanned) {
+  thread_local std::vector<double> xyz;
+  const auto span = read_top_level_array(element, "vertices", [](std::string_view from) {
+    return scan_vertex_prefix(from, xyz);  // the key found and the list read in one pass
+  });
+  if (span) {
+    const std::string_view list = element.substr(span->begin, span->end - span->begin);
+    {
       std::string rest;
-      rest.reserve(element.size() - (span->end - span->begin) + 4);
+      rest.reserve(element.size() - list.size() + 4);
       rest.append(element.substr(0, span->begin)).append("null").append(element.substr(span->end));
-      return scene_part(c, parse_json_strict(rest), k, base_dir, s, &scanned);
+      std::optional<Points> none;
+      PartSpec p = scene_part(c, parse_json_strict(rest), k, base_dir, s, &none);
+      const Eigen::Map<const Points> list_xyz(xyz.data(), 3,
+                                              static_cast<Eigen::Index>(xyz.size() / 3));
+      if (keep_vertices || p.motion) {
+        p.vertices = Points(list_xyz);
+      } else {
+        const Points v = list_xyz;  // freed at once: its memory is reused by the next part
+        VertexSummary sum;
+        sum.count = v.cols();
+        const Points placed = place_points(v, p);
+        if (placed.allFinite()) sum.placed_box = Aabb::of(placed);
+        sum.digest = vertex_digest(v);
+        sum.offset = offset + span->begin;
+        sum.length = list.size();
+        p.vertex_summary = std::move(sum);
+      }
+      return p;
     }
   }
   return scene_part(c, parse_json_strict(b, e), k, base_dir, s);
@@ -386,7 +411,8 @@ PartSpec parse_part_element(const Ctx& c, const char* b, const char* e, size_t k
 /// and reports the error with the right line and column.
 std::optional<SceneSpec> parse_in_slices(std::string_view text, const Ctx& c,
                                          const std::string& base_dir,
-                                         const std::optional<std::string>& units, int threads) {
+                                         const std::optional<std::string>& units, int threads,
+                                         bool keep_vertices) {
   const auto span = top_level_array(text, "parts");
   if (!span || span->elements.size() < 2) return std::nullopt;
   try {
@@ -397,7 +423,8 @@ std::optional<SceneSpec> parse_in_slices(std::string_view text, const Ctx& c,
     s.parts.resize(span->elements.size());
     parallel_for(s.parts.size(), threads, [&](size_t k) {
       const auto [b, e] = span->elements[k];
-      s.parts[k] = parse_part_element(c, text.data() + b, text.data() + e, k, base_dir, s);
+      s.parts[k] =
+          parse_part_element(c, text.data() + b, text.data() + e, k, base_dir, s, b, keep_vertices);
     });
     return s;
   } catch (const std::exception&) {
@@ -407,13 +434,24 @@ std::optional<SceneSpec> parse_in_slices(std::string_view text, const Ctx& c,
 
 }  // namespace
 
-SceneSpec parse_scene_json(std::string_view text, const std::string& path,
+namespace {
+
+SceneSpec parse_scene_text(std::string_view text, const std::string& path,
                            const std::string& base_dir, const std::optional<std::string>& units,
-                           int threads) {
-  std::optional<SceneSpec> s = parse_in_slices(text, Ctx{path}, base_dir, units, threads);
+                           int threads, bool keep_vertices) {
+  std::optional<SceneSpec> s =
+      parse_in_slices(text, Ctx{path}, base_dir, units, threads, keep_vertices);
   if (!s) return parse_scene_json_whole(text, path, base_dir, units);
   validate_scene(*s);
   return std::move(*s);
+}
+
+}  // namespace
+
+SceneSpec parse_scene_json(std::string_view text, const std::string& path,
+                           const std::string& base_dir, const std::optional<std::string>& units,
+                           int threads) {
+  return parse_scene_text(text, path, base_dir, units, threads, true);
 }
 
 SceneSpec parse_scene_json_whole(std::string_view text, const std::string& path,
@@ -458,6 +496,8 @@ class SceneText {
   SceneText(const SceneText&) = delete;
   SceneText& operator=(const SceneText&) = delete;
   std::string_view text() const { return view_; }
+  /// Read whole from a regular file: its bytes can be read again by offset.
+  bool rereadable() const { return buffer_ != nullptr; }
 
  private:
   /// False (the stream reads it instead) when the file cannot be opened or read this way.
@@ -503,10 +543,11 @@ class SceneText {
 }  // namespace
 
 SceneSpec load_scene_file(const std::string& path, const std::optional<std::string>& units,
-                          int threads) {
+                          int threads, bool keep_vertices) {
   const SceneText file(path);
   const std::string base = std::filesystem::path(path).parent_path().string();
-  return parse_scene_json(file.text(), path, base, units, threads);
+  return parse_scene_text(file.text(), path, base, units, threads,
+                          keep_vertices || !file.rereadable());
 }
 
 void validate_scene(const SceneSpec& s) {

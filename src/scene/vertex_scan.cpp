@@ -60,26 +60,46 @@ struct Cursor {
 
 }  // namespace
 
-std::optional<Points> scan_vertex_array(std::string_view text) {
+namespace {
+
+/// Reads the list from c.p on; false on anything but a plain list.
+bool scan_list(Cursor& c, std::vector<double>& xyz) {
+  xyz.clear();
+  if (!c.take('[')) return false;
+  while (true) {
+    if (!c.take('[')) return false;
+    for (int d = 0; d < 3; ++d) {
+      double v;
+      if ((d > 0 && !c.take(',')) || !c.number(v)) return false;
+      xyz.push_back(v);
+    }
+    if (!c.take(']')) return false;
+    if (c.take(']')) return true;
+    if (!c.take(',')) return false;
+  }
+}
+
+}  // namespace
+
+bool scan_vertex_array(std::string_view text, std::vector<double>& xyz) {
   Cursor c{text.data(), text.data() + text.size()};
+  if (!scan_list(c, xyz)) return false;
+  c.skip_space();
+  return c.p == c.end;
+}
+
+std::size_t scan_vertex_prefix(std::string_view text, std::vector<double>& xyz) {
+  if (text.empty() || text[0] != '[') return 0;
+  Cursor c{text.data(), text.data() + text.size()};
+  if (!scan_list(c, xyz)) return 0;
+  return static_cast<std::size_t>(c.p - text.data());
+}
+
+std::optional<Points> scan_vertex_array(std::string_view text) {
   // One buffer per thread, kept between parts: a fresh one per part was
   // allocated and faulted in again each time.
   thread_local std::vector<double> xyz;
-  xyz.clear();
-  if (!c.take('[')) return std::nullopt;
-  while (true) {
-    if (!c.take('[')) return std::nullopt;
-    for (int d = 0; d < 3; ++d) {
-      double v;
-      if ((d > 0 && !c.take(',')) || !c.number(v)) return std::nullopt;
-      xyz.push_back(v);
-    }
-    if (!c.take(']')) return std::nullopt;
-    if (c.take(']')) break;
-    if (!c.take(',')) return std::nullopt;
-  }
-  c.skip_space();
-  if (c.p != c.end) return std::nullopt;
+  if (!scan_vertex_array(text, xyz)) return std::nullopt;
   // Points is column-major: x0 y0 z0 x1 … is its memory layout.
   return Points(Eigen::Map<const Points>(xyz.data(), 3, static_cast<Eigen::Index>(xyz.size() / 3)));
 }

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "geometry/types.h"
 
@@ -17,5 +18,14 @@ namespace pd {
 /// any syntax error: the caller then runs the general parser, which names the
 /// error (this scanner never reports one).
 std::optional<Points> scan_vertex_array(std::string_view text);
+
+/// The same into `xyz` (x0 y0 z0 x1 …, cleared first), allocating nothing
+/// once `xyz` has grown: for a reader that keeps only a summary of the list.
+/// False where scan_vertex_array gives std::nullopt.
+bool scan_vertex_array(std::string_view text, std::vector<double>& xyz);
+
+/// The same on the list at the start of `text` (no white space before it),
+/// whatever follows it: its length in bytes, or 0 where the above is false.
+std::size_t scan_vertex_prefix(std::string_view text, std::vector<double>& xyz);
 
 }  // namespace pd
