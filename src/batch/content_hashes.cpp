@@ -32,12 +32,14 @@ std::vector<std::string> part_content_hashes(const SceneSpec& scene,
   out.reserve(scene.parts.size());
   for (const PartSpec& p : scene.parts) {
     Hasher h;
-    h.add("pdcheck-part-v2");
+    h.add("pdcheck-part-v1");
     if (p.mesh) {
       const auto it = files.find(*p.mesh);
       h.add("mesh").add(it != files.end() ? it->second : file_content_hash(*p.mesh));
     } else {
-      // The list's own digest: a shard holds it without the list (VertexSummary).
+      // The list's own digest, which a shard holds without the list (VertexSummary).
+      // Mesh parts hash as before; an inline part's hash differs from the
+      // versions that hashed the bits themselves (--reuse then solves it again).
       h.add("inline").add(p.vertex_summary ? p.vertex_summary->digest : vertex_digest(*p.vertices));
     }
     h.add(p.to_scene_units);
