@@ -40,7 +40,10 @@ std::vector<std::string> part_content_hashes(const SceneSpec& scene,
       // The list's own digest, which a shard holds without the list (VertexSummary).
       // Mesh parts hash as before; an inline part's hash differs from the
       // versions that hashed the bits themselves (--reuse then solves it again).
-      h.add("inline").add(p.vertex_summary ? p.vertex_summary->digest : vertex_digest(*p.vertices));
+      if (p.vertex_summary)
+        h.add("inline").add(std::string_view(p.vertex_summary->digest.data(), 32));
+      else
+        h.add("inline").add(vertex_digest(*p.vertices));
     }
     h.add(p.to_scene_units);
     for (int i = 0; i < 16; ++i) h.add(p.transform(i / 4, i % 4));

@@ -60,7 +60,7 @@ void read_inline_vertices(SceneSpec& s) {
                       scan_vertex_array(text, xyz) && long(xyz.size()) == 3 * sum.count;
     Points v;
     if (same) v = Eigen::Map<const Points>(xyz.data(), 3, static_cast<Eigen::Index>(sum.count));
-    if (!same || vertex_digest(v) != sum.digest)
+    if (!same || vertex_digest(v) != std::string_view(sum.digest.data(), sum.digest.size()))
       throw SceneError(p.where +
                        ": vertices: the scene file changed while pdcheck read it (run again)");
     p.vertices = std::move(v);

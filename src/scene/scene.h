@@ -2,6 +2,7 @@
 // Format: docs/scene-format.md (schema: docs/scene.schema.json).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -38,7 +39,7 @@ inline constexpr const char* kPiecesNames = "auto, hull, meshes, decompose";
 struct VertexSummary {
   long count = 0;
   std::optional<Aabb> placed_box;      ///< of place_points(list); nullopt: not all finite
-  std::string digest;                  ///< content_hash of the list's doubles (vertex_digest)
+  std::array<char, 32> digest{};       ///< vertex_digest of the list, held in place (no allocation)
   std::size_t offset = 0, length = 0;  ///< the list's bytes in the scene file
 };
 

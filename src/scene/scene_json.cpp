@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <filesystem>
@@ -395,7 +396,8 @@ PartSpec parse_part_element(const Ctx& c, const char* b, const char* e, size_t k
         sum.count = v.cols();
         const Points placed = place_points(v, p);
         if (placed.allFinite()) sum.placed_box = Aabb::of(placed);
-        sum.digest = vertex_digest(v);
+        const std::string digest = vertex_digest(v);
+        std::copy(digest.begin(), digest.end(), sum.digest.begin());
         sum.offset = offset + span->begin;
         sum.length = list.size();
         p.vertex_summary = std::move(sum);
