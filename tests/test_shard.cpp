@@ -212,6 +212,118 @@ TEST(Shard, MergeExitCodeIsTheRunsWithoutErrors) {
   EXPECT_EQ(run("merge" + joined(shards) + " -q --fail-on none", "").code, 0);
 }
 
+namespace {
+
+// Moves part `id` of a scene document by dx along x.
+void move_part(json& doc, const std::string& id, double dx) {
+  for (auto& p : doc["parts"])
+    if (p["id"] == id)
+      for (auto& v : p["vertices"]) v[0] = v[0].get<double>() + dx;
+}
+
+// The data an HTML page shows (its JSON island), without the run's timings.
+json page_data(const std::string& path) {
+  const std::string page = read_text(path);
+  const std::string open = "<script id=\"pdcheck-data\" type=\"application/json\">";
+  const size_t at = page.find(open);
+  if (at == std::string::npos) return nullptr;
+  json d = json::parse(page.substr(at + open.size(), page.find("</script>", at) - at - open.size()));
+  d.erase("seconds");
+  d.erase("stage_seconds");
+  return d;
+}
+
+// JUnit without its time attributes.
+std::string without_times(std::string xml) {
+  for (size_t at = xml.find(" time=\""); at != std::string::npos; at = xml.find(" time=\"", at)) {
+    const size_t end = xml.find('"', at + 7);
+    xml.erase(at, end + 1 - at);
+  }
+  return xml;
+}
+
+}  // namespace
+
+// pdcheck merge writes what the run writes (docs/scale-out.md): the review of a
+// baseline and suppressions in the report, the exit code under each bar, JUnit,
+// SARIF, a starting suppressions file and the HTML page.
+TEST(Shard, MergeWritesTheRunsCiOutputs) {
+  const std::string s = scene("shard_ci.json", 0.0, 7);
+  json doc = read_json(s);
+  auto& parts = doc["parts"];
+  parts.erase(
+      std::remove_if(parts.begin(), parts.end(),
+                     [](const json& p) { return p["id"] == "unreadable" || p["id"] == "nanpart"; }),
+      parts.end());
+  std::ofstream(s) << doc.dump();
+  // Last week's assembly: g0 deeper (updated now), g1 apart (its finding new
+  // now), g6 overlapping (absent now: culled).
+  json old = doc;
+  move_part(old, "g0b", -0.5);
+  move_part(old, "g1b", 1.0);
+  move_part(old, "g6b", -6.0);
+  const std::string old_scene = write_temp("shard_ci_old.json", old.dump());
+  const std::string baseline = tmp("ci_baseline.json"), written = tmp("ci_written.json");
+  ASSERT_EQ(
+      run(old_scene + " -q -o " + baseline + " --write-suppressions " + written, "").code, 1);
+  // Reviewed: every finding of last week accepted (g6's entry goes stale now).
+  json sup = read_json(written);
+  ASSERT_GE(sup["suppressions"].size(), 2u) << sup.dump();
+  for (auto& e : sup["suppressions"]) e["reason"] = "accepted in review";
+  const std::string suppressions = write_temp("shard_ci_sup.json", sup.dump());
+
+  const std::string ci = " --baseline " + baseline + " --suppressions " + suppressions;
+  auto outputs = [&](const std::string& tag) {
+    return " --junit " + tmp(tag + ".xml") + " --sarif " + tmp(tag + ".sarif") + " --html " +
+           tmp(tag + ".html") + " --write-suppressions " + tmp(tag + "_sup.json");
+  };
+  const CliResult f = run(s + " -o " + tmp("ci_full.json") + ci + outputs("ci_full"), "");
+  const auto shards = run_shards(s, 3, "ci", "", "");
+  const CliResult m =
+      run("merge" + joined(shards) + " -o " + tmp("ci_merged.json") + ci + outputs("ci_merged"), "");
+  ASSERT_EQ(f.code, 1) << f.err;  // the stale g6 entry
+  EXPECT_EQ(m.code, f.code) << m.err;
+  const json want = read_json(tmp("ci_full.json"));
+  expect_same_report(read_json(tmp("ci_merged.json")), want, "3 shards merged with a review");
+  // The review has all it is meant to show.
+  std::set<std::string> states;
+  for (const auto& p : want["pairs"])
+    if (p.contains("baseline_state")) states.insert(p["baseline_state"].get<std::string>());
+  for (const char* st : {"new", "unchanged", "updated"})
+    EXPECT_TRUE(states.count(st)) << st << " missing from " << want["pairs"].dump();
+  EXPECT_NE(want.dump().find("\"absent\""), std::string::npos);
+  EXPECT_NE(want.dump().find("unmatched"), std::string::npos);
+  // The same review on stderr (its lines before the summary).
+  const auto review_part = [](const std::string& err) { return err.substr(0, err.rfind("pdcheck: ")); };
+  EXPECT_EQ(review_part(m.err), review_part(f.err));
+
+  EXPECT_EQ(without_times(read_text(tmp("ci_merged.xml"))),
+            without_times(read_text(tmp("ci_full.xml"))));
+  EXPECT_EQ(read_json(tmp("ci_merged.sarif")), read_json(tmp("ci_full.sarif")));
+  EXPECT_EQ(read_text(tmp("ci_merged_sup.json")), read_text(tmp("ci_full_sup.json")));
+  const json page = page_data(tmp("ci_merged.html"));
+  ASSERT_TRUE(page.is_object()) << "no page written by the merge";
+  EXPECT_FALSE(page["findings"].empty());
+  EXPECT_EQ(page, page_data(tmp("ci_full.html")));
+
+  // --fail-on new: only g1's finding is new; the bar holds for both.
+  for (const char* bar : {"new", "none"}) {
+    const std::string flags = ci + " --allow-stale-suppressions --fail-on " + bar;
+    EXPECT_EQ(run("merge" + joined(shards) + " -q" + flags, "").code,
+              run(s + " -q" + flags, "").code)
+        << bar;
+  }
+  // --fail-on new without a baseline is refused, as for a run.
+  const CliResult nb = run("merge" + joined(shards) + " -q --fail-on new", "");
+  EXPECT_EQ(nb.code, 2);
+  EXPECT_NE(nb.err.find("--fail-on new needs --baseline"), std::string::npos) << nb.err;
+  // A bad output path fails before anything is written.
+  const CliResult bad =
+      run("merge" + joined(shards) + " -q -o " + tmp("ci_never.json") + " --junit /nonexistent/x.xml", "");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_FALSE(std::ifstream(tmp("ci_never.json")).good());
+}
+
 TEST(Shard, MergeRefusesMissingDuplicatedAndForeignShards) {
   const std::string s = scene("shard_refuse.json");
   const auto shards = run_shards(s, 3, "ref");

@@ -19,10 +19,12 @@
 #include "printable.h"
 #include "report/fingerprint.h"
 #include "report/html_from_report.h"
+#include "report/extra_outputs.h"
 #include "report/merge.h"
 #include "report/output_file.h"
 #include "report/prior_report.h"
 #include "report/report_json.h"
+#include "report/review_inputs.h"
 #include "report/review_json.h"
 #include "report/review_text.h"
 #include "report/write_html.h"
@@ -81,26 +83,99 @@ int html_command(const std::string& report, const std::string& page, int jobs, d
   return kExitUsage;
 }
 
-// pdcheck merge: shard reports into one run's report (docs/scale-out.md).
+// The CI options of a run and of a merge (docs/ci.md).
+struct CiOptions {
+  pd::ReviewArgs review;
+  std::string write_suppressions, junit, sarif, html;
+};
+
+void add_ci_options(CLI::App& app, CiOptions& o) {
+  std::vector<std::string> bars;
+  std::string bar_help = "which findings make the exit code 1:";
+  for (const auto& f : pd::kFailOnNames) {
+    bars.push_back(f.name);
+    bar_help += std::string(" ") + f.name + " (" + f.meaning + ");";
+  }
+  bar_help += " default: interference, or clearance when the scene checks clearance";
+  app.add_option("--fail-on", o.review.fail_on, bar_help)->check(CLI::IsMember(bars));
+  app.add_option("--baseline", o.review.baseline,
+                 "a previous JSON report: mark each finding new, unchanged or updated and list "
+                 "the baseline's findings that are absent or unknown now");
+  app.add_option("--suppressions", o.review.suppressions,
+                 "reviewed suppressions (JSON, docs/ci.md): listed findings are reported as "
+                 "suppressed and do not fail the run");
+  app.add_flag("--allow-stale-suppressions", o.review.allow_stale,
+               "a suppression that matched nothing or expired does not fail the run");
+  app.add_option("--write-suppressions", o.write_suppressions,
+                 "write a starting suppressions file for this run's findings (reasons to fill in)");
+  app.add_option("--junit", o.junit, "also write JUnit XML to this file (atomically)");
+  app.add_option("--sarif", o.sarif, "also write SARIF 2.1.0 to this file (atomically)");
+  app.add_option("--html", o.html,
+                 "also write a self-contained HTML page with a 3D view of every finding "
+                 "(atomically; docs/report-format.md)");
+}
+
+pd::ExtraOutputPaths extra_output_paths(const CLI::App& app, const CiOptions& o) {
+  pd::ExtraOutputPaths p;
+  if (app.count("--junit")) p.junit = o.junit;
+  if (app.count("--sarif")) p.sarif = o.sarif;
+  if (app.count("--html")) p.html = o.html;
+  if (app.count("--write-suppressions")) p.write_suppressions = o.write_suppressions;
+  return p;
+}
+
+// The review on stderr, one escaped line at a time (ids in it).
+void say_review(const pd::ReportInput& report) {
+  std::istringstream review_text(pd::review_lines(report));
+  for (std::string line; std::getline(review_text, line);) std::cerr << pd::printable(line) << "\n";
+}
+
+// pdcheck merge: shard reports into the report one run writes, with the run's
+// CI outputs (docs/scale-out.md). Exit code as the run's; 3 also when --html
+// could not read a part's geometry again (named on stderr and on the page).
 int run_merge(const std::vector<std::string>& inputs, const std::string& output, bool to_file,
-              const std::string& fail_on, bool quiet) {
+              const CiOptions& ci, const pd::ExtraOutputPaths& extra_paths, int jobs,
+              double load_timeout, bool quiet) {
   try {
     std::optional<pd::OutputFile> out_file;
     if (to_file) out_file = pd::check_output_file("-o", output);
+    const pd::ExtraOutputs extra = pd::check_extra_outputs(extra_paths);
     std::vector<pd::ShardReport> shards;
     for (const auto& path : inputs) shards.push_back(pd::read_shard_report(path));
-    const pd::Merged m = pd::merge_shard_reports(
-        shards, fail_on.empty() ? std::nullopt : pd::parse_fail_on(fail_on));
+    pd::ReviewInputs review;
+    // The tolerance of the `updated` rule is the shards' (merge_shard_reports).
+    pd::load_review_inputs(ci.review, 0.0, review);
+    const pd::Merged m = pd::merge_shard_reports(shards, review.options);
     const std::string text = m.doc.dump(2) + "\n";
     if (out_file)
       pd::write_output_file(*out_file, text);
     else
       pd::write_stdout(text);
-    if (!quiet) std::cerr << m.summary_line << "\n";
-    return m.exit_code;
+    const pd::ReportInput report{m.context, m.run, m.review, m.review_options};
+    std::vector<std::string> page_problems;
+    pd::write_extra_outputs(extra, report, [&] {
+      const pd::SavedReportPage page = pd::html_from_report_document(
+          nlohmann::json::parse(text), to_file ? output : inputs.front(), jobs, load_timeout);
+      page_problems = page.problems;
+      return page.html;
+    });
+    for (const auto& p : page_problems) say("warning", p);
+    if (!quiet) {
+      say_review(report);
+      std::cerr << m.summary_line << "\n";
+    }
+    return page_problems.empty() ? m.exit_code : 3;
   } catch (const pd::MergeError& e) {
     say("error", std::string("merge: ") + e.what());
+  } catch (const pd::ReportInputError& e) {
+    say("error", e.what());
+  } catch (const pd::ReviewArgsError& e) {
+    say("error", e.what());
+  } catch (const pd::SceneError& e) {  // --html: the shards' scene unreadable now
+    say("error", std::string("--html: ") + e.what());
   } catch (const pd::OutputError& e) {
+    say("error", e.what());
+  } catch (const pd::HtmlAssetError& e) {
     say("error", e.what());
   }
   return kExitUsage;
@@ -121,9 +196,7 @@ int main(int argc, char** argv) {
   int jobs = 0;
   std::uint64_t seed = 0;
   bool quiet = false;
-  std::string baseline_path, suppressions_path, write_suppressions, fail_on_arg, junit, sarif;
-  std::string html, html_report, html_page;
-  bool allow_stale = false;
+  std::string html_report, html_page;
   app.add_option("scene", scene_arg,
                  "scene JSON file, or - for standard input (a scene JSON or "
                  "a part list: one mesh path per line, or id<TAB>path)");
@@ -170,29 +243,8 @@ int main(int argc, char** argv) {
                  "MB one mesh loader process may allocate before its file is reported as an "
                  "error (default: half the machine's memory shared among the loaders; 0: none)");
   app.add_flag("-q,--quiet", quiet, "no progress and no summary line on stderr");
-  std::vector<std::string> bars;
-  std::string bar_help = "which findings make the exit code 1:";
-  for (const auto& f : pd::kFailOnNames) {
-    bars.push_back(f.name);
-    bar_help += std::string(" ") + f.name + " (" + f.meaning + ");";
-  }
-  bar_help += " default: interference, or clearance when the scene checks clearance";
-  app.add_option("--fail-on", fail_on_arg, bar_help)->check(CLI::IsMember(bars));
-  app.add_option("--baseline", baseline_path,
-                 "a previous JSON report: mark each finding new, unchanged or updated and list "
-                 "the baseline's findings that are absent or unknown now");
-  app.add_option("--suppressions", suppressions_path,
-                 "reviewed suppressions (JSON, docs/ci.md): listed findings are reported as "
-                 "suppressed and do not fail the run");
-  app.add_flag("--allow-stale-suppressions", allow_stale,
-               "a suppression that matched nothing or expired does not fail the run");
-  app.add_option("--write-suppressions", write_suppressions,
-                 "write a starting suppressions file for this run's findings (reasons to fill in)");
-  app.add_option("--junit", junit, "also write JUnit XML to this file (atomically)");
-  app.add_option("--sarif", sarif, "also write SARIF 2.1.0 to this file (atomically)");
-  app.add_option("--html", html,
-                 "also write a self-contained HTML page with a 3D view of every finding "
-                 "(atomically; docs/report-format.md)");
+  CiOptions ci;
+  add_ci_options(app, ci);
   CLI::App* html_cmd = app.add_subcommand(
       "html",
       "write the HTML page of a saved JSON report, reading its scene's meshes again "
@@ -217,17 +269,15 @@ int main(int argc, char** argv) {
   CLI::App* merge_cmd = app.add_subcommand(
       "merge", "merge shard reports (--shard K/N) into the report one run writes");
   std::vector<std::string> merge_inputs;
-  std::string merge_output, merge_fail_on;
+  std::string merge_output;
   bool merge_quiet = false;
+  CiOptions merge_ci;
   merge_cmd->add_option("reports", merge_inputs, "the shard reports, 1..N, each once")->required();
   merge_cmd->add_option("-o,--output", merge_output,
                         "write the merged report to this file (atomically) instead of stdout");
-  std::vector<std::string> merge_bars;
-  for (const auto& f : pd::kFailOnNames)
-    if (f.value != pd::FailOn::kNew) merge_bars.push_back(f.name);
-  merge_cmd->add_option("--fail-on", merge_fail_on, "as for a run (new is not supported here)")
-      ->check(CLI::IsMember(merge_bars));
-  merge_cmd->add_flag("-q,--quiet", merge_quiet, "no summary line on stderr");
+  add_ci_options(*merge_cmd, merge_ci);
+  merge_cmd->add_flag("-q,--quiet", merge_quiet, "no review and no summary line on stderr");
+  merge_cmd->fallthrough();  // -j, --load-timeout (--html reads the meshes again)
   app.set_version_flag("--version", std::string("pdcheck ") + PDCHECK_VERSION);
   try {
     app.parse(argc, argv);
@@ -245,8 +295,11 @@ int main(int argc, char** argv) {
         jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
         load_timeout, quiet);
   if (merge_cmd->parsed())
-    return run_merge(merge_inputs, merge_output, merge_cmd->count("--output") > 0, merge_fail_on,
-                     merge_quiet);
+    return run_merge(
+        merge_inputs, merge_output, merge_cmd->count("--output") > 0, merge_ci,
+        extra_output_paths(*merge_cmd, merge_ci),
+        jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
+        load_timeout, merge_quiet || quiet);
   if (scene_arg.empty()) {
     say("error", "a scene is required (a scene JSON file, or - for standard input); see --help");
     return kExitUsage;
@@ -280,15 +333,11 @@ int main(int argc, char** argv) {
   }
   // Every output path is checked before the run: a bad one fails now, not
   // after hours of solving.
-  std::optional<pd::OutputFile> out_file, junit_file, sarif_file, suppressions_file, html_file;
+  std::optional<pd::OutputFile> out_file;
+  pd::ExtraOutputs extra;
   try {
     if (app.count("--output")) out_file = pd::check_output_file("-o", output);
-    if (app.count("--junit")) junit_file = pd::check_output_file("--junit", junit);
-    if (app.count("--sarif")) sarif_file = pd::check_output_file("--sarif", sarif);
-    if (app.count("--html")) html_file = pd::check_output_file("--html", html);
-    if (html_file) pd::check_html_assets();
-    if (app.count("--write-suppressions"))
-      suppressions_file = pd::check_output_file("--write-suppressions", write_suppressions);
+    extra = pd::check_extra_outputs(extra_output_paths(app, ci));
   } catch (const pd::OutputError& e) {
     say("error", e.what());
     return kExitOutput;
@@ -353,28 +402,19 @@ int main(int argc, char** argv) {
   }
 
   // The CI inputs are read before the run: a malformed file costs no solve.
-  std::optional<pd::Baseline> baseline;
-  std::optional<pd::Suppressions> suppressions;
   std::optional<pd::PriorResults> prior;
-  pd::ReviewOptions review_opt;
+  pd::ReviewInputs review_in;
+  pd::ReviewOptions& review_opt = review_in.options;
   try {
     if (!reuse_path.empty()) prior = pd::load_prior_report(reuse_path);
-    if (!baseline_path.empty()) baseline = pd::load_baseline(baseline_path);
-    if (!suppressions_path.empty()) suppressions = pd::load_suppressions(suppressions_path);
+    pd::load_review_inputs(ci.review, *scene.tolerance, review_in);
   } catch (const pd::ReportInputError& e) {
     say("error", e.what());
     return kExitUsage;
-  }
-  if (!fail_on_arg.empty()) review_opt.fail_on = pd::parse_fail_on(fail_on_arg);
-  if (review_opt.fail_on == pd::FailOn::kNew && !baseline) {
-    say("error", "--fail-on new needs --baseline (a previous report)");
+  } catch (const pd::ReviewArgsError& e) {
+    say("error", e.what());
     return kExitUsage;
   }
-  review_opt.baseline = baseline ? &*baseline : nullptr;
-  review_opt.suppressions = suppressions ? &*suppressions : nullptr;
-  review_opt.allow_stale = allow_stale;
-  review_opt.today = pd::utc_today();
-  review_opt.tolerance = *scene.tolerance;
   if (scene.pairs) {
     review_opt.listed.emplace();
     for (const auto& [a, b] : *scene.pairs) review_opt.listed->insert(pd::pair_fingerprint(a, b));
@@ -429,12 +469,7 @@ int main(int argc, char** argv) {
       pd::write_output_file(*out_file, text);
     else
       pd::write_stdout(text);
-    if (junit_file) pd::write_output_file(*junit_file, pd::render_junit(report));
-    if (sarif_file) pd::write_output_file(*sarif_file, pd::render_sarif(report));
-    if (html_file) pd::write_output_file(*html_file, pd::render_html(report));
-    if (suppressions_file)
-      pd::write_output_file(*suppressions_file,
-                            pd::suppressions_to_write(report, review_opt.today));
+    pd::write_extra_outputs(extra, report, [&] { return pd::render_html(report); });
   } catch (const pd::OutputError& e) {
     say("error", e.what());
     return kExitOutput;
@@ -448,9 +483,7 @@ int main(int argc, char** argv) {
     if (p.error) say("error", "part \"" + p.id + "\": " + *p.error);
   }
   if (!quiet) {
-    std::istringstream review_text(pd::review_lines(report));  // ids in it: escaped line by line
-    for (std::string line; std::getline(review_text, line);)
-      std::cerr << pd::printable(line) << "\n";
+    say_review(report);
     std::cerr << pd::summary_line(summary, result.seconds) << "\n";
     if (result.reused)
       std::cerr << "pdcheck: " << result.reused << " pair(s) reused from " << reuse_path << "\n";

@@ -68,7 +68,13 @@ SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_pat
 }  // namespace
 
 SavedReportPage html_from_report(const std::string& report_path, int threads, double load_timeout) {
-  const nlohmann::json raw = parse_json_input(read_input_file(report_path), report_path);
+  return html_from_report_document(parse_json_input(read_input_file(report_path), report_path),
+                                   report_path, threads, load_timeout);
+}
+
+SavedReportPage html_from_report_document(const nlohmann::json& raw,
+                                          const std::string& report_path, int threads,
+                                          double load_timeout) {
   try {
     return page_of(raw, report_path, threads, load_timeout);
   } catch (const nlohmann::json::exception& e) {  // a value of the wrong type

@@ -2,6 +2,7 @@
 // its geometry read again from the report's scene.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -25,5 +26,11 @@ struct SavedReportPage {
 /// costs only its own 3D view: it is listed in `problems` and on the page.
 SavedReportPage html_from_report(const std::string& report_path, int threads = 1,
                                  double load_timeout = kDefaultLoadTimeout);
+
+/// The same for a report held in memory (pdcheck merge --html): `report_path`
+/// stands for where it is saved, in messages and to find the scene beside it.
+SavedReportPage html_from_report_document(const nlohmann::json& report,
+                                          const std::string& report_path, int threads = 1,
+                                          double load_timeout = kDefaultLoadTimeout);
 
 }  // namespace pd

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "report/json_input.h"
+#include "report/fingerprint.h"
 #include "report/pair_from_json.h"
 #include "report/report_json.h"
 #include "report/review.h"
@@ -51,7 +52,7 @@ void same(const std::vector<ShardReport>& shards, const std::string& what,
 
 }  // namespace
 
-Merged merge_shard_reports(const std::vector<ShardReport>& shards, std::optional<FailOn> fail_on) {
+Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewOptions& review) {
   if (shards.empty()) throw MergeError("no shard reports given");
   try {
     same(shards, "the tool version", [](const json& d) { return d.at("tool").at("version"); });
@@ -155,12 +156,17 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, std::optional
                        *entries[k - 1].path + " and " + *entries[k].path);
 
   // The run as one run would have it: its counts, then its review.
-  RunResult run;
+  Merged out;
+  RunResult& run = out.run;
   run.simulated = first.at("simulated").get<std::vector<std::string>>();
   for (long k = 0; k < n; ++k) {
+    const json& j = parts[k];
     Part p;
-    p.id = parts[k].at("id").get<std::string>();
-    if (parts[k].contains("error")) p.error = parts[k]["error"].get<std::string>();
+    p.id = j.at("id").get<std::string>();
+    p.source = j.value("source", "");
+    p.vertex_count = j.value("vertices", 0L);
+    if (j.contains("warnings")) p.warnings = j["warnings"].get<std::vector<std::string>>();
+    if (j.contains("error")) p.error = j["error"].get<std::string>();
     run.parts.push_back(std::move(p));
   }
   for (const Entry& e : entries) {
@@ -175,17 +181,24 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, std::optional
   }
   Summary s = summarize(run);
   s.all_pairs = first["shard"]["pairs_total"].get<long>();
-  if (!first["shard"].value("listed", false)) {
+  const bool listed = first["shard"].value("listed", false);
+  if (!listed) {
     const long usable = n - s.part_errors;
     const long usable_pairs = usable * (usable - 1) / 2;
     s.unchecked = s.all_pairs - usable_pairs;
     s.culled = usable_pairs - s.candidates;
   }
-  ReviewOptions opt;
-  opt.fail_on = fail_on;
-  const Review review = review_run(run, opt, s.exit_code() == 3);
+  out.review_options = review;
+  out.review_options.tolerance = first.at("tolerance").get<double>();
+  if (listed) {
+    // A scene's pair list has no broad phase: its pairs of usable parts are
+    // exactly the pairs reported, which is what the review asks of the list.
+    out.review_options.listed.emplace();
+    for (const Entry& e : entries)
+      out.review_options.listed->insert(pair_fingerprint(run.parts[e.a].id, run.parts[e.b].id));
+  }
+  out.review = review_run(run, out.review_options, s.exit_code() == 3);
 
-  Merged out;
   out.doc = first;
   out.doc.erase("shard");
   out.doc["summary"] = summary_json(s);
@@ -197,18 +210,22 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, std::optional
     for (auto& [key, v] : stages.items())
       v = v.get<double>() + sh.doc["stage_seconds"].value(key, 0.0);
   }
+  run.seconds = seconds;
   out.doc["seconds"] = seconds;
   out.doc["stage_seconds"] = stages;
   out.doc["parts"] = json(parts);
   json pairs = json::array();
   for (size_t k = 0; k < entries.size(); ++k) {
     json p = *entries[k].pair;
-    add_pair_review(p, review.pairs[k]);
+    add_pair_review(p, out.review.pairs[k]);
     pairs.push_back(std::move(p));
   }
   out.doc["pairs"] = std::move(pairs);
-  add_run_review(out.doc, out.doc["summary"], review, opt);
-  out.exit_code = review.exit_code;
+  add_run_review(out.doc, out.doc["summary"], out.review, out.review_options);
+  out.context.scene_path = first.at("scene").get<std::string>();
+  out.context.units = first.at("units").get<std::string>();
+  out.context.tolerance = out.review_options.tolerance;
+  out.exit_code = out.review.exit_code;
   out.summary_line = summary_line(s, seconds);
   return out;
 }

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "report/fail_on.h"
+#include "batch/run.h"
+#include "report/report_json.h"
+#include "report/review.h"
 
 namespace pd {
 
@@ -27,16 +29,24 @@ struct ShardReport {
 /// Reads a shard report (throws MergeError naming the file).
 ShardReport read_shard_report(const std::string& path);
 
+/// The run the shards make together, as one run would have it: its report and
+/// what the other writers (JUnit, SARIF, suppressions; writer.h) read.
 struct Merged {
   nlohmann::ordered_json doc;  ///< the report, as docs/report-format.md
   int exit_code = 0;           ///< as one run's: 3 incomplete, 1 a finding at the bar, else 0
   std::string summary_line;    ///< for stderr
+  ReportContext context;       ///< scene, units, tolerance
+  RunResult run;  ///< parts (id, source, vertices, warnings, error; no geometry) and pairs
+  ReviewOptions review_options;  ///< the caller's, with the report's tolerance and pair list
+  Review review;
 };
 
 /// Shards 1..N of one scene, settings and tool version, each exactly once, in any
 /// order. The merged report equals the unsharded run's pair for pair; `seconds`
-/// and `stage_seconds` are the shards' sums. `fail_on`: as --fail-on (not `new`).
+/// and `stage_seconds` are the shards' sums. `review`: as for a run (--baseline,
+/// --suppressions, --fail-on; review_inputs.h); its baseline and suppressions
+/// must outlive the result.
 Merged merge_shard_reports(const std::vector<ShardReport>& shards,
-                           std::optional<FailOn> fail_on = std::nullopt);
+                           const ReviewOptions& review = {});
 
 }  // namespace pd
