@@ -227,7 +227,8 @@ json page_data(const std::string& path) {
   const std::string open = "<script id=\"pdcheck-data\" type=\"application/json\">";
   const size_t at = page.find(open);
   if (at == std::string::npos) return nullptr;
-  json d = json::parse(page.substr(at + open.size(), page.find("</script>", at) - at - open.size()));
+  json d =
+      json::parse(page.substr(at + open.size(), page.find("</script>", at) - at - open.size()));
   d.erase("seconds");
   d.erase("stage_seconds");
   return d;
@@ -264,8 +265,7 @@ TEST(Shard, MergeWritesTheRunsCiOutputs) {
   move_part(old, "g6b", -6.0);
   const std::string old_scene = write_temp("shard_ci_old.json", old.dump());
   const std::string baseline = tmp("ci_baseline.json"), written = tmp("ci_written.json");
-  ASSERT_EQ(
-      run(old_scene + " -q -o " + baseline + " --write-suppressions " + written, "").code, 1);
+  ASSERT_EQ(run(old_scene + " -q -o " + baseline + " --write-suppressions " + written, "").code, 1);
   // Reviewed: every finding of last week accepted (g6's entry goes stale now).
   json sup = read_json(written);
   ASSERT_GE(sup["suppressions"].size(), 2u) << sup.dump();
@@ -279,8 +279,8 @@ TEST(Shard, MergeWritesTheRunsCiOutputs) {
   };
   const CliResult f = run(s + " -o " + tmp("ci_full.json") + ci + outputs("ci_full"), "");
   const auto shards = run_shards(s, 3, "ci", "", "");
-  const CliResult m =
-      run("merge" + joined(shards) + " -o " + tmp("ci_merged.json") + ci + outputs("ci_merged"), "");
+  const CliResult m = run(
+      "merge" + joined(shards) + " -o " + tmp("ci_merged.json") + ci + outputs("ci_merged"), "");
   ASSERT_EQ(f.code, 1) << f.err;  // the stale g6 entry
   EXPECT_EQ(m.code, f.code) << m.err;
   const json want = read_json(tmp("ci_full.json"));
@@ -294,7 +294,9 @@ TEST(Shard, MergeWritesTheRunsCiOutputs) {
   EXPECT_NE(want.dump().find("\"absent\""), std::string::npos);
   EXPECT_NE(want.dump().find("unmatched"), std::string::npos);
   // The same review on stderr (its lines before the summary).
-  const auto review_part = [](const std::string& err) { return err.substr(0, err.rfind("pdcheck: ")); };
+  const auto review_part = [](const std::string& err) {
+    return err.substr(0, err.rfind("pdcheck: "));
+  };
   EXPECT_EQ(review_part(m.err), review_part(f.err));
 
   EXPECT_EQ(without_times(read_text(tmp("ci_merged.xml"))),
@@ -318,8 +320,9 @@ TEST(Shard, MergeWritesTheRunsCiOutputs) {
   EXPECT_EQ(nb.code, 2);
   EXPECT_NE(nb.err.find("--fail-on new needs --baseline"), std::string::npos) << nb.err;
   // A bad output path fails before anything is written.
-  const CliResult bad =
-      run("merge" + joined(shards) + " -q -o " + tmp("ci_never.json") + " --junit /nonexistent/x.xml", "");
+  const CliResult bad = run(
+      "merge" + joined(shards) + " -q -o " + tmp("ci_never.json") + " --junit /nonexistent/x.xml",
+      "");
   EXPECT_EQ(bad.code, 2);
   EXPECT_FALSE(std::ifstream(tmp("ci_never.json")).good());
 }

@@ -13,13 +13,13 @@
 #include <optional>
 #include <sstream>
 
-#include "cache_file.h"
 #include "batch/run.h"
 #include "batch/shard.h"
+#include "cache_file.h"
 #include "printable.h"
+#include "report/extra_outputs.h"
 #include "report/fingerprint.h"
 #include "report/html_from_report.h"
-#include "report/extra_outputs.h"
 #include "report/merge.h"
 #include "report/output_file.h"
 #include "report/prior_report.h"

@@ -72,9 +72,8 @@ SavedReportPage html_from_report(const std::string& report_path, int threads, do
                                    report_path, threads, load_timeout);
 }
 
-SavedReportPage html_from_report_document(const nlohmann::json& raw,
-                                          const std::string& report_path, int threads,
-                                          double load_timeout) {
+SavedReportPage html_from_report_document(const nlohmann::json& raw, const std::string& report_path,
+                                          int threads, double load_timeout) {
   try {
     return page_of(raw, report_path, threads, load_timeout);
   } catch (const nlohmann::json::exception& e) {  // a value of the wrong type

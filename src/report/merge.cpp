@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <map>
 
-#include "report/json_input.h"
 #include "report/fingerprint.h"
+#include "report/json_input.h"
 #include "report/pair_from_json.h"
 #include "report/report_json.h"
 #include "report/review.h"
