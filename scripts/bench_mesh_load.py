@@ -3,6 +3,7 @@
 
 usage: bench_mesh_load.py OUT_DIR PDCHECK [PDCHECK ...] [--files 400] [--triangles 2000]
                           [--format stl|ply] [--runs 5] [--jobs 2] [--scene SCENE.json]
+                          [--pieces MODE] [--cache-modes]
 
 Writes OUT_DIR/scene.json: --files distinct binary STL (or PLY) files (UV
 spheres of about --triangles triangles each, jittered so no two are equal) on a
@@ -10,6 +11,9 @@ lattice, touching nobody; or times the given --scene instead. Each binary is
 run --runs times in turn (interleaved, so load on the machine hits all alike)
 with --method exact and --quiet; the median of the report's
 stage_seconds.parts per binary, and the ratio to the first, are printed.
+--pieces passes a pieces mode. --cache-modes times each binary three ways per
+run, interleaved: --no-cache, an empty --cache directory (cold: computes and
+stores) and a --cache directory filled once before the runs (warm).
 """
 import argparse
 import json
@@ -69,6 +73,8 @@ def main():
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--scene")
+    ap.add_argument("--pieces")
+    ap.add_argument("--cache-modes", action="store_true")
     a = ap.parse_args()
     scene = a.scene
     if not scene:
@@ -85,20 +91,36 @@ def main():
         scene = os.path.join(a.out, "scene.json")
         with open(scene, "w") as f:
             json.dump({"tolerance": 0.01, "parts": parts}, f)
-    times = {b: [] for b in a.binaries}
-    for _ in range(a.runs):
-        for b in a.binaries:
-            r = subprocess.run([b, scene, "--quiet", "--method", "exact", "-j", str(a.jobs)],
-                               capture_output=True, text=True)
-            if r.returncode not in (0, 1, 3):
-                sys.exit("%s failed (%d): %s" % (b, r.returncode, r.stderr))
-            times[b].append(json.loads(r.stdout)["stage_seconds"]["parts"])
-    base = statistics.median(times[a.binaries[0]])
-    for b in a.binaries:
-        m = statistics.median(times[b])
-        print("%-50s parts stage median %.3f s (runs: %s), ratio %.2f" %
-              (b, m, " ".join("%.3f" % t for t in times[b]), m / base))
+    extra = ["--pieces", a.pieces] if a.pieces else []
+    cache_root = os.path.join(a.out, "caches")
+    os.makedirs(cache_root, exist_ok=True)
 
+    def parts_seconds(b, args):
+        r = subprocess.run([b, scene, "--quiet", "--method", "exact", "-j", str(a.jobs)] + extra +
+                           args, capture_output=True, text=True)
+        if r.returncode not in (0, 1, 3):
+            sys.exit("%s failed (%d): %s" % (b, r.returncode, r.stderr))
+        return json.loads(r.stdout)["stage_seconds"]["parts"]
+
+    modes = {"": lambda b, k: ["--no-cache"] if a.cache_modes else []}
+    if a.cache_modes:
+        modes = {"no-cache": modes[""],
+                 "cold": lambda b, k: ["--cache", os.path.join(
+                     cache_root, "cold-%d-%d" % (a.binaries.index(b), k))],
+                 "warm": lambda b, k: ["--cache", os.path.join(
+                     cache_root, "warm-%d" % a.binaries.index(b))]}
+        for b in a.binaries:
+            parts_seconds(b, modes["warm"](b, 0))  # fills the warm cache
+    times = {(b, m): [] for b in a.binaries for m in modes}
+    for k in range(a.runs):
+        for b in a.binaries:
+            for m, args in modes.items():
+                times[(b, m)].append(parts_seconds(b, args(b, k)))
+    base = statistics.median(times[(a.binaries[0], next(iter(modes)))])
+    for (b, m), t in times.items():
+        med = statistics.median(t)
+        print("%-40s %-8s parts stage median %.3f s (runs: %s), ratio %.2f" %
+              (b, m, med, " ".join("%.3f" % x for x in t), med / base))
 
 if __name__ == "__main__":
     main()

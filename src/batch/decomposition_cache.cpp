@@ -1,8 +1,8 @@
 #include "batch/decomposition_cache.h"
 
-#include <cstring>
 #include <sstream>
 
+#include "geometry/point_bytes.h"
 #include "hash.h"
 #include "tolerances.h"
 
@@ -12,17 +12,6 @@ namespace {
 
 // 3: the entry's fields moved into the checked body (cache_file.h).
 constexpr CacheKind kKind{"pdcheck-decomposition-3", ".pdd"};
-
-// Lossless and compact: the doubles as their bytes.
-std::string piece_bytes(const std::vector<Points>& pieces) {
-  std::string out;
-  for (const Points& p : pieces) {
-    const long n = p.cols();
-    out.append(reinterpret_cast<const char*>(&n), sizeof n);
-    out.append(reinterpret_cast<const char*>(p.data()), sizeof(double) * 3 * n);
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -51,19 +40,9 @@ std::optional<StoredDecomposition> read_cached_decomposition(const std::string& 
   if (!(hs >> complete >> d.seconds >> count) || count < 0) return std::nullopt;
   d.complete = complete != 0;
   d.note = e.substr(eol1 + 1, eol2 - eol1 - 1);
-  size_t off = eol2 + 1;
-  for (long k = 0; k < count; ++k) {
-    long n = 0;
-    if (off + sizeof n > e.size()) return std::nullopt;
-    std::memcpy(&n, e.data() + off, sizeof n);
-    off += sizeof n;
-    if (n < 0 || off + sizeof(double) * 3 * static_cast<size_t>(n) > e.size()) return std::nullopt;
-    Points p(3, n);
-    std::memcpy(p.data(), e.data() + off, sizeof(double) * 3 * n);
-    off += sizeof(double) * 3 * n;
-    d.pieces.push_back(std::move(p));
-  }
-  if (off != e.size()) return std::nullopt;
+  auto pieces = point_sets_from_bytes(e, eol2 + 1, count);
+  if (!pieces) return std::nullopt;
+  d.pieces = std::move(*pieces);
   return d;
 }
 
@@ -76,7 +55,7 @@ std::string write_cached_decomposition(const std::string& dir, const std::string
   head.precision(17);
   head << (d.complete ? 1 : 0) << " " << d.seconds << " " << d.pieces.size() << "\n"
        << note << "\n";
-  return write_cache_entry(dir, kKind, key, head.str() + piece_bytes(d.pieces));
+  return write_cache_entry(dir, kKind, key, head.str() + point_sets_bytes(d.pieces));
 }
 
 }  // namespace pd

@@ -15,6 +15,7 @@
 #include "hash.h"
 #include "parallel_for.h"
 #include "scene/convexity_cache.h"
+#include "scene/hull_cache.h"
 #include "scene/mesh_loader.h"
 #include "tolerances.h"
 
@@ -65,9 +66,10 @@ struct MeshFile {
   std::vector<Points> reduced;  ///< per piece, file coordinates
   std::vector<long> counts;     ///< vertices per piece as read
   std::optional<std::string> error;
+  bool hulls_cached = false;  ///< `reduced` and `counts` came from the hull cache
+  std::string hash;           ///< content hash, when a cache needs it
   // Pieces auto/decompose: the surface and its nonconvexity, once per file.
   std::shared_ptr<const Mesh> mesh;
-  std::string hash;
   double concavity = 0.0;  ///< file units
   bool closed = false;
   double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
@@ -101,23 +103,45 @@ StoredConvexity convexity_of(const Mesh& m, const std::string& hash, double tol,
   return s;
 }
 
+std::string file_hash(const std::string& path, const PartsCache& cache) {
+  if (cache.file_hashes) {
+    const auto known = cache.file_hashes->find(path);
+    if (known != cache.file_hashes->end()) return known->second;
+  }
+  return file_content_hash(path);
+}
+
+// The file's hulls from the cache, when an earlier run (or another shard on
+// this machine) stored them: true if found.
+bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
+  if (cache.dir.empty()) return false;
+  f.hash = file_hash(*spec.mesh, cache);
+  auto hit = read_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes));
+  if (!hit) return false;
+  f.counts = std::move(hit->counts);
+  f.reduced = std::move(hit->reduced);
+  f.hulls_cached = true;
+  return true;
+}
+
 void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
     // Hulls first: a mesh they reject (non-finite coordinates, ...) fails as in
     // pieces "hull", before any measurement.
-    for (const Mesh& m : meshes) {
-      f.counts.push_back(m.vertices.cols());
-      f.reduced.push_back(convex_hull(m.vertices).vertices);
+    if (!f.hulls_cached) {
+      for (const Mesh& m : meshes) {
+        f.counts.push_back(m.vertices.cols());
+        f.reduced.push_back(convex_hull(m.vertices).vertices);
+      }
+      if (!f.hash.empty())
+        write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
+                           {f.counts, f.reduced});
     }
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
-      const auto known = cache.file_hashes ? cache.file_hashes->find(*spec.mesh)
-                                           : std::map<std::string, std::string>::const_iterator();
-      f.hash = cache.file_hashes && known != cache.file_hashes->end()
-                   ? known->second
-                   : file_content_hash(*spec.mesh);
+      if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
       // Measured once, in file units; each instance scales the value by its own
       // stretch. Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
@@ -234,10 +258,19 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   std::vector<MeshFile> mesh_files(files.size());
   // Every mesh file is read first, in loader processes: forked here, while
   // this process has one thread (see mesh_loader_processes.cpp).
-  std::vector<MeshRequest> requests(files.size());
-  for (size_t u = 0; u < unique.size(); ++u)
-    if (file_of[u])
-      requests[*file_of[u]] = {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes};
+  // A file whose hulls are cached is read only when its surface is kept.
+  std::vector<MeshRequest> requests;
+  std::vector<size_t> requested;  // per request: its file
+  std::vector<bool> planned(files.size(), false);
+  for (size_t u = 0; u < unique.size(); ++u) {
+    if (!file_of[u] || planned[*file_of[u]]) continue;
+    const size_t f = *file_of[u];
+    planned[f] = true;
+    if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces))
+      continue;
+    requests.push_back({*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes});
+    requested.push_back(f);
+  }
   for (size_t u = 0; u < unique.size(); ++u)
     if (file_of[u]) {
       MeshFile& f = mesh_files[*file_of[u]];
@@ -248,7 +281,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   if (!requests.empty()) {
     std::vector<LoadedMeshes> read =
         load_meshes_isolated(requests, threads, load_timeout, load_memory_mb);
-    for (size_t f = 0; f < read.size(); ++f) mesh_files[f].read = std::move(read[f]);
+    for (size_t r = 0; r < read.size(); ++r) mesh_files[requested[r]].read = std::move(read[r]);
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
     built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr,

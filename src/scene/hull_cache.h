@@ -1,0 +1,33 @@
+// Cached file hulls: each mesh of a file reduced to the vertices of its convex
+// hull (file coordinates), stored per file content, so a rerun, or another
+// shard on the same machine, hulls nothing it has hulled before and, where the
+// part keeps no surface (pieces "hull" or "meshes"), does not read the file at
+// all. Checked cache files (cache_file.h): an entry that does not read back
+// whole is computed again.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/types.h"
+
+namespace pd {
+
+/// What the parts stage keeps of a mesh file before placing it.
+struct StoredHulls {
+  std::vector<long> counts;     ///< vertices per mesh as read
+  std::vector<Points> reduced;  ///< per mesh: its hull's vertices, file coordinates
+};
+
+/// The key of a file's hulls: its content hash, whether each mesh of the file
+/// is its own piece (pieces "meshes") and the format version.
+std::string hulls_key(const std::string& content_hash, bool per_mesh);
+
+std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key);
+
+/// Stores the entry (creating `dir`); "" or why it could not.
+std::string write_cached_hulls(const std::string& dir, const std::string& key,
+                               const StoredHulls& h);
+
+}  // namespace pd

@@ -1,0 +1,125 @@
+// The hull cache (scene/hull_cache.h): entries read back exactly or not at all;
+// a rerun takes a file's hulls from it, and under pieces "hull" does not read
+// the file at all, while pieces "auto" still reads the surface it keeps.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "file_hash.h"
+#include "scene/hull_cache.h"
+#include "scene/parts.h"
+#include "scene/scene.h"
+
+using namespace pd;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBox = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/box.obj";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d =
+      fs::path(testing::TempDir()) / ("hull_cache_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+// Two instances of the box mesh under `pieces`, 10 apart.
+SceneSpec box_scene(const std::string& pieces) {
+  const std::string part = R"({"mesh": ")" + kBox + R"(", "pieces": ")" + pieces + R"(")";
+  return parse_scene_json(R"({"tolerance": 0.1, "parts": [)" + part + R"(, "id": "a"}, )" + part +
+                              R"(, "id": "b", "transform": [1,0,0,10, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]})",
+                          "s.json", "");
+}
+
+std::vector<fs::path> entries(const fs::path& dir, const std::string& ext) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().extension() == ext) out.push_back(e.path());
+  return out;
+}
+
+// A loader that crashes on the box file: a part that reads it fails.
+struct CrashOnBox {
+  CrashOnBox() { setenv("PDCHECK_TEST_CRASH_MESH", "box.obj", 1); }
+  ~CrashOnBox() { unsetenv("PDCHECK_TEST_CRASH_MESH"); }
+};
+
+}  // namespace
+
+TEST(HullCache, EntriesReadBackExactlyOrNotAtAll) {
+  const fs::path dir = fresh_dir("entries");
+  StoredHulls h;
+  h.counts = {8, 12};
+  h.reduced.push_back(Points::Random(3, 5));
+  h.reduced.push_back(Points::Random(3, 7));
+  const std::string key = hulls_key("abc", false);
+  EXPECT_NE(key, hulls_key("abc", true));
+  EXPECT_NE(key, hulls_key("abd", false));
+  ASSERT_EQ(write_cached_hulls(dir.string(), key, h), "");
+  const auto back = read_cached_hulls(dir.string(), key);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->counts, h.counts);
+  ASSERT_EQ(back->reduced.size(), 2u);
+  EXPECT_EQ(back->reduced[0], h.reduced[0]);  // bit for bit
+  EXPECT_EQ(back->reduced[1], h.reduced[1]);
+  EXPECT_FALSE(read_cached_hulls(dir.string(), hulls_key("abc", true)));
+  // Cut short: a miss, not an error.
+  const auto files = entries(dir, ".pdh");
+  ASSERT_EQ(files.size(), 1u);
+  fs::resize_file(files[0], fs::file_size(files[0]) - 9);
+  EXPECT_FALSE(read_cached_hulls(dir.string(), key));
+}
+
+TEST(HullCache, ARerunTakesTheHullsFromTheCache) {
+  const fs::path dir = fresh_dir("rerun");
+  const PartsCache cache{dir.string()};
+  const SceneSpec s = box_scene("hull");
+  const auto cold = build_parts(s, 1, {}, kDefaultLoadTimeout, cache);
+  ASSERT_FALSE(cold[0].error) << *cold[0].error;
+  ASSERT_EQ(entries(dir, ".pdh").size(), 1u) << "one entry per file, not per instance";
+
+  {
+    const CrashOnBox crash;
+    // Without the cache the file must be read, and the crash shows.
+    EXPECT_TRUE(build_parts(s, 1)[0].error);
+    // With it, pieces "hull" reads nothing: same parts.
+    const auto warm = build_parts(s, 1, {}, kDefaultLoadTimeout, cache);
+    ASSERT_EQ(warm.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+      ASSERT_FALSE(warm[k].error) << *warm[k].error;
+      EXPECT_EQ(warm[k].vertex_count, cold[k].vertex_count);
+      EXPECT_EQ(warm[k].pieces[0].vertices, cold[k].pieces[0].vertices);
+      EXPECT_EQ(warm[k].box.lo, cold[k].box.lo);
+    }
+    // Pieces "auto" keeps the file's surface for the refinement: it reads the file.
+    const auto with_surface = build_parts(box_scene("auto"), 1, {}, kDefaultLoadTimeout, cache);
+    EXPECT_TRUE(with_surface[0].error);
+  }
+
+  // The hulls used are the entry's: one stored under the file's key wins over
+  // the file's bytes (the file is the box; the entry is a box twice its size).
+  const std::string key = hulls_key(file_content_hash(kBox), false);
+  StoredHulls fake = *read_cached_hulls(dir.string(), key);
+  fake.reduced[0] *= 2.0;
+  ASSERT_EQ(write_cached_hulls(dir.string(), key, fake), "");
+  for (const char* pieces : {"hull", "auto"}) {
+    const auto parts = build_parts(box_scene(pieces), 1, {}, kDefaultLoadTimeout, cache);
+    ASSERT_FALSE(parts[0].error) << pieces << ": " << *parts[0].error;
+    EXPECT_DOUBLE_EQ(parts[0].box.hi.x() - parts[0].box.lo.x(),
+                     2.0 * (cold[0].box.hi.x() - cold[0].box.lo.x()))
+        << pieces;
+    if (std::string(pieces) == "auto") {
+      EXPECT_TRUE(parts[0].surface) << "the surface is kept";
+    }
+  }
+  // Per-mesh pieces are another entry.
+  const auto meshes = build_parts(box_scene("meshes"), 1, {}, kDefaultLoadTimeout, cache);
+  ASSERT_FALSE(meshes[0].error);
+  EXPECT_EQ(meshes[0].box.hi, cold[0].box.hi);
+  EXPECT_EQ(entries(dir, ".pdh").size(), 2u);
+}
