@@ -30,9 +30,10 @@ fs::path fresh_dir(const std::string& name) {
 // Two instances of the box mesh under `pieces`, 10 apart.
 SceneSpec box_scene(const std::string& pieces) {
   const std::string part = R"({"mesh": ")" + kBox + R"(", "pieces": ")" + pieces + R"(")";
-  return parse_scene_json(R"({"tolerance": 0.1, "parts": [)" + part + R"(, "id": "a"}, )" + part +
-                              R"(, "id": "b", "transform": [1,0,0,10, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]})",
-                          "s.json", "");
+  return parse_scene_json(
+      R"({"tolerance": 0.1, "parts": [)" + part + R"(, "id": "a"}, )" + part +
+          R"(, "id": "b", "transform": [1,0,0,10, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]})",
+      "s.json", "");
 }
 
 std::vector<fs::path> entries(const fs::path& dir, const std::string& ext) {

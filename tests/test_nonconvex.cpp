@@ -336,3 +336,34 @@ TEST(Nonconvex, ConvexOnlySceneReportIsUnchangedApartFromTheNewFields) {
   }
   EXPECT_EQ(hull, auto_);
 }
+
+// Sharded (docs/scale-out.md): shards 1..3 of the nonconvex assembly, sharing
+// one cache as shards on one machine do, merged, give the unsharded run's
+// report: every refined pair, its pieces and bounds, every part's convexity and
+// decomposition.
+TEST(Nonconvex, ShardsMergedEqualTheUnshardedRun) {
+  const fs::path d = generate("nonconvex_shards");
+  int code = -1;
+  const json full = pdcheck(d, "--cache " + (d / "cache_full").string(), &code);
+  ASSERT_TRUE(full.is_object());
+  ASSERT_EQ(code, 1);
+  bool refined = false;
+  for (const auto& p : full["pairs"]) refined |= p.value("depth_source", "hull") != "hull";
+  ASSERT_TRUE(refined) << "no pair looked past the hulls";
+  std::string shards;
+  for (int k = 1; k <= 3; ++k) {
+    const std::string out = (d / ("shard" + std::to_string(k) + ".json")).string();
+    int shard_code = -1;
+    pdcheck(d,
+            "--shard " + std::to_string(k) + "/3 -o " + out + " --cache " +
+                (d / "cache_shards").string(),
+            &shard_code);
+    EXPECT_EQ(shard_code, 0) << "shard " << k;
+    shards += " " + out;
+  }
+  const auto m = shell(std::string(PDCHECK_BINARY) + " merge -q" + shards);
+  EXPECT_EQ(m.code, code);
+  ASSERT_FALSE(m.out.empty());
+  EXPECT_EQ(without_decomposition_times(without_timings(json::parse(m.out))),
+            without_decomposition_times(without_timings(full)));
+}
