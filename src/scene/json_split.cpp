@@ -1,8 +1,37 @@
 #include "scene/json_split.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace pd {
 
 namespace {
+
+// The first position at or after `i` holding one of the bytes `a`..`e` (repeat
+// one to look for fewer), else a position >= t.size(). Sixteen bytes a step
+// where SSE2 is there: a shard's scan walks every byte of a 50 MB scene, and a
+// byte at a time that walk was a quarter of its fixed cost.
+template <char a, char b, char c = a, char d = a, char e = a>
+std::size_t next_of(std::string_view t, std::size_t i) {
+#if defined(__SSE2__)
+  const __m128i va = _mm_set1_epi8(a), vb = _mm_set1_epi8(b), vc = _mm_set1_epi8(c),
+                vd = _mm_set1_epi8(d), ve = _mm_set1_epi8(e);
+  for (; i + 16 <= t.size(); i += 16) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(t.data() + i));
+    const __m128i hit =
+        _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi8(v, va), _mm_cmpeq_epi8(v, vb)),
+                     _mm_or_si128(_mm_cmpeq_epi8(v, vc),
+                                  _mm_or_si128(_mm_cmpeq_epi8(v, vd), _mm_cmpeq_epi8(v, ve))));
+    if (const int bits = _mm_movemask_epi8(hit)) return i + __builtin_ctz(bits);
+  }
+#endif
+  for (; i < t.size(); ++i) {
+    const char x = t[i];
+    if (x == a || x == b || x == c || x == d || x == e) return i;
+  }
+  return i;
+}
 
 // A cursor over the text; every step returns false on a structure it cannot read.
 struct Scanner {
@@ -26,15 +55,16 @@ struct Scanner {
 
   /// At an opening quote: moves past the closing one.
   bool skip_string() {
-    for (++pos; pos < t.size(); ++pos) {
-      if (t[pos] == '\\')
-        ++pos;  // the escaped character cannot close the string
-      else if (t[pos] == '"') {
+    ++pos;
+    while (true) {
+      pos = next_of<'"', '\\'>(t, pos);
+      if (pos >= t.size()) return false;
+      if (t[pos] == '"') {
         ++pos;
         return true;
       }
+      pos += 2;  // the escaped character cannot close the string
     }
-    return false;
   }
 
   /// Moves past one value: a string, an object or array (to its matching
@@ -45,18 +75,18 @@ struct Scanner {
     if (c == '"') return skip_string();
     if (c == '{' || c == '[') {
       int depth = 0;
-      while (pos < t.size()) {
+      while (true) {
+        pos = next_of<'"', '{', '}', '[', ']'>(t, pos);
+        if (pos >= t.size()) return false;
         const char d = t[pos];
         if (d == '"') {
           if (!skip_string()) return false;
           continue;
         }
-        if (d == '{' || d == '[') ++depth;
-        if (d == '}' || d == ']') --depth;
+        depth += d == '{' || d == '[' ? 1 : -1;
         ++pos;
         if (depth == 0) return true;
       }
-      return false;
     }
     const std::size_t start = pos;
     while (!at_end() && t[pos] != ',' && t[pos] != '}' && t[pos] != ']' && t[pos] != ' ' &&
