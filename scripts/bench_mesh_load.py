@@ -20,6 +20,7 @@ import json
 import math
 import os
 import random
+import shutil
 import statistics
 import struct
 import subprocess
@@ -102,11 +103,16 @@ def main():
             sys.exit("%s failed (%d): %s" % (b, r.returncode, r.stderr))
         return json.loads(r.stdout)["stage_seconds"]["parts"]
 
+    def fresh(d):
+        shutil.rmtree(d, ignore_errors=True)
+        return d
+
+    shutil.rmtree(cache_root, ignore_errors=True)
     modes = {"": lambda b, k: ["--no-cache"] if a.cache_modes else []}
     if a.cache_modes:
         modes = {"no-cache": modes[""],
-                 "cold": lambda b, k: ["--cache", os.path.join(
-                     cache_root, "cold-%d-%d" % (a.binaries.index(b), k))],
+                 "cold": lambda b, k: ["--cache", fresh(os.path.join(
+                     cache_root, "cold-%d-%d" % (a.binaries.index(b), k)))],
                  "warm": lambda b, k: ["--cache", os.path.join(
                      cache_root, "warm-%d" % a.binaries.index(b))]}
         for b in a.binaries:

@@ -45,7 +45,7 @@ int create_temp_beside(const std::string& dir, const std::string& stem, std::str
   return -1;
 }
 
-void write_file_atomically(const std::string& path, const std::string& content) {
+void write_file_atomically(const std::string& path, const std::string& content, bool sync) {
   const std::filesystem::path target(path);
   std::string dir = target.parent_path().string();
   if (dir.empty()) dir = ".";
@@ -68,7 +68,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     ok = fchmod(fd, old.st_mode & 07777) == 0;
     if (ok && geteuid() == 0) ok = fchown(fd, old.st_uid, old.st_gid) == 0;
   }
-  ok = ok && fsync(fd) == 0;
+  ok = ok && (!sync || fsync(fd) == 0);
   int err = ok ? 0 : errno;
   if (close(fd) != 0 && ok) {
     ok = false;

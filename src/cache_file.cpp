@@ -50,8 +50,11 @@ std::string write_cache_entry(const std::string& dir, const CacheKind& kind, con
   if (dir.empty()) return "";
   try {
     std::filesystem::create_directories(dir);
-    write_file_atomically(entry_path(dir, kind, key), std::string(kind.format) + "\n" + key + "\n" +
-                                                          content_hash(body) + "\n" + body);
+    // Unsynced: an entry a crash cut short fails its checksum and is a miss.
+    write_file_atomically(
+        entry_path(dir, kind, key),
+        std::string(kind.format) + "\n" + key + "\n" + content_hash(body) + "\n" + body,
+        /*sync=*/false);
   } catch (const std::exception& e) {
     return std::string("cache ") + dir + ": " + e.what();
   }
