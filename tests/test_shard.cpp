@@ -63,6 +63,21 @@ std::string scene(const std::string& name, double shift = 0.0, int groups = 14) 
       name, json{{"units", "mm"}, {"tolerance", 0.1}, {"checks", checks}, {"parts", parts}}.dump());
 }
 
+json read_json(const std::string& path);
+
+// Seven groups and no part errors (the unreadable and NaN meshes left out).
+std::string clean_scene(const std::string& name) {
+  const std::string s = scene(name, 0.0, 7);
+  json doc = read_json(s);
+  auto& parts = doc["parts"];
+  parts.erase(
+      std::remove_if(parts.begin(), parts.end(),
+                     [](const json& p) { return p["id"] == "unreadable" || p["id"] == "nanpart"; }),
+      parts.end());
+  std::ofstream(s) << doc.dump();
+  return s;
+}
+
 // A worker crash on one pair: an error pair in every run that checks it.
 const std::string kCrash = "PDCHECK_TEST_CRASH_PAIR=g7a:g7b ";
 
@@ -185,14 +200,7 @@ TEST(Shard, MergedShardsEqualTheUnshardedReport) {
 
 TEST(Shard, MergeExitCodeIsTheRunsWithoutErrors) {
   // No part or pair errors: exit 1 (interference) from the run and from the merge.
-  const std::string s = scene("shard_clean.json", 0.0, 7);
-  json doc = read_json(s);
-  auto& parts = doc["parts"];
-  parts.erase(
-      std::remove_if(parts.begin(), parts.end(),
-                     [](const json& p) { return p["id"] == "unreadable" || p["id"] == "nanpart"; }),
-      parts.end());
-  std::ofstream(s) << doc.dump();
+  const std::string s = clean_scene("shard_clean.json");
   const std::string full = tmp("clean_full.json");
   const CliResult f = run(s + " -q -o " + full, "");
   ASSERT_EQ(f.code, 1) << f.err;
@@ -249,14 +257,8 @@ std::string without_times(std::string xml) {
 // baseline and suppressions in the report, the exit code under each bar, JUnit,
 // SARIF, a starting suppressions file and the HTML page.
 TEST(Shard, MergeWritesTheRunsCiOutputs) {
-  const std::string s = scene("shard_ci.json", 0.0, 7);
-  json doc = read_json(s);
-  auto& parts = doc["parts"];
-  parts.erase(
-      std::remove_if(parts.begin(), parts.end(),
-                     [](const json& p) { return p["id"] == "unreadable" || p["id"] == "nanpart"; }),
-      parts.end());
-  std::ofstream(s) << doc.dump();
+  const std::string s = clean_scene("shard_ci.json");
+  const json doc = read_json(s);
   // Last week's assembly: g0 deeper (updated now), g1 apart (its finding new
   // now), g6 overlapping (absent now: culled).
   json old = doc;
