@@ -45,8 +45,9 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
   const Vec3 centre = points.rowwise().mean();
   const Points p = points.colwise() - centre;
   if (!facets_of(p, h)) return c;
+  PreparedMesh::Hint near;  // successive samples are neighbours
   auto consider = [&](const Vec3& x) {
-    const double d = part.outside_distance(x + centre);
+    const double d = part.outside_distance(x + centre, near);
     if (d > c.value) c.value = d, c.witness = x + centre;
     c.stopped = c.value > stop_above;
   };

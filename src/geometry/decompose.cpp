@@ -530,11 +530,15 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
     // Screen: the pieces' own hull vertices projected onto the joint hull find
     // the notch between them (a hole's vertex under the chord) at once.
     --c.work_left;
-    if (hull_concavity(joint, c.part, c.tol, c.void_missing, joint, tol::kDecomposeScreenSamples)
+    // Both estimates stop at the tolerance: a merge beyond it is refused
+    // whatever the exact value, and one within it ran to the end.
+    if (hull_concavity(joint, c.part, c.tol, c.void_missing, joint, tol::kDecomposeScreenSamples,
+                       c.tol)
             .value > c.tol)
       continue;
     const Points surface = joined_points(all[i]->surface, all[j]->surface);
-    const Concavity cv = hull_concavity(joint, c.part, c.tol, c.void_missing, surface, samples);
+    const Concavity cv =
+        hull_concavity(joint, c.part, c.tol, c.void_missing, surface, samples, c.tol);
     --c.work_left;
     if (cv.value > c.tol) continue;
     auto u = std::make_unique<Piece>();
