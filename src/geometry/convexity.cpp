@@ -10,6 +10,7 @@
 
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
+#include "geometry/surface_polygons.h"
 
 namespace pd {
 
@@ -38,7 +39,7 @@ bool facets_of(const Points& p, Facets& out) {
 
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
                          double missing_volume, const Points& surface, int samples,
-                         double stop_above) {
+                         double stop_above, const SurfacePolygons* on_part) {
   Concavity c;
   Facets h;
   // qhull works on centred coordinates; distances are taken back in the part's.
@@ -47,6 +48,9 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
   if (!facets_of(p, h)) return c;
   PreparedMesh::Hint near;  // successive samples are neighbours
   auto consider = [&](const Vec3& x) {
+    // On the part's surface (within its `within`): cannot raise the estimate
+    // above that, so the query is saved.
+    if (on_part && on_part->covers(x + centre)) return;
     const double d = part.outside_distance(x + centre, near);
     if (d > c.value) c.value = d, c.witness = x + centre;
     c.stopped = c.value > stop_above;
@@ -212,6 +216,22 @@ bool nested(const std::vector<Mesh>& shells) {
 
 }  // namespace
 
+double coordinate_noise(const Points& v) {
+  if (v.cols() == 0) return 0.0;
+  const double size = (v.rowwise().maxCoeff() - v.rowwise().minCoeff()).norm();
+  return std::max(1e-9 * size, 8.0 * std::ldexp(v.cwiseAbs().maxCoeff(), -24));
+}
+
+SurfacePolygons triangle_polygons(const Mesh& m, double within, Points& corners) {
+  corners.resize(3, 3 * m.triangles.cols());
+  std::vector<std::pair<long, long>> ranges;
+  for (long t = 0; t < m.triangles.cols(); ++t) {
+    for (int k = 0; k < 3; ++k) corners.col(3 * t + k) = m.vertices.col(m.triangles(k, t));
+    ranges.push_back({3 * t, 3 * t + 3});
+  }
+  return SurfacePolygons(corners, ranges, within);
+}
+
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above) {
   ConvexityScreen r;
   const PreparedMesh part(m);
@@ -219,9 +239,14 @@ ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double sto
   const Vec3 centre = m.vertices.rowwise().mean();
   Facets h;
   const double hull_volume = facets_of(m.vertices.colwise() - centre, h) ? h.volume : 0.0;
+  // Samples on the mesh's own faces are on it: only the rest are measured
+  // (a convex mesh's hull facets are its faces).
+  Points corners;
+  const SurfacePolygons faces =
+      triangle_polygons(m, std::min(coordinate_noise(m.vertices), 0.25 * concavity_tol), corners);
   r.concavity = hull_concavity(m.vertices, part, concavity_tol,
                                r.closed ? hull_volume - mesh_volume(m) : -1.0, m.vertices,
-                               kConvexitySamples, stop_above);
+                               kConvexitySamples, stop_above, &faces);
   return r;
 }
 

@@ -12,6 +12,7 @@
 namespace pd {
 
 class PreparedMesh;
+class SurfacePolygons;
 
 /// Estimated concavity of a point set's hull against a part: the largest
 /// distance from a point of hull(points) to the part (its closed solid, or its
@@ -40,9 +41,23 @@ struct Concavity {
 /// `stop_above`: then `value` is only a lower bound, above that threshold
 /// (enough to call the part nonconvex at any tolerance up to it), and
 /// `stopped` is set.
+/// `on_part`, when given, holds polygons lying on the part (within its
+/// `within`): a sample they cover is not measured, which changes the estimate
+/// only where it is at most `within` (the value and witness of an estimate
+/// above it are the same).
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
                          double missing_volume, const Points& surface,
-                         int samples = kConvexitySamples, double stop_above = INFINITY);
+                         int samples = kConvexitySamples, double stop_above = INFINITY,
+                         const SurfacePolygons* on_part = nullptr);
+
+/// The rounding noise of a mesh's coordinates: float32 files far from the
+/// origin hold them to ~2^-24 of their magnitude (8 units of it), and at least
+/// 1e-9 of the mesh's size. `vertices` as read (before centring).
+double coordinate_noise(const Points& vertices);
+
+/// The polygons of m's triangles (for hull_concavity's `on_part`), whose
+/// corners are kept in `corners`.
+SurfacePolygons triangle_polygons(const Mesh& m, double within, Points& corners);
 
 /// A mesh's nonconvexity (scene units throughout).
 struct Convexity {

@@ -15,6 +15,7 @@
 #include "geometry/convexity.h"
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
+#include "geometry/surface_polygons.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -257,8 +258,10 @@ Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3
   // are far from convex, and any sample's distance is a lower bound, so a
   // screen beyond the tolerance decides without the full estimate.
   --c.work_left;
+  // The cell's clipped faces lie on the part: samples on them are not measured.
+  const SurfacePolygons faces(p.surface, p.polys, c.eps);
   const Concavity screen = hull_concavity(p.points, c.part, c.tol, c.void_missing, Points(3, 0),
-                                          tol::kDecomposeScreenSamples);
+                                          tol::kDecomposeScreenSamples, INFINITY, &faces);
   if (screen.value > 2.0 * c.tol) {
     p.concavity = screen;
     return p;
@@ -266,7 +269,8 @@ Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3
   Points probed(3, p.surface.cols() + static_cast<long>(probes.size()));
   probed << p.surface, Points::Zero(3, static_cast<long>(probes.size()));
   for (std::size_t i = 0; i < probes.size(); ++i) probed.col(p.surface.cols() + i) = probes[i];
-  p.concavity = hull_concavity(p.points, c.part, c.tol, c.void_missing, probed, samples);
+  p.concavity =
+      hull_concavity(p.points, c.part, c.tol, c.void_missing, probed, samples, INFINITY, &faces);
   --c.work_left;
   return p;
 }
@@ -530,20 +534,25 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
     // Screen: the pieces' own hull vertices projected onto the joint hull find
     // the notch between them (a hole's vertex under the chord) at once.
     --c.work_left;
+    const Points surface = joined_points(all[i]->surface, all[j]->surface);
+    std::vector<std::pair<long, long>> polys = all[i]->polys;
+    const long shift = all[i]->surface.cols();
+    for (const auto& [b, e] : all[j]->polys) polys.push_back({b + shift, e + shift});
+    const SurfacePolygons faces(surface, polys, c.eps);
     // Both estimates stop at the tolerance: a merge beyond it is refused
     // whatever the exact value, and one within it ran to the end.
     if (hull_concavity(joint, c.part, c.tol, c.void_missing, joint, tol::kDecomposeScreenSamples,
-                       c.tol)
+                       c.tol, &faces)
             .value > c.tol)
       continue;
-    const Points surface = joined_points(all[i]->surface, all[j]->surface);
     const Concavity cv =
-        hull_concavity(joint, c.part, c.tol, c.void_missing, surface, samples, c.tol);
+        hull_concavity(joint, c.part, c.tol, c.void_missing, surface, samples, c.tol, &faces);
     --c.work_left;
     if (cv.value > c.tol) continue;
     auto u = std::make_unique<Piece>();
     u->points = convex_hull(joint).vertices;
     u->surface = surface;
+    u->polys = std::move(polys);
     u->concavity = cv;
     finish_piece(*u);
     const int id = static_cast<int>(all.size());
@@ -605,9 +614,7 @@ Decomposition decompose_convex(const Mesh& mesh, double concavity_tol,
   const bool voids = whole.nested_shells;
   // Faces within rounding noise of a cut plane count as lying in it: float32
   // files far from the origin hold coordinates to ~2^-24 of their magnitude.
-  const double magnitude = mesh.vertices.cwiseAbs().maxCoeff();
-  const double noise = std::max(1e-9 * size, 8.0 * std::ldexp(magnitude, -24));
-  const double eps = std::min(noise, 0.25 * concavity_tol);
+  const double eps = std::min(coordinate_noise(mesh.vertices), 0.25 * concavity_tol);
   const Reflex reflex = find_reflex(m, eps);
   const double seconds = std::min(limits.seconds, 1e7);
   Context c{

@@ -202,12 +202,11 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
   if (!m.parity) return distance(v);
-  const auto [q, face] =
-      hint.face >= 0
-          ? m.tree.closest_point_and_primitive(
-                p, {Point3(hint.point.x(), hint.point.y(), hint.point.z()),
-                    m.faces.cbegin() + hint.face})
-          : m.tree.closest_point_and_primitive(p);
+  const auto [q, face] = hint.face >= 0
+                             ? m.tree.closest_point_and_primitive(
+                                   p, {Point3(hint.point.x(), hint.point.y(), hint.point.z()),
+                                       m.faces.cbegin() + hint.face})
+                             : m.tree.closest_point_and_primitive(p);
   hint = {Vec3(q.x(), q.y(), q.z()), static_cast<long>(face - m.faces.cbegin())};
   const double d2 = CGAL::squared_distance(p, q);
   bool decided = m.oriented && d2 > 0;

@@ -12,7 +12,8 @@ namespace pd {
 
 namespace {
 
-constexpr CacheKind kKind{"pdcheck-convexity-2", ".pdv"};
+// 3: samples on the mesh's own faces are not measured (hull_concavity's on_part).
+constexpr CacheKind kKind{"pdcheck-convexity-3", ".pdv"};
 
 }  // namespace
 
