@@ -202,12 +202,24 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
   if (!m.parity) return distance(v);
+  const auto inside_here = [&] {
+    hint.inside_point = v;
+    hint.has_inside = true;
+    return 0.0;
+  };
+  // Joined to an inside point without crossing the surface: inside too.
+  if (hint.has_inside &&
+      !m.tree.do_intersect(
+          Segment3(Point3(hint.inside_point.x(), hint.inside_point.y(), hint.inside_point.z()), p)))
+    return inside_here();
+  hint.has_inside = false;
   const auto [q, face] = hint.face >= 0
                              ? m.tree.closest_point_and_primitive(
                                    p, {Point3(hint.point.x(), hint.point.y(), hint.point.z()),
                                        m.faces.cbegin() + hint.face})
                              : m.tree.closest_point_and_primitive(p);
-  hint = {Vec3(q.x(), q.y(), q.z()), static_cast<long>(face - m.faces.cbegin())};
+  hint.point = Vec3(q.x(), q.y(), q.z());
+  hint.face = static_cast<long>(face - m.faces.cbegin());
   const double d2 = CGAL::squared_distance(p, q);
   bool decided = m.oriented && d2 > 0;
   for (const Segment3& s : m.segments) decided = decided && CGAL::squared_distance(p, s) > d2;
@@ -223,10 +235,10 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
     const double margin = 1e-6;
     if (den > 0 && l1 > margin && l2 > margin && 1 - l1 - l2 > margin) {
       const Vec3 n = e0.cross(e1);
-      return n.dot(Vec3(v - x)) > 0 ? std::sqrt(d2) : 0.0;
+      return n.dot(Vec3(v - x)) > 0 ? std::sqrt(d2) : inside_here();
     }
   }
-  return m.side(p) == CGAL::ON_BOUNDED_SIDE ? 0.0 : distance(v);
+  return m.side(p) == CGAL::ON_BOUNDED_SIDE ? inside_here() : distance(v);
 }
 
 bool PreparedMesh::inside(const Vec3& v) const {

@@ -45,9 +45,14 @@ class PreparedMesh {
   /// Where the previous of a run of nearby queries ended: the next one starts
   /// its search there instead of at the tree's kd-tree hint (the same answer,
   /// found faster when the queries are close, as the samples of a lattice are).
+  /// Also the last query point found strictly inside: a query joined to it by
+  /// a segment that meets no face is inside too (parity cannot change), which
+  /// a short segment's test tells far faster than a nearest-face search.
   struct Hint {
     Vec3 point = Vec3::Zero();
     long face = -1;  ///< -1: none yet
+    Vec3 inside_point = Vec3::Zero();
+    bool has_inside = false;
   };
   double outside_distance(const Vec3& p, Hint& hint) const;
 
