@@ -51,6 +51,9 @@ Concavity hull_concavity(const Points& points, const PreparedMesh& part, double 
     // On the part's surface (within its `within`): cannot raise the estimate
     // above that, so the query is saved.
     if (on_part && on_part->covers(x + centre)) return;
+    // The previous query's nearest point is on the surface: no farther than
+    // it, x cannot raise the estimate (a sample must exceed it strictly).
+    if (near.face >= 0 && (x + centre - near.point).norm() <= c.value) return;
     const double d = part.outside_distance(x + centre, near);
     if (d > c.value) c.value = d, c.witness = x + centre;
     c.stopped = c.value > stop_above;
