@@ -117,5 +117,11 @@ inline constexpr double kPlanBoxSlack = 1e-9;
 /// Expected cost of one pair, as vertices: kShardPairCost + the two parts'
 /// vertex counts (a pair's fixed work, then support evaluations linear in size).
 inline constexpr double kShardPairCost = 200.0;
+/// Effort, not accuracy: an inline part with at least this many vertices has
+/// its hull cached (scene/hull_cache.h, one file per part and placement). A
+/// smaller one is hulled in every run (≈ 0.5 ms at 100 vertices): its entry
+/// would cost a 4 KB file per part, per placement, for every part of every
+/// scene, with no eviction.
+inline constexpr long kInlineHullCacheVertices = 1000;
 
 }  // namespace pd::tol

@@ -1,9 +1,11 @@
 // The hull cache (scene/hull_cache.h): entries read back exactly or not at all;
 // a rerun takes a file's hulls from it, and under pieces "hull" does not read
-// the file at all, while pieces "auto" still reads the surface it keeps.
+// the file at all, while pieces "auto" still reads the surface it keeps; large
+// inline parts take theirs from it by list and placement.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include "scene/hull_cache.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
+#include "tolerances.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -123,4 +126,54 @@ TEST(HullCache, ARerunTakesTheHullsFromTheCache) {
   ASSERT_FALSE(meshes[0].error);
   EXPECT_EQ(meshes[0].box.hi, cold[0].box.hi);
   EXPECT_EQ(entries(dir, ".pdh").size(), 2u);
+}
+
+namespace {
+
+// An inline part of n points on a sphere of radius r (placed by `shift` along x).
+std::string inline_part(const std::string& id, int n, double r, double shift) {
+  std::string v;
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / n, phi = 2.399963229728653 * i;
+    const double s = std::sqrt(1.0 - z * z);
+    v += (i ? "," : "") + std::string("[") + std::to_string(r * s * std::cos(phi)) + "," +
+         std::to_string(r * s * std::sin(phi)) + "," + std::to_string(r * z) + "]";
+  }
+  return R"({"id": ")" + id + R"(", "vertices": [)" + v + R"(], "transform": [1,0,0,)" +
+         std::to_string(shift) + R"(, 0,1,0,0, 0,0,1,0, 0,0,0,1]})";
+}
+
+}  // namespace
+
+TEST(HullCache, LargeInlinePartsTakeTheirHullsFromTheCache) {
+  const fs::path dir = fresh_dir("inline");
+  const PartsCache cache{dir.string()};
+  const long big = tol::kInlineHullCacheVertices;
+  auto scene = [&](double shift) {
+    return parse_scene_json(R"({"tolerance": 0.1, "parts": [)" +
+                                inline_part("big", static_cast<int>(big), 5.0, shift) + "," +
+                                inline_part("small", 100, 5.0, 50.0) + "]}",
+                            "s.json", "");
+  };
+  const auto cold = build_parts(scene(0.0), 1, {}, kDefaultLoadTimeout, cache);
+  ASSERT_FALSE(cold[0].error);
+  EXPECT_EQ(entries(dir, ".pdi").size(), 1u) << "the large part only";
+  const auto warm = build_parts(scene(0.0), 1, {}, kDefaultLoadTimeout, cache);
+  EXPECT_EQ(warm[0].pieces[0].vertices, cold[0].pieces[0].vertices);
+  EXPECT_EQ(warm[0].vertex_count, big);
+  // The entry under the part's key is what is used: a hull twice the size.
+  const SceneSpec s = scene(0.0);
+  const std::string key = inline_hull_key(vertex_digest(*s.parts[0].vertices),
+                                          s.parts[0].to_scene_units, s.parts[0].transform);
+  Hull fake = *read_cached_hull(dir.string(), key);
+  fake.vertices *= 2.0;
+  fake.warnings = {"from the test"};
+  ASSERT_EQ(write_cached_hull(dir.string(), key, fake), "");
+  const auto faked = build_parts(s, 1, {}, kDefaultLoadTimeout, cache);
+  EXPECT_NEAR(faked[0].box.hi.x(), 2.0 * cold[0].box.hi.x(), 1e-9);
+  EXPECT_EQ(faked[0].warnings, std::vector<std::string>{"from the test"});
+  // Moved: another key, hulled again, and not the fake.
+  const auto moved = build_parts(scene(1.0), 1, {}, kDefaultLoadTimeout, cache);
+  EXPECT_NEAR(moved[0].box.hi.x(), cold[0].box.hi.x() + 1.0, 1e-9);
+  EXPECT_EQ(entries(dir, ".pdi").size(), 2u);
 }

@@ -11,6 +11,7 @@ namespace pd {
 namespace {
 
 constexpr CacheKind kKind{"pdcheck-hulls-1", ".pdh"};
+constexpr CacheKind kInlineKind{"pdcheck-inline-hull-1", ".pdi"};
 
 }  // namespace
 
@@ -48,6 +49,50 @@ std::string write_cached_hulls(const std::string& dir, const std::string& key,
   for (long c : h.counts) head << ' ' << c;
   head << '\n';
   return write_cache_entry(dir, kKind, key, head.str() + point_sets_bytes(h.reduced));
+}
+
+std::string inline_hull_key(const std::string& digest, double to_scene_units,
+                            const Mat4& transform) {
+  Hasher h;
+  h.add(kInlineKind.format).add(digest).add(to_scene_units);
+  for (int k = 0; k < 16; ++k) h.add(transform(k / 4, k % 4));
+  return h.hex();
+}
+
+// Body: "dimension warnings" line, one line per warning, then the vertices' bytes.
+std::optional<Hull> read_cached_hull(const std::string& dir, const std::string& key) {
+  const std::optional<std::string> entry = read_cache_entry(dir, kInlineKind, key);
+  if (!entry) return std::nullopt;
+  const std::string& e = *entry;
+  size_t eol = e.find('\n');
+  if (eol == std::string::npos) return std::nullopt;
+  std::istringstream head(e.substr(0, eol));
+  Hull h;
+  long warnings = 0;
+  if (!(head >> h.dimension >> warnings) || h.dimension < 0 || h.dimension > 3 || warnings < 0)
+    return std::nullopt;
+  size_t at = eol + 1;
+  for (long k = 0; k < warnings; ++k) {
+    eol = e.find('\n', at);
+    if (eol == std::string::npos) return std::nullopt;
+    h.warnings.push_back(e.substr(at, eol - at));
+    at = eol + 1;
+  }
+  auto sets = point_sets_from_bytes(e, at, 1);
+  if (!sets) return std::nullopt;
+  h.vertices = std::move((*sets)[0]);
+  return h;
+}
+
+std::string write_cached_hull(const std::string& dir, const std::string& key, const Hull& h) {
+  std::ostringstream head;
+  head << h.dimension << ' ' << h.warnings.size() << '\n';
+  for (std::string w : h.warnings) {
+    for (char& c : w)
+      if (c == '\n') c = ' ';
+    head << w << '\n';
+  }
+  return write_cache_entry(dir, kInlineKind, key, head.str() + point_sets_bytes({h.vertices}));
 }
 
 }  // namespace pd

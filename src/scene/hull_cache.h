@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/hull.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -29,5 +30,16 @@ std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::
 /// Stores the entry (creating `dir`); "" or why it could not.
 std::string write_cached_hulls(const std::string& dir, const std::string& key,
                                const StoredHulls& h);
+
+/// An inline part's hull (placed, scene units), keyed by its list's digest
+/// (vertex_digest) and its placement: a rerun, or another shard on the
+/// machine, hulls no unchanged inline part again. `.pdi` entries.
+std::string inline_hull_key(const std::string& digest, double to_scene_units,
+                            const Mat4& transform);
+
+std::optional<Hull> read_cached_hull(const std::string& dir, const std::string& key);
+
+/// Stores the entry (creating `dir`); "" or why it could not.
+std::string write_cached_hull(const std::string& dir, const std::string& key, const Hull& h);
 
 }  // namespace pd

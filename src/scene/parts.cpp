@@ -175,6 +175,19 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
   return s;
 }
 
+// An inline part's hull, from the cache when an earlier run (or another shard)
+// hulled the same list under the same placement (large parts only).
+Hull inline_hull(const PartSpec& spec, const PartsCache& cache) {
+  if (cache.dir.empty() || spec.vertices->cols() < tol::kInlineHullCacheVertices)
+    return convex_hull(place(*spec.vertices, spec));
+  const std::string key =
+      inline_hull_key(vertex_digest(*spec.vertices), spec.to_scene_units, spec.transform);
+  if (auto hit = read_cached_hull(cache.dir, key)) return std::move(*hit);
+  Hull h = convex_hull(place(*spec.vertices, spec));
+  write_cached_hull(cache.dir, key, h);
+  return h;
+}
+
 /// One part from its spec; `file` is its mesh file, shared with other instances.
 Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
                 const PartsCache& cache) {
@@ -199,7 +212,7 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
   try {
     for (size_t k = 0; k < sets.size(); ++k) {
       part.vertex_count += file ? file->counts[k] : sets[k]->cols();
-      Hull h = convex_hull(place(*sets[k], spec));
+      Hull h = file ? convex_hull(place(*sets[k], spec)) : inline_hull(spec, cache);
       for (auto& w : h.warnings)
         part.warnings.push_back(sets.size() > 1 ? "piece " + std::to_string(k) + ": " + w : w);
       const Aabb b = Aabb::of(h.vertices);
