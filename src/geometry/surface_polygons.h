@@ -1,7 +1,8 @@
 // Convex planar polygons known to lie on a part's surface (its faces, or
 // faces clipped to a cell), found by point: a concavity sample inside one of
 // them is on the part, so its distance need not be measured. A uniform grid
-// over the polygons' boxes.
+// over the polygons' boxes. One object per thread: covers() remembers the last
+// polygon it found. The corners are referenced, not copied.
 #pragma once
 
 #include <array>
