@@ -5,6 +5,7 @@
 
 #include "corpus/cad_shapes.h"
 #include "geometry/convexity.h"
+#include "geometry/mesh_intersect.h"
 
 using namespace pd;
 using namespace pd::shapes;
@@ -123,4 +124,51 @@ TEST(Convexity, ScreenStopsOnlyAboveItsThreshold) {
       screen_convexity(float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFar)), 0.01, 0.01);
   EXPECT_FALSE(cyl.concavity.stopped);
   EXPECT_LE(cyl.concavity.value, 0.01);
+}
+
+TEST(Convexity, MeasureStoppedAtTheToleranceKeepsEveryFlag) {
+  // decompose_convex stops the whole mesh's estimate at the tolerance: a
+  // nonconvex mesh's value is then a lower bound, its flags unchanged.
+  const Mesh hollow = hollow_box({0, 0, 0}, {10, 10, 10}, 1);
+  const Mesh two = joined({box({0, 0, 0}, {1, 1, 1}), cylinder({5, 0}, 1, 0, 2, 32)});
+  const Mesh l = float32(translated(l_bracket(40, 5, 20), kFar));
+  for (const Mesh* m : {&hollow, &two, &l}) {
+    const Convexity full = measure_convexity(*m, 0.01);
+    const Convexity early = measure_convexity(*m, 0.01, 0.01);
+    EXPECT_FALSE(full.concavity.stopped);
+    EXPECT_TRUE(early.concavity.stopped);
+    EXPECT_GT(early.concavity.value, 0.01);
+    EXPECT_LE(early.concavity.value, full.concavity.value);
+    EXPECT_EQ(early.convex, full.convex);
+    EXPECT_EQ(early.shells, full.shells);
+    EXPECT_EQ(early.nested_shells, full.nested_shells);
+    EXPECT_EQ(early.shells_convex, full.shells_convex);
+  }
+  // A convex mesh runs to the end: the same value.
+  const Mesh cyl = float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFar));
+  const Convexity full = measure_convexity(cyl, 0.01);
+  const Convexity early = measure_convexity(cyl, 0.01, 0.01);
+  EXPECT_TRUE(early.convex);
+  EXPECT_FALSE(early.concavity.stopped);
+  EXPECT_EQ(early.concavity.value, full.concavity.value);
+}
+
+TEST(Convexity, EstimateOnPreparedHullIsTheSame) {
+  // One hull_of_points serves several estimates: each gives what the
+  // estimate on the points gives, value and witness.
+  const Mesh l = float32(translated(l_bracket(40, 5, 20), kFar));
+  const PreparedMesh part(l);
+  const HullOfPoints h = hull_of_points(l.vertices);
+  EXPECT_TRUE(h.solid());
+  for (int samples : {64, 1000}) {
+    const Concavity a = hull_concavity(l.vertices, part, 0.01, -1.0, l.vertices, samples);
+    const Concavity b = hull_concavity(h, part, 0.01, -1.0, l.vertices, samples);
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.witness, b.witness);
+    EXPECT_EQ(a.resolution, b.resolution);
+  }
+  // A flat set has no solid hull: value 0 either way.
+  const Points flat = (Points(3, 4) << 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0).finished();
+  EXPECT_FALSE(hull_of_points(flat).solid());
+  EXPECT_EQ(hull_concavity(hull_of_points(flat), part, 0.01, -1.0, flat).value, 0.0);
 }

@@ -16,36 +16,46 @@ namespace pd {
 
 namespace {
 
-struct Facets {
-  HullFacets f;
-  std::vector<double> area;
-  double volume = 0.0, total_area = 0.0;
-};
-
-// Facets of hull(p) with p already centred; false when p is flat or smaller.
-bool facets_of(const Points& p, Facets& out) {
-  if (p.cols() < 4 || !hull_facets(p, out.f)) return false;
-  for (std::size_t i = 0; i < out.f.triangles.size(); ++i) {
-    const auto& t = out.f.triangles[i];
+// Fills h's facets from h.centred; false when it is flat or smaller.
+bool facets_of(HullOfPoints& h) {
+  const Points& p = h.centred;
+  if (p.cols() < 4 || !hull_facets(p, h.f)) return false;
+  h.facets = true;
+  for (std::size_t i = 0; i < h.f.triangles.size(); ++i) {
+    const auto& t = h.f.triangles[i];
     const double a = 0.5 * (p.col(t[1]) - p.col(t[0])).cross(p.col(t[2]) - p.col(t[0])).norm();
-    out.area.push_back(a);
-    out.total_area += a;
-    out.volume += a * -out.f.offsets[i] / 3.0;  // pyramids from the origin (signed)
+    h.area.push_back(a);
+    h.total_area += a;
+    h.volume += a * -h.f.offsets[i] / 3.0;  // pyramids from the origin (signed)
   }
-  return out.volume > 0;
+  return h.solid();
 }
 
 }  // namespace
 
+HullOfPoints hull_of_points(const Points& points) {
+  HullOfPoints h;
+  h.centre = points.rowwise().mean();
+  h.centred = points.colwise() - h.centre;
+  facets_of(h);
+  return h;
+}
+
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
                          double missing_volume, const Points& surface, int samples,
                          double stop_above, const SurfacePolygons* on_part) {
+  return hull_concavity(hull_of_points(points), part, void_radius, missing_volume, surface, samples,
+                        stop_above, on_part);
+}
+
+Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double void_radius,
+                         double missing_volume, const Points& surface, int samples,
+                         double stop_above, const SurfacePolygons* on_part) {
   Concavity c;
-  Facets h;
   // qhull works on centred coordinates; distances are taken back in the part's.
-  const Vec3 centre = points.rowwise().mean();
-  const Points p = points.colwise() - centre;
-  if (!facets_of(p, h)) return c;
+  const Vec3& centre = h.centre;
+  const Points& p = h.centred;
+  if (!h.solid()) return c;
   PreparedMesh::Hint near;  // successive samples are neighbours
   auto consider = [&](const Vec3& x) {
     // On the part's surface (within its `within`): cannot raise the estimate
@@ -239,28 +249,26 @@ ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double sto
   ConvexityScreen r;
   const PreparedMesh part(m);
   r.closed = part.closed();
-  const Vec3 centre = m.vertices.rowwise().mean();
-  Facets h;
-  const double hull_volume = facets_of(m.vertices.colwise() - centre, h) ? h.volume : 0.0;
+  const HullOfPoints h = hull_of_points(m.vertices);  // the estimate's too
+  const double hull_volume = h.solid() ? h.volume : 0.0;
   // Samples on the mesh's own faces are on it: only the rest are measured
   // (a convex mesh's hull facets are its faces).
   Points corners;
   const SurfacePolygons faces =
       triangle_polygons(m, std::min(coordinate_noise(m.vertices), 0.25 * concavity_tol), corners);
-  r.concavity = hull_concavity(m.vertices, part, concavity_tol,
-                               r.closed ? hull_volume - mesh_volume(m) : -1.0, m.vertices,
-                               kConvexitySamples, stop_above, &faces);
+  r.concavity =
+      hull_concavity(h, part, concavity_tol, r.closed ? hull_volume - mesh_volume(m) : -1.0,
+                     m.vertices, kConvexitySamples, stop_above, &faces);
   return r;
 }
 
-Convexity measure_convexity(const Mesh& m, double concavity_tol) {
+Convexity measure_convexity(const Mesh& m, double concavity_tol, double stop_above) {
   Convexity r;
   const PreparedMesh part(m);
   r.closed = part.closed();
   r.shells = part.shells();
-  const Vec3 centre = m.vertices.rowwise().mean();
-  Facets h;
-  if (facets_of(m.vertices.colwise() - centre, h)) {
+  const HullOfPoints h = hull_of_points(m.vertices);  // the estimate's too
+  if (h.solid()) {
     r.hull_volume = h.volume;
     r.hull_area = h.total_area;
   }
@@ -268,8 +276,8 @@ Convexity measure_convexity(const Mesh& m, double concavity_tol) {
     r.volume = mesh_volume(m);
     if (r.hull_area > 0) r.screen = std::max(0.0, r.hull_volume - r.volume) / r.hull_area;
   }
-  r.concavity = hull_concavity(m.vertices, part, concavity_tol,
-                               r.closed ? r.hull_volume - r.volume : -1.0, m.vertices);
+  r.concavity = hull_concavity(h, part, concavity_tol, r.closed ? r.hull_volume - r.volume : -1.0,
+                               m.vertices, kConvexitySamples, stop_above);
   r.convex = r.concavity.value <= concavity_tol;
   if (!r.convex && r.shells > 1) {
     const std::vector<Mesh> shells = mesh_shells(m);
@@ -277,11 +285,11 @@ Convexity measure_convexity(const Mesh& m, double concavity_tol) {
     r.shells_convex =
         !r.nested_shells && std::all_of(shells.begin(), shells.end(), [&](const Mesh& s) {
           const PreparedMesh ps(s);
-          Facets hs;
-          const Vec3 c = s.vertices.rowwise().mean();
-          const double hv = facets_of(s.vertices.colwise() - c, hs) ? hs.volume : 0.0;
-          return hull_concavity(s.vertices, ps, concavity_tol,
-                                ps.closed() ? hv - mesh_volume(s) : -1.0, s.vertices)
+          const HullOfPoints hs = hull_of_points(s.vertices);
+          const double hv = hs.solid() ? hs.volume : 0.0;
+          // Only the comparison is kept: the estimate may stop at the tolerance.
+          return hull_concavity(hs, ps, concavity_tol, ps.closed() ? hv - mesh_volume(s) : -1.0,
+                                s.vertices, kConvexitySamples, concavity_tol)
                      .value <= concavity_tol;
         });
   }

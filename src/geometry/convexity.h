@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/hull.h"
 #include "geometry/mesh.h"
 #include "geometry/types.h"
 
@@ -34,6 +35,22 @@ struct Concavity {
   Vec3 witness = Vec3::Zero(), closest = Vec3::Zero();
   bool stopped = false;  ///< stopped above hull_concavity's `stop_above`: a lower bound
 };
+/// The facets of hull(points), computed on the points centred at their mean
+/// (as hull_concavity measures them): made once when one point set gets several
+/// estimates (a screen, then the full one) and its volume, the same qhull run
+/// each would make.
+struct HullOfPoints {
+  Vec3 centre = Vec3::Zero();
+  Points centred;  ///< the points − centre
+  HullFacets f;
+  std::vector<double> area;  ///< per facet
+  double volume = 0.0, total_area = 0.0;
+  bool facets = false;  ///< qhull found a solid hull (else the set is flat or smaller)
+  /// A solid hull of positive volume: what an estimate needs (else value 0).
+  bool solid() const { return facets && volume > 0; }
+};
+HullOfPoints hull_of_points(const Points& points);
+
 /// `points` need at least 4 affinely independent points (else value 0: a flat
 /// or smaller hull lies on the part). `missing_volume` is hull volume − the
 /// part's volume inside the hull, or a negative value when unknown (then the
@@ -46,6 +63,11 @@ struct Concavity {
 /// only where it is at most `within` (the value and witness of an estimate
 /// above it are the same).
 Concavity hull_concavity(const Points& points, const PreparedMesh& part, double void_radius,
+                         double missing_volume, const Points& surface,
+                         int samples = kConvexitySamples, double stop_above = INFINITY,
+                         const SurfacePolygons* on_part = nullptr);
+/// The same on hull_of_points(points).
+Concavity hull_concavity(const HullOfPoints& hull, const PreparedMesh& part, double void_radius,
                          double missing_volume, const Points& surface,
                          int samples = kConvexitySamples, double stop_above = INFINITY,
                          const SurfacePolygons* on_part = nullptr);
@@ -92,7 +114,10 @@ ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double sto
 /// Measures m once. A convex (within concavity_tol) single-shell mesh is its
 /// own piece. Open meshes: the concavity is against the surface, volume 0.
 /// Coordinates are centred before any arithmetic (parts sit at x ≈ 20,000 mm).
-Convexity measure_convexity(const Mesh& m, double concavity_tol);
+/// The whole mesh's estimate stops above `stop_above` (as hull_concavity's:
+/// then concavity.value is a lower bound and concavity.stopped is set); at
+/// `stop_above` = concavity_tol every flag is what the full estimate gives.
+Convexity measure_convexity(const Mesh& m, double concavity_tol, double stop_above = INFINITY);
 
 /// The connected components of m (triangles sharing a vertex; vertices with
 /// equal coordinates are one), each with its own compact vertex list.

@@ -79,22 +79,6 @@ std::vector<Vec3> cell_corners(const std::vector<Plane>& planes, double eps) {
   return out;
 }
 
-// Volume of hull(p); 0 when flat.
-double hull_volume(const Points& p) {
-  if (p.cols() < 4) return 0.0;
-  const Vec3 centre = p.rowwise().mean();
-  const Points q = p.colwise() - centre;
-  HullFacets f;
-  if (!hull_facets(q, f)) return 0.0;
-  double v = 0.0;
-  for (std::size_t i = 0; i < f.triangles.size(); ++i) {
-    const auto& t = f.triangles[i];
-    const double a = 0.5 * (q.col(t[1]) - q.col(t[0])).cross(q.col(t[2]) - q.col(t[0])).norm();
-    v += a * -f.offsets[i] / 3.0;
-  }
-  return v;
-}
-
 // A reflex (concave) edge of the closed, consistently oriented mesh: the solid
 // fills more than a half-space around it. The planes of its two triangles are
 // the natural cuts: on the far side of such a plane the notch is gone.
@@ -191,17 +175,21 @@ struct Context {
   bool stop() const { return out_of_work() || timed_out(); }
 };
 
-void finish_piece(Piece& p) {
+// `hull` is hull_of_points(p.points): its volume (0 when flat), and the
+// facets the piece's estimates reuse.
+void finish_piece(Piece& p, const HullOfPoints& hull) {
   p.lo = p.points.rowwise().minCoeff();
   p.hi = p.points.rowwise().maxCoeff();
-  p.volume = hull_volume(p.points);
+  p.volume = hull.facets ? hull.volume : 0.0;
 }
 
 // The part inside the cell: clipped triangles plus the cell's corners inside
 // the solid (corners of cut faces), reduced to its hull's vertices. Empty when
 // fewer than 4 points (nothing, or a flat sliver of surface). Its concavity is
-// estimated with `samples` (one unit of work).
-Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3>& probes = {}) {
+// estimated with `samples` (one unit of work); the full estimate stops above
+// `stop_above` (then the value is only a lower bound beyond it).
+Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3>& probes = {},
+               double stop_above = INFINITY) {
   // samples == 0: no estimate (a cell left when the time box or the budget ran
   // out); its concavity is unknown, so it counts as beyond any tolerance.
   Piece p;
@@ -249,7 +237,8 @@ Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3
   if (h.dimension < 3) return p;
   p.points = h.vertices;
   p.surface = std::move(all);
-  finish_piece(p);
+  const HullOfPoints hull = hull_of_points(p.points);
+  finish_piece(p, hull);
   if (samples == 0) {
     p.concavity.value = INFINITY;
     return p;
@@ -260,7 +249,7 @@ Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3
   --c.work_left;
   // The cell's clipped faces lie on the part: samples on them are not measured.
   const SurfacePolygons faces(p.surface, p.polys, c.eps);
-  const Concavity screen = hull_concavity(p.points, c.part, c.tol, c.void_missing, Points(3, 0),
+  const Concavity screen = hull_concavity(hull, c.part, c.tol, c.void_missing, Points(3, 0),
                                           tol::kDecomposeScreenSamples, INFINITY, &faces);
   if (screen.value > 2.0 * c.tol) {
     p.concavity = screen;
@@ -270,7 +259,7 @@ Piece piece_of(Context& c, const Cell& cell, int samples, const std::vector<Vec3
   probed << p.surface, Points::Zero(3, static_cast<long>(probes.size()));
   for (std::size_t i = 0; i < probes.size(); ++i) probed.col(p.surface.cols() + i) = probes[i];
   p.concavity =
-      hull_concavity(p.points, c.part, c.tol, c.void_missing, probed, samples, INFINITY, &faces);
+      hull_concavity(hull, c.part, c.tol, c.void_missing, probed, samples, stop_above, &faces);
   --c.work_left;
   return p;
 }
@@ -451,8 +440,13 @@ bool witness_cut(Context& c, const Cell& cell, const Piece& p, Plane& out) {
     Cell ca{cell.planes, p.tris, cell.depth + 1}, cb = ca;
     ca.planes.push_back(pl);
     cb.planes.push_back({-pl.n, -pl.d});
-    const Piece a = piece_of(c, ca, tol::kDecomposeSamples / 5, probes);
-    const Piece b = piece_of(c, cb, tol::kDecomposeSamples / 5, probes);
+    // A piece beyond the best cost so far rules its cut out whatever the
+    // other piece (cost >= either concavity): its estimate stops there, and the
+    // other is not made. The same cut wins as with full estimates. (The screen
+    // inside piece_of is not stopped: a full estimate may fall below it.)
+    const Piece a = piece_of(c, ca, tol::kDecomposeSamples / 5, probes, best);
+    if (a.concavity.value > best) continue;
+    const Piece b = piece_of(c, cb, tol::kDecomposeSamples / 5, probes, best);
     if (a.points.cols() == 0 || b.points.cols() == 0) continue;
     const double cost = std::max(a.concavity.value, b.concavity.value) +
                         1e-3 * p.concavity.value * std::abs(a.volume - b.volume) /
@@ -504,24 +498,16 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
         if (i != j) near[i].insert(j);
   using Entry = std::tuple<double, int, int>;  // mean added thickness, ids
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  // The joint hulls of the ranked pairs, kept for their estimates (the same
+  // qhull run: hull_of_points of the same points).
+  std::map<std::pair<int, int>, HullOfPoints> joint_hulls;
   auto rank = [&](int i, int j) {
     const Piece &a = *all[i], &b = *all[j];
-    const Points joint = joined_points(a.points, b.points);
-    const Vec3 centre = joint.rowwise().mean();
-    const Points centred = joint.colwise() - centre;
-    HullFacets f;
-    if (!hull_facets(centred, f)) return;
-    double v = 0.0, area = 0.0;
-    for (std::size_t k = 0; k < f.triangles.size(); ++k) {
-      const auto& t = f.triangles[k];
-      const double s = 0.5 * (centred.col(t[1]) - centred.col(t[0]))
-                                 .cross(centred.col(t[2]) - centred.col(t[0]))
-                                 .norm();
-      area += s;
-      v += s * -f.offsets[k] / 3.0;
-    }
-    const double added = std::max(0.0, v - a.volume - b.volume) / std::max(area, 1e-300);
-    if (added <= c.tol) heap.push({added, i, j});
+    HullOfPoints h = hull_of_points(joined_points(a.points, b.points));
+    if (!h.facets) return;
+    const double added =
+        std::max(0.0, h.volume - a.volume - b.volume) / std::max(h.total_area, 1e-300);
+    if (added <= c.tol) heap.push({added, i, j}), joint_hulls[{i, j}] = std::move(h);
   };
   for (std::size_t i = 0; i < all.size(); ++i)
     for (int j : near[i])
@@ -529,7 +515,9 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
   while (!heap.empty() && !c.stop()) {
     const auto [added, i, j] = heap.top();
     heap.pop();
+    auto ranked = joint_hulls.extract({i, j});
     if (!live[i] || !live[j]) continue;
+    const HullOfPoints& joint_hull = ranked.mapped();
     const Points joint = joined_points(all[i]->points, all[j]->points);
     // Screen: the pieces' own hull vertices projected onto the joint hull find
     // the notch between them (a hole's vertex under the chord) at once.
@@ -541,12 +529,12 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
     const SurfacePolygons faces(surface, polys, c.eps);
     // Both estimates stop at the tolerance: a merge beyond it is refused
     // whatever the exact value, and one within it ran to the end.
-    if (hull_concavity(joint, c.part, c.tol, c.void_missing, joint, tol::kDecomposeScreenSamples,
-                       c.tol, &faces)
+    if (hull_concavity(joint_hull, c.part, c.tol, c.void_missing, joint,
+                       tol::kDecomposeScreenSamples, c.tol, &faces)
             .value > c.tol)
       continue;
     const Concavity cv =
-        hull_concavity(joint, c.part, c.tol, c.void_missing, surface, samples, c.tol, &faces);
+        hull_concavity(joint_hull, c.part, c.tol, c.void_missing, surface, samples, c.tol, &faces);
     --c.work_left;
     if (cv.value > c.tol) continue;
     auto u = std::make_unique<Piece>();
@@ -554,7 +542,7 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
     u->surface = surface;
     u->polys = std::move(polys);
     u->concavity = cv;
-    finish_piece(*u);
+    finish_piece(*u, hull_of_points(u->points));
     const int id = static_cast<int>(all.size());
     live[i] = live[j] = false;
     std::set<int> nb;
@@ -599,7 +587,9 @@ Decomposition decompose_convex(const Mesh& mesh, double concavity_tol,
     out.note = "open mesh: one hull per shell";
     return finish();
   }
-  const Convexity whole = measure_convexity(m, concavity_tol);
+  // Only whether it is convex (and then its value) is used: a nonconvex
+  // mesh's estimate may stop at the tolerance.
+  const Convexity whole = measure_convexity(m, concavity_tol, concavity_tol);
   if (whole.convex) {
     out.pieces.push_back(to_mesh(convex_hull(m.vertices).vertices));
     out.complete = true;
