@@ -44,17 +44,18 @@ TEST(SurfacePolygons, SkippedSamplesNeverChangeAnEstimateAboveWithin) {
     const Mesh& m = meshes[k];
     const PreparedMesh part(m);
     const double within = std::max(coordinate_noise(m.vertices), 1e-6);
-    Points corners;
-    const SurfacePolygons faces = triangle_polygons(m, within, corners);
+    const SurfacePolygons faces = triangle_polygons(m, within);
     const Concavity all = hull_concavity(m.vertices, part, 0.01, -1.0, m.vertices);
     const Concavity some = hull_concavity(m.vertices, part, 0.01, -1.0, m.vertices,
                                           kConvexitySamples, INFINITY, &faces);
     EXPECT_LE(some.value, all.value) << k;
-    if (all.value > within) {
+    // The plate, the L-bracket and the board are nonconvex far above the noise:
+    // there the skipped samples change neither the value nor the witness.
+    const bool nonconvex = k == 0 || k == 1 || k == 4;
+    EXPECT_EQ(all.value > within, nonconvex) << k << ": " << all.value;
+    if (nonconvex) {
       EXPECT_EQ(some.value, all.value) << k;
       EXPECT_EQ(some.witness, all.witness) << k;
-    } else {
-      EXPECT_LE(all.value, within) << k;
     }
     // Every face's centroid is on the part, and covered.
     for (long t = 0; t < m.triangles.cols(); ++t) {

@@ -40,6 +40,11 @@ constexpr int kExitUsage = 2;
 // usage, the run's findings are not known to the caller.
 constexpr int kExitOutput = 2;
 
+// --jobs as given, else every core.
+int jobs_or_all_cores(int jobs) {
+  return jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
+}
+
 // One line on stderr; input text in it (ids, paths) cannot forge another line.
 void say(const char* level, const std::string& message) {
   std::cerr << "pdcheck: " << level << ": " << pd::printable(message) << "\n";
@@ -164,7 +169,7 @@ int run_merge(const std::vector<std::string>& inputs, const std::string& output,
       say_review(report);
       std::cerr << m.summary_line << "\n";
     }
-    return page_problems.empty() ? m.exit_code : 3;
+    return page_problems.empty() ? m.review.exit_code : 3;
   } catch (const pd::MergeError& e) {
     say("error", std::string("merge: ") + e.what());
   } catch (const pd::ReportInputError& e) {
@@ -290,16 +295,11 @@ int main(int argc, char** argv) {
   signal(SIGPIPE, SIG_IGN);
   pd::install_termination_handlers();
   if (html_cmd->parsed())
-    return html_command(
-        html_report, html_page,
-        jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
-        load_timeout, quiet);
+    return html_command(html_report, html_page, jobs_or_all_cores(jobs), load_timeout, quiet);
   if (merge_cmd->parsed())
-    return run_merge(
-        merge_inputs, merge_output, merge_cmd->count("--output") > 0, merge_ci,
-        extra_output_paths(*merge_cmd, merge_ci),
-        jobs > 0 ? jobs : static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN))),
-        load_timeout, merge_quiet || quiet);
+    return run_merge(merge_inputs, merge_output, merge_cmd->count("--output") > 0, merge_ci,
+                     extra_output_paths(*merge_cmd, merge_ci), jobs_or_all_cores(jobs),
+                     load_timeout, merge_quiet || quiet);
   if (scene_arg.empty()) {
     say("error", "a scene is required (a scene JSON file, or - for standard input); see --help");
     return kExitUsage;
@@ -354,7 +354,7 @@ int main(int argc, char** argv) {
     say("error", "--load-memory: must be a number of MB from 0 to 1e9");
     return kExitUsage;
   }
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
+  jobs = jobs_or_all_cores(jobs);
   pd::SceneSpec scene;
   pd::SolverSettings solver;
   const auto load_start = std::chrono::steady_clock::now();

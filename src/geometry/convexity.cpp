@@ -235,14 +235,14 @@ double coordinate_noise(const Points& v) {
   return std::max(1e-9 * size, 8.0 * std::ldexp(v.cwiseAbs().maxCoeff(), -24));
 }
 
-SurfacePolygons triangle_polygons(const Mesh& m, double within, Points& corners) {
-  corners.resize(3, 3 * m.triangles.cols());
+SurfacePolygons triangle_polygons(const Mesh& m, double within) {
+  Points corners(3, 3 * m.triangles.cols());
   std::vector<std::pair<long, long>> ranges;
   for (long t = 0; t < m.triangles.cols(); ++t) {
     for (int k = 0; k < 3; ++k) corners.col(3 * t + k) = m.vertices.col(m.triangles(k, t));
     ranges.push_back({3 * t, 3 * t + 3});
   }
-  return SurfacePolygons(corners, ranges, within);
+  return SurfacePolygons(std::move(corners), ranges, within);
 }
 
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above) {
@@ -253,9 +253,8 @@ ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double sto
   const double hull_volume = h.solid() ? h.volume : 0.0;
   // Samples on the mesh's own faces are on it: only the rest are measured
   // (a convex mesh's hull facets are its faces).
-  Points corners;
   const SurfacePolygons faces =
-      triangle_polygons(m, std::min(coordinate_noise(m.vertices), 0.25 * concavity_tol), corners);
+      triangle_polygons(m, std::min(coordinate_noise(m.vertices), 0.25 * concavity_tol));
   r.concavity =
       hull_concavity(h, part, concavity_tol, r.closed ? hull_volume - mesh_volume(m) : -1.0,
                      m.vertices, kConvexitySamples, stop_above, &faces);

@@ -77,9 +77,8 @@ Concavity hull_concavity(const HullOfPoints& hull, const PreparedMesh& part, dou
 /// 1e-9 of the mesh's size. `vertices` as read (before centring).
 double coordinate_noise(const Points& vertices);
 
-/// The polygons of m's triangles (for hull_concavity's `on_part`), whose
-/// corners are kept in `corners`.
-SurfacePolygons triangle_polygons(const Mesh& m, double within, Points& corners);
+/// The polygons of m's triangles (for hull_concavity's `on_part`).
+SurfacePolygons triangle_polygons(const Mesh& m, double within);
 
 /// A mesh's nonconvexity (scene units throughout).
 struct Convexity {

@@ -14,9 +14,10 @@ constexpr long long kMaxCells = 512;
 
 }  // namespace
 
-SurfacePolygons::SurfacePolygons(const Points& corners,
+SurfacePolygons::SurfacePolygons(Points corners_in,
                                  const std::vector<std::pair<long, long>>& ranges, double within)
-    : corners_(corners), within_(within) {
+    : corners_(std::move(corners_in)), within_(within) {
+  const Points& corners = corners_;
   double area = 0.0;
   for (const auto& [b, e] : ranges) {
     if (e - b < 3) continue;

@@ -2,7 +2,7 @@
 // faces clipped to a cell), found by point: a concavity sample inside one of
 // them is on the part, so its distance need not be measured. A uniform grid
 // over the polygons' boxes. One object per thread: covers() remembers the last
-// polygon it found. The corners are referenced, not copied.
+// polygon it found.
 #pragma once
 
 #include <array>
@@ -19,8 +19,7 @@ class SurfacePolygons {
   /// Polygon k has the corners `corners.col(ranges[k].first … ranges[k].second − 1)`,
   /// in order around it. Degenerate polygons, and polygons spanning too many
   /// grid cells, are left out (their points are measured as any other).
-  SurfacePolygons(const Points& corners, const std::vector<std::pair<long, long>>& ranges,
-                  double within);
+  SurfacePolygons(Points corners, const std::vector<std::pair<long, long>>& ranges, double within);
 
   /// True when x lies within `within` of one of the polygons (so within it of
   /// the part). False says nothing.
@@ -41,7 +40,7 @@ class SurfacePolygons {
   Cell cell_of(const Vec3& x) const;
   bool inside(const Polygon& g, const Vec3& x) const;
 
-  const Points& corners_;
+  Points corners_;
   double within_;
   double size_ = 1.0;  ///< grid spacing
   std::vector<Polygon> polygons_;

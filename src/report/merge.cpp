@@ -225,7 +225,6 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   out.context.scene_path = first.at("scene").get<std::string>();
   out.context.units = first.at("units").get<std::string>();
   out.context.tolerance = out.review_options.tolerance;
-  out.exit_code = out.review.exit_code;
   out.summary_line = summary_line(s, seconds);
   return out;
 }

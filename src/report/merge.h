@@ -33,12 +33,11 @@ ShardReport read_shard_report(const std::string& path);
 /// what the other writers (JUnit, SARIF, suppressions; writer.h) read.
 struct Merged {
   nlohmann::ordered_json doc;  ///< the report, as docs/report-format.md
-  int exit_code = 0;           ///< as one run's: 3 incomplete, 1 a finding at the bar, else 0
   std::string summary_line;    ///< for stderr
   ReportContext context;       ///< scene, units, tolerance
   RunResult run;  ///< parts (id, source, vertices, warnings, error; no geometry) and pairs
   ReviewOptions review_options;  ///< the caller's, with the report's tolerance and pair list
-  Review review;
+  Review review;                 ///< its exit_code is the merge's: as one run's
 };
 
 /// Shards 1..N of one scene, settings and tool version, each exactly once, in any
