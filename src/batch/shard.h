@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "batch/run_result.h"
 #include "geometry/aabb.h"
 #include "scene/scene.h"
 
@@ -28,11 +29,6 @@ namespace pd {
 class ShardError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
-};
-
-struct ShardSpec {
-  int index = 1;  ///< K, 1-based
-  int total = 1;  ///< N
 };
 
 /// "K/N" with 1 <= K <= N (throws ShardError naming the problem).

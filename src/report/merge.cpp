@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 #include "report/json_input.h"
 #include "report/pair_from_json.h"
 #include "report/report_json.h"

@@ -313,4 +313,12 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   return parts;
 }
 
+std::vector<Part> load_scene_parts(const std::string& path, const std::optional<std::string>& units,
+                                   std::optional<double> tolerance, int threads,
+                                   double load_timeout) {
+  SceneSpec scene = load_scene_file(path, units, threads);
+  if (tolerance) scene.tolerance = *tolerance;
+  return build_parts(scene, threads, {}, load_timeout);
+}
+
 }  // namespace pd

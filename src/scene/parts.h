@@ -86,4 +86,12 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
                               const PartsCache& cache = {},
                               double load_memory_mb = kAutoLoadMemory);
 
+/// The parts of the scene file at `path` as build_parts makes them (no cache),
+/// read in `units` when given and with `tolerance` in place of the file's when
+/// given: the geometry of a saved report (report/html_from_report.h). Throws
+/// SceneError when the scene cannot be read.
+std::vector<Part> load_scene_parts(const std::string& path, const std::optional<std::string>& units,
+                                   std::optional<double> tolerance, int threads,
+                                   double load_timeout);
+
 }  // namespace pd
