@@ -1,5 +1,6 @@
 // pdcheck: batch interference checking with penetration depths.
-// The CLI only parses options, calls the library and sets the exit code.
+// The CLI only parses options, calls the library and sets the exit code
+// (apps/pdcheck/cli.h; main() is in pdcheck.cpp).
 #include <signal.h>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include "batch/run.h"
 #include "batch/shard.h"
 #include "cache_file.h"
+#include "cli.h"
 #include "printable.h"
 #include "report/extra_outputs.h"
 #include "report/html_from_report.h"
@@ -198,7 +200,7 @@ int run_merge(const std::vector<std::string>& inputs, const std::string& output,
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
   CLI::App app{
       "pdcheck: convex interference checking with penetration depths (Abramson, Kent "
       "& Smith's MLSL + Ipopt), separating tessellation false positives from genuine "
@@ -442,6 +444,7 @@ int main(int argc, char** argv) {
   opt.quiet = quiet;
   opt.shard = shard;
   opt.reuse = prior ? &*prior : nullptr;
+  opt.faults = faults;
   if (!quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
   if (!no_cache) opt.cache_dir = cache_dir.empty() ? pd::default_cache_dir() : cache_dir;
   const bool jsonl = format == "jsonl";

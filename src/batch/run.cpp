@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
-#include <thread>
 
 #include "batch/broad_phase.h"
 #include "batch/content_hashes.h"
@@ -140,7 +138,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   std::vector<int> loaded;  // scene index of each loaded part (a shard's)
   SceneSpec shard_scene;
   if (options.shard) {
-    plan = plan_scene(scene, options.shard->total, options.jobs, options.load_timeout);
+    plan = plan_scene(scene, options.shard->total, options.jobs, options.load_timeout,
+                      options.faults.before_mesh_load);
     loaded = shard_parts(*plan, options.shard->index - 1);
     shard_scene.path = scene.path;
     shard_scene.units = scene.units;
@@ -158,7 +157,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     Progress progress(to_load.parts.size(), options.quiet, "parts");
     out.parts = build_parts(
         to_load, options.jobs, [&](size_t n) { progress.tick(n); }, options.load_timeout,
-        {options.cache_dir, &file_hashes}, options.load_memory_mb);
+        {options.cache_dir, &file_hashes}, options.load_memory_mb, options.faults.before_mesh_load);
     progress.finish();
   }
   for (size_t k = 0; k < out.parts.size(); ++k)
@@ -288,30 +287,27 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
 
   Progress progress(order.size(), options.quiet, "pairs");
   std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
-  // Fault injection for the crash-isolation test: the worker that takes the
-  // named pair dies as a solver crash would.
-  const char* crash = std::getenv("PDCHECK_TEST_CRASH_PAIR");
-  // And for the signal and broken-pipe tests: every pair takes this long.
-  const char* slow = std::getenv("PDCHECK_TEST_PAIR_SLEEP_MS");
-  const long slow_ms = slow ? std::atol(slow) : 0;
   auto task = [&](size_t k) {
     if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
     const auto [a, b] = pairs[k];
-    if (crash && parts[a].id + ":" + parts[b].id == crash) std::abort();
-    if (slow_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(slow_ms));
     return encode_pair_result(solve_part_pair(a, parts[a], b, parts[b], options.solver,
                                               options.tolerance, *ipopt, pair_checks(a, b)));
   };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
     PairResult r = pair_result_from_worker(ok, payload, pairs[k].first, pairs[k].second,
-                                                 method_name(options.solver.method));
+                                           method_name(options.solver.method));
     note_hull_stage(r, parts[r.a], parts[r.b]);
     out.pairs[k] = r;
     // A pair the refinement takes on is reported when it is decided.
     if (options.on_pair && !needs_refinement(r, parts[r.a], parts[r.b])) options.on_pair(r, parts);
     progress.tick();
   };
-  run_work_queue(order, {options.jobs, options.pair_timeout, options.on_warning}, task, done);
+  QueueOptions queue{options.jobs, options.pair_timeout, options.on_warning, {}};
+  if (options.faults.before_pair_solve)
+    queue.before_task = [&](size_t k) {
+      options.faults.before_pair_solve(parts[pairs[k].first], parts[pairs[k].second]);
+    };
+  run_work_queue(order, queue, task, done);
   progress.finish();
   out.stages.solve = lap(t);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, options, pair_checks);

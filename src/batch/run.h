@@ -15,6 +15,15 @@
 
 namespace pd {
 
+/// Tests only (fault injection): the product never sets these. Each runs in a
+/// worker process, to make it crash or stall as a solver or a reader could.
+struct FaultHooks {
+  /// Before a loader reads the mesh file at this path (scene/mesh_loader.h).
+  MeshLoadHook before_mesh_load;
+  /// Before the pair of parts (a, b) is solved.
+  std::function<void(const Part& a, const Part& b)> before_pair_solve;
+};
+
 struct RunOptions {
   SolverSettings solver;
   double tolerance = 0.0;  ///< scene units, > 0
@@ -35,6 +44,7 @@ struct RunOptions {
   std::optional<ShardSpec> shard;
   /// Take unchanged pairs' results from an earlier report (batch/reuse.h).
   const PriorResults* reuse = nullptr;
+  FaultHooks faults;  ///< tests only
 };
 
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options);

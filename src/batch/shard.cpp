@@ -53,7 +53,8 @@ std::optional<Aabb> plan_box(const Points& placed, const PartSpec& spec,
 
 // Boxes and vertex counts of every part. Mesh files are read in batches so a
 // large scene never holds all its meshes at once.
-void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, ScenePlan& plan) {
+void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, ScenePlan& plan,
+                const MeshLoadHook& before_load) {
   const size_t n = scene.parts.size();
   plan.boxes.assign(n, std::nullopt);
   plan.vertices.assign(n, 0);
@@ -77,7 +78,8 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
     const size_t f1 = std::min(files.size(), f0 + batch);
     std::vector<MeshRequest> requests;
     for (size_t f = f0; f < f1; ++f) requests.push_back(files[f].first);
-    const std::vector<LoadedMeshes> read = load_meshes_isolated(requests, threads, load_timeout);
+    const std::vector<LoadedMeshes> read =
+        load_meshes_isolated(requests, threads, load_timeout, kAutoLoadMemory, before_load);
     for (size_t f = f0; f < f1; ++f) {
       const LoadedMeshes& m = read[f - f0];
       if (m.error) continue;  // the part's own load reports why
@@ -173,11 +175,12 @@ double broad_phase_reach(const Checks& checks) {
   return reach;
 }
 
-ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout) {
+ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout,
+                     const MeshLoadHook& before_load) {
   ScenePlan plan;
   plan.shards = shards;
   plan.listed = scene.pairs.has_value();
-  plan_boxes(scene, threads, load_timeout, plan);
+  plan_boxes(scene, threads, load_timeout, plan, before_load);
   const int n = static_cast<int>(scene.parts.size());
   for (long v : plan.vertices) plan.vertices_total += v;
 

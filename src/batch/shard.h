@@ -57,8 +57,10 @@ struct ScenePlan {
 };
 
 /// The plan every shard computes alike (independent of `threads`). Reads every
-/// mesh file once (loader processes, `load_timeout` each) for its box; hulls nothing.
-ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout);
+/// mesh file once (loader processes, `load_timeout` each) for its box; hulls
+/// nothing. `before_load`: fault injection for tests (scene/mesh_loader.h).
+ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout,
+                     const MeshLoadHook& before_load = {});
 
 /// The parts shard `shard` (0-based) loads: those of its pairs and those it owns,
 /// sorted scene indices.

@@ -235,7 +235,8 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
 
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
                               const std::function<void(size_t)>& on_built, double load_timeout,
-                              const PartsCache& cache, double load_memory_mb) {
+                              const PartsCache& cache, double load_memory_mb,
+                              const MeshLoadHook& before_load) {
   // Distinct geometry first: the same mesh file under the same units,
   // transform and pieces is hulled once, and read once under any transform.
   // Inline parts are distinct.
@@ -293,7 +294,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     }
   if (!requests.empty()) {
     std::vector<LoadedMeshes> read =
-        load_meshes_isolated(requests, threads, load_timeout, load_memory_mb);
+        load_meshes_isolated(requests, threads, load_timeout, load_memory_mb, before_load);
     for (size_t r = 0; r < read.size(); ++r) mesh_files[requested[r]].read = std::move(read[r]);
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
