@@ -171,14 +171,10 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   if (checks.motion) out.simulated.push_back("motion");
   // Clearance per pair: the scene's minimum, or a named pair's own.
   std::map<std::pair<std::string, std::string>, double> own_clearance;
-  double reach = 0.0;  // how far apart boxes may be and still need a check
-  if (checks.clearance) {
-    reach = checks.clearance->min;
-    for (const auto& e : checks.clearance->pairs) {
+  if (checks.clearance)
+    for (const auto& e : checks.clearance->pairs)
       own_clearance[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.min;
-      reach = std::max(reach, e.min);
-    }
-  }
+  const double reach = broad_phase_reach(checks);
   auto pair_checks = [&](int a, int b) {
     PairChecks pc;
     if (checks.clearance) {
@@ -199,8 +195,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     for (size_t k = 0; k < loaded.size(); ++k) local[loaded[k]] = static_cast<int>(k);
     std::vector<Aabb> boxes(n);
     for (int k = 0; k < n; ++k)
-      if (!parts[k].error)
-        boxes[k] = checks.motion ? swept_box(parts[k], checks.motion->grid) : parts[k].box;
+      if (!parts[k].error) boxes[k] = culling_box(parts[k], checks);
     ShardManifest m;
     m.shard = *options.shard;
     m.parts_total = static_cast<long>(scene.parts.size());
@@ -223,8 +218,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
         ++out.culled;
       }
     }
-    const long all = m.parts_total * (m.parts_total - 1) / 2;
-    m.pairs_total = plan->listed ? static_cast<long>(plan->pairs.size()) : all;
+    m.pairs_total =
+        plan->listed ? static_cast<long>(plan->pairs.size()) : pair_count(m.parts_total);
     out.all_pairs = m.pairs_planned;
     m.pairs_checked = static_cast<long>(pairs.size());
     m.listed = plan->listed;
@@ -240,20 +235,19 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     out.all_pairs = static_cast<long>(pairs.size());
   } else {
-    out.all_pairs = static_cast<long>(n) * (n - 1) / 2;
+    out.all_pairs = pair_count(n);
     std::vector<Aabb> boxes;
     std::vector<int> usable;
     for (int k = 0; k < n; ++k) {
       if (parts[k].error) continue;
       usable.push_back(k);
-      // A moving part is culled by the box it sweeps over the time grid.
-      boxes.push_back(checks.motion ? swept_box(parts[k], checks.motion->grid) : parts[k].box);
+      boxes.push_back(culling_box(parts[k], checks));
     }
     // A part that failed to load is reported with its reason in the part list
     // (and the exit code); its pairs cannot be formed without geometry.
     for (const auto& [i, j] : overlapping_boxes(boxes, reach))
       pairs.emplace_back(usable[i], usable[j]);
-    const long usable_pairs = static_cast<long>(usable.size()) * (long(usable.size()) - 1) / 2;
+    const long usable_pairs = pair_count(static_cast<long>(usable.size()));
     out.unchecked = out.all_pairs - usable_pairs;  // not the broad phase's doing
     out.culled = usable_pairs - static_cast<long>(pairs.size());
   }

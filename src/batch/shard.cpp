@@ -166,15 +166,6 @@ ShardSpec shard_from_environment(const std::function<const char*(const char*)>& 
       "shard would check the same pairs. Give --shard K/N");
 }
 
-double broad_phase_reach(const Checks& checks) {
-  double reach = 0.0;
-  if (checks.clearance) {
-    reach = checks.clearance->min;
-    for (const auto& e : checks.clearance->pairs) reach = std::max(reach, e.min);
-  }
-  return reach;
-}
-
 ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout,
                      const MeshLoadHook& before_load) {
   ScenePlan plan;
@@ -207,14 +198,10 @@ ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double loa
 
   // Pairs along the axis where the parts spread most, cut into runs of equal
   // expected cost: neighbouring pairs share parts, so a shard's parts are few.
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  std::vector<Aabb> present;
   for (const auto& b : plan.boxes)
-    if (b) {
-      lo = lo.cwiseMin(0.5 * (b->lo + b->hi));
-      hi = hi.cwiseMax(0.5 * (b->lo + b->hi));
-    }
-  int axis = 0;
-  if ((hi.array() >= lo.array()).all()) (hi - lo).maxCoeff(&axis);
+    if (b) present.push_back(*b);
+  const int axis = widest_spread_axis(present);
   auto centre = [&](int k) {
     return plan.boxes[k] ? plan.boxes[k]->lo[axis] + plan.boxes[k]->hi[axis] : 0.0;
   };

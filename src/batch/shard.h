@@ -42,9 +42,6 @@ ShardSpec parse_shard(const std::string& text);
 ShardSpec shard_from_environment(const std::function<const char*(const char*)>& env,
                                  std::optional<int> total, std::optional<int> base);
 
-/// How far apart boxes may be and still need a check: the largest clearance asked.
-double broad_phase_reach(const Checks& checks);
-
 struct ScenePlan {
   int shards = 1;
   bool listed = false;  ///< the scene lists its pairs: every listed pair, no broad phase
