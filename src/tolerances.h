@@ -99,6 +99,30 @@ inline constexpr long kDecomposeMaxWork = 4000;
 /// finds more than twice the tolerance concave is cut without the full one.
 inline constexpr int kDecomposeScreenSamples = 64;
 
+/// Overlap thickness of a nonconvex pair (solve/overlap_thickness.h). Effort,
+/// not accuracy: the bracket stays certified whatever they are, and a pair whose
+/// bracket still straddles the tolerance when they run out is `undecided`.
+/// Distance evaluations (one per part and cell centre or ascent step, ~2-10 us
+/// each) per pair: deterministic, so the result is the same for every --jobs.
+inline constexpr long kThicknessMaxEvaluations = 400000;
+/// The wall-clock box per pair, seconds: the users' safety net, never reached on
+/// the benchmark assemblies (their slowest pair stays far below it).
+inline constexpr double kThicknessSeconds = 20.0;
+/// Once an interference is certified (lower bound > tolerance), the search goes
+/// on until the bracket's upper end is within this fraction of its lower end,
+/// so the reported depth means something (bounded by the same budget).
+inline constexpr double kThicknessBracket = 0.25;
+/// Local plane models (geometry/solid_distance.h). Effort, not accuracy: at
+/// most this many faces near a cell, distinct planes, and LPs per cell (one per
+/// choice of each part's active hole plane); beyond them the cell is split and
+/// the Lipschitz bound holds. And the largest kappa = 1/cos(spread of a hole's
+/// normals) accepted: 1.4, a spread <= 44 degrees, so any two hole normals are
+/// < 90 degrees apart and just outside each hole face lies the hole.
+inline constexpr int kLocalPlanesMaxFaces = 192;
+inline constexpr int kLocalPlanesMaxPlanes = 24;
+inline constexpr int kLocalPlanesMaxChoices = 32;
+inline constexpr double kLocalPlanesMaxKappa = 1.4;
+
 /// HTML report (report/write_html.h): the most triangles one part, piece or
 /// overlap is shown with (larger ones decimated: report/html_geometry.h), and
 /// the most the whole page holds (later findings then get no 3D view). Display
