@@ -112,6 +112,10 @@ inline constexpr double kThicknessSeconds = 20.0;
 /// on until the bracket's upper end is within this fraction of its lower end,
 /// so the reported depth means something (bounded by the same budget).
 inline constexpr double kThicknessBracket = 0.25;
+/// Effort, not accuracy: the most points one surface is sampled at for the
+/// deepest-surface-point bound (geometry/solid_distance.h). Any sample is a
+/// sound lower bound; more only find a deeper one.
+inline constexpr long kSurfaceDepthSamples = 20000;
 /// Local plane models (geometry/solid_distance.h). Effort, not accuracy: at
 /// most this many faces near a cell, distinct planes, and LPs per cell (one per
 /// choice of each part's active hole plane); beyond them the cell is split and

@@ -94,13 +94,13 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
   if (t.lower > 0) r.at = t.at;
   r.confirmed = true;
   // A part thinner than the tolerance pushed deep into another has a thin
-  // overlap: its deepest vertex, a lower bound of any separating move, says
-  // it is a clash all the same.
+  // overlap: the deepest point of its surface inside the other, a lower bound
+  // of any separating move, says it is a clash all the same.
   if (classify(mesh.vertex_depth, tolerance, pair_size) == Status::kInterference &&
       t.outcome != Outcome::kAbove) {
     r.status = Status::kInterference;
     r.depth = mesh.vertex_depth;
-    r.depth_source = "vertex";
+    r.depth_source = "surface";
     r.direction = mesh.vertex_direction;
     r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
     r.at.reset();
@@ -116,9 +116,9 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
     r.confirmed = false;
     if (t.outcome == Outcome::kNoInside) {
       r.depth = mesh.vertex_depth;
-      r.depth_source = "vertex";
+      r.depth_source = "surface";
       r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
-      r.reason = why_not + ": only the surfaces' meeting and the deepest vertex are known";
+      r.reason = why_not + ": only the surfaces' meeting and the deepest surface point are known";
     } else {
       r.reason = std::string(t.outcome == Outcome::kTime ? "time box" : "work budget") +
                  " reached after " + std::to_string(t.evaluations) +
@@ -329,6 +329,15 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
       const size_t n = thick[k];
       const auto [a, b] = pairs[flagged[n]];
       const auto t0 = Clock::now();
+      // The deepest point of either surface inside the other: a lower bound of
+      // any separating move that needs no inside of the surface's own part.
+      const SurfaceDepth ab = surface_depth(solids[a]->mesh(), *solids[b]);
+      const SurfaceDepth ba = surface_depth(solids[b]->mesh(), *solids[a]);
+      MeshVerdict& v = verdicts[n];
+      if (std::max(ab.depth, ba.depth) > v.vertex_depth) {
+        v.vertex_depth = std::max(ab.depth, ba.depth);
+        v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
+      }
       thickness[n] =
           overlap_thickness(*solids[a], *solids[b], options.tolerance, results[flagged[n]].depth);
       results[flagged[n]].time_ms +=

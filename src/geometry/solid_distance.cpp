@@ -129,6 +129,52 @@ DistanceBounds SolidDistance::at(const Vec3& p) const {
   return r;
 }
 
+SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long max_samples) {
+  SurfaceDepth best;
+  if (!b.closed()) return best;
+  std::vector<int> faces;
+  const Eigen::AlignedBox3d& box = b.box();
+  a.faces_in_box(box.min(), box.max(), faces);
+  // Faces are split in four until a piece is within a quarter of b's thinnest
+  // extent (a rod through a large wall face is sampled across its section);
+  // pieces outside b's box are dropped, so the work follows the overlap.
+  const double spacing = std::max(box.sizes().minCoeff() / 4, 1e-300);
+  long samples = 0;
+  const auto sample = [&](const Vec3& p) {
+    if (!box.contains(p)) return;
+    ++samples;
+    const DistanceBounds d = b.at(p);
+    if (!(d.lower > best.depth)) return;
+    best.depth = d.lower;
+    best.at = p;
+    const Vec3 dir = (p - d.nearest).normalized();
+    if (dir.allFinite()) best.direction = dir;
+  };
+  std::vector<std::pair<std::array<Vec3, 3>, int>> stack;
+  for (int f : faces) stack.push_back({a.face(f), 0});
+  while (!stack.empty() && samples < max_samples) {
+    const auto [t, level] = stack.back();
+    stack.pop_back();
+    Eigen::AlignedBox3d tb(t[0]);
+    tb.extend(t[1]).extend(t[2]);
+    if (!tb.intersects(box)) continue;
+    const double longest =
+        std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
+    if (longest <= spacing || level >= 16) {
+      for (const Vec3& p : t) sample(p);
+      sample((t[0] + t[1] + t[2]) / 3);
+      continue;
+    }
+    const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+    for (const std::array<Vec3, 3>& q : {std::array<Vec3, 3>{t[0], m01, m20},
+                                        std::array<Vec3, 3>{m01, t[1], m12},
+                                        std::array<Vec3, 3>{m20, m12, t[2]},
+                                        std::array<Vec3, 3>{m01, m12, m20}})
+      stack.push_back({q, level + 1});
+  }
+  return best;
+}
+
 LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const {
   LocalPlanes out;
   if (!exact_ || !oriented_ || whole_.has_segments()) return out;

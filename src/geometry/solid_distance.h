@@ -13,6 +13,7 @@
 #include "geometry/mesh.h"
 #include "geometry/mesh_intersect.h"
 #include "geometry/types.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -97,5 +98,21 @@ class SolidDistance {
   Eigen::AlignedBox3d box_;
   double noise_ = 0.0;
 };
+
+/// A lower bound of a pair's penetration depth from one part's surface, which
+/// needs no inside of that part (open meshes, thin sheets): a point p of a's
+/// surface strictly inside closed b must leave b, so any separating translation
+/// is at least sd_b(p) long. The largest sd_b over points sampled on a's faces
+/// within b's box (every corner there included, so it is never below the
+/// deepest vertex), at most `max_samples` points.
+struct SurfaceDepth {
+  double depth = 0.0;  ///< 0 when no sample lies strictly inside b
+  Vec3 at = Vec3::Zero();  ///< the sample realising it
+  /// Unit; the DepthSolution convention (solve/result.h): (p − q)/|p − q| for
+  /// p of a with nearest point q on b's surface.
+  Vec3 direction = Vec3::UnitZ();
+};
+SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b,
+                           long max_samples = tol::kSurfaceDepthSamples);
 
 }  // namespace pd

@@ -14,6 +14,7 @@ std::string short_number(double x) {
 std::string depth_meaning(const std::string& depth_source) {
   if (depth_source == "thickness") return "overlap thickness";
   if (depth_source == "vertex") return "deepest vertex depth";
+  if (depth_source == "surface") return "deepest surface point depth";
   if (depth_source == "pieces") return "piece depth";
   return "depth";
 }

@@ -201,7 +201,7 @@
     else {
       const source = f.depth_source || 'hull';
       const meaning = { hull: 'depth', thickness: 'overlap thickness', vertex: 'deepest vertex',
-        pieces: 'piece depth', 'mesh-test': 'depth' }[source] || 'depth';
+        surface: 'deepest surface point', pieces: 'piece depth', 'mesh-test': 'depth' }[source] || 'depth';
       if (f.status === 'undecided' && f.depth_bounds)
         add('depth', 'between ' + f.depth_bounds.map(len).join(' and ') + ' (tolerance ' + len(data.tolerance) + ')', COLORS.arrow);
       else
