@@ -20,6 +20,14 @@ inline constexpr double kFlat = 1e-12;
 /// and facet offsets (a few hundred ulps), well below any tessellation tolerance.
 inline constexpr double kTouch = 1e-11;
 
+/// A gap (unit frame) at or below this is the rounding of evaluating h_P − h_Q
+/// at a facet normal of a touching pair (a few dozen ulps of the unit frame's
+/// coordinates; the normal itself is rounded too): the pair touches and its
+/// depth is 0, in both the exact reference and mlsl, so the two cannot differ
+/// by which side of 0 their rounding fell. Far below the 1e-12 of the pair's
+/// scale every depth is held to, and below kTouch.
+inline constexpr double kGapRounding = 1e-14;
+
 /// Depths closer to the user's tolerance than this fraction of the pair size are
 /// on the boundary: they are always classified as false positives (depth <= tol),
 /// so a status cannot flip with rounding noise. The report gives the margin.
@@ -69,6 +77,10 @@ inline constexpr double kDescentSnapBand = 1e-3;
 /// The facet snap accepts a plane when its normal fits the active vertices to
 /// this residual (smallest singular value of the active edge matrix).
 inline constexpr double kSnapResidual = 1e-9;
+/// The snap's fitted plane is then refined to the exact facet of P − Q with its
+/// normal within this angle (radians) of the fit (solve/facet_snap.cpp): a fit
+/// within kSnapResidual of edges >= 1e-3 of the frame is within 1e-6 of it.
+inline constexpr double kSnapCap = 1e-5;
 
 /// --baseline: a finding of unchanged status is `updated` when its depth moved
 /// by more than both kBaselineDepthAbs · tolerance and kBaselineDepthRel · the
