@@ -17,9 +17,10 @@ an empty cache directory (cold), and a rerun with the same cache (cached). Repor
   - the count of `undecided` pairs;
   - over the refined pairs (pairs of the default cold runs whose depth_source is not `hull`), the
     median and p99 of the per-pair `time_ms` (each pair's median over the runs).
-Ends with a markdown table (for docs/performance.md). A pdcheck run that fails (exit other than 0, 1
-or 3, no report, or past --timeout) is reported as such and the benchmark goes on. Exits non-zero
-only on usage errors or when the assemblies cannot be generated.
+Ends with a markdown table (for docs/performance.md); OUT/results.json keeps the numbers. A pdcheck
+run that fails (exit other than 0, 1 or 3, no report, or past --timeout) is reported as such and
+the benchmark goes on. Exits non-zero only on usage errors or when the assemblies cannot be
+generated.
 """
 import argparse
 import json
@@ -76,6 +77,10 @@ def score(report, expected):
 
 def fmt_num(x):
     return "-" if x is None else ("%.4g" % x)
+
+
+def fmt_ms(x):
+    return "-" if x is None else ("%.1f" % x if x < 100 else "%.0f" % x)
 
 
 def describe(e, p, st):
@@ -163,6 +168,7 @@ def main():
             med["cached"] / med["hull"]))
         for e in errors:
             print("  pdcheck failed: " + e)
+        cold_wrong = set()
         for m in MODES:
             if not reports[m]:
                 row[m] = None
@@ -170,11 +176,19 @@ def main():
             rep = reports[m][-1]
             ok, wrong, unlisted = score(rep, expected)
             undecided = sum(1 for p in rep["pairs"] if p["status"] == "undecided")
-            row[m] = {"ok": ok, "wrong": len(wrong), "undecided": undecided}
+            row[m] = {"ok": ok, "wrong": len(wrong), "undecided": undecided,
+                      "wrong_pairs": [{"a": e["a"], "b": e["b"], "expect": e["expect"], "status": st,
+                                       "depth": p.get("depth") if p else None,
+                                       "depth_bounds": p.get("depth_bounds") if p else None,
+                                       "depth_source": p.get("depth_source") if p else None}
+                                      for e, p, st in wrong]}
             print("%s: %d/%d nominal relations recovered, %d undecided" % (m, ok, n, undecided))
+            if m == "cold":
+                cold_wrong = {(w[0]["a"], w[0]["b"], w[2]) for w in wrong}
             if m != "hull":
-                for w in wrong:
-                    print("  wrong: " + describe(*w))
+                for w in wrong:  # the cached run's only where it differs from the cold run's
+                    if m == "cold" or (w[0]["a"], w[0]["b"], w[2]) not in cold_wrong:
+                        print("  wrong: " + describe(*w))
                 for p in unlisted:
                     print("  unlisted pair flagged: %s / %s %s depth %s" % (p["a"], p["b"], p["status"],
                                                                           fmt_num(p.get("depth"))))
@@ -212,15 +226,17 @@ def main():
             r["name"], r["parts"], r["max_tris"], r["relations"], cell(r, "hull", "ok"), cell(r, "cold", "ok"),
             cell(r, "cold", "undecided"), r["med"]["hull"], r["med"]["cold"], r["med"]["cached"],
             r["med"]["cold"] / r["med"]["hull"], r["med"]["cached"] / r["med"]["hull"], n_ref,
-            fmt_num(med_ms), fmt_num(p99_ms)))
+            fmt_ms(med_ms), fmt_ms(p99_ms)))
     if rows:
         tot = lambda m, k: sum(r[m][k] for r in rows if r.get(m))
         print("| **all** | %d | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.2fx | %.2fx | %d | %s | %s |" % (
             sum(r["parts"] for r in rows), max(r["max_tris"] for r in rows), sum(r["relations"] for r in rows),
             tot("hull", "ok"), tot("cold", "ok"), tot("cold", "undecided"), totals["hull"], totals["cold"],
             totals["cached"], totals["cold"] / totals["hull"], totals["cached"] / totals["hull"],
-            len(all_refined), fmt_num(statistics.median(all_refined) if all_refined else None),
-            fmt_num(p99(all_refined))))
+            len(all_refined), fmt_ms(statistics.median(all_refined) if all_refined else None),
+            fmt_ms(p99(all_refined))))
+        with open(os.path.join(a.out, "results.json"), "w") as f:
+            json.dump({"pdcheck": a.pdcheck, "runs": a.runs, "jobs": a.jobs, "assemblies": rows}, f, indent=1)
         print("\nmedian of %d runs per assembly, --jobs %d; times are wall seconds of the whole pdcheck "
               "process; ratios of the totals in the last row" % (a.runs, a.jobs))
 
