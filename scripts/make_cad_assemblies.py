@@ -15,7 +15,8 @@ Per assembly OUTDIR/NAME/ holds:
   expected.json  {"assembly", "tolerance", "parts": {id: {triangles, bodies, placement, file}},
                   "pairs": [{"a", "b", "expect", "nominal_depth"?, "gap"?, "max_sag", "note"}]}
 OUTDIR/.render-cache/ keeps OpenSCAD's output per CSG text (SHA-256), so a rerun, or a variant
-reusing a part, renders nothing again. OUTDIR/index.json lists the assemblies written.
+reusing a part, renders nothing again. Triangles are written in a canonical order: the files are
+the same byte for byte on every run (OpenSCAD's own order is not). OUTDIR/index.json lists the assemblies written.
 
 How the files are written (the habits of real exporters):
   - each part is OpenSCAD CSG in assembly coordinates, rendered with `openscad --export-format
@@ -58,9 +59,12 @@ Tolerances (why each relation keeps its class after tessellation and float32):
     at most 1e-5 mm.
   - So each relation is checked here when written: contact: max_sag + F32_PAIR <= 0.75 tolerance;
     clearance: gap - max_sag - F32_PAIR >= 0.02 mm; interference: nominal_depth - max_sag - F32_PAIR
-    >= 2 tolerance. The tolerances are 0.05 mm (round fits: sags up to 0.03 mm at r = 23.5,
-    n = 72) or 0.1 mm (flat contacts); the interferences are 0.25-1.0 mm. --quick caps every $fn at
-    24 and keeps only assemblies whose contacts still pass this check.
+    >= 2 tolerance. The tolerances are 0.05 mm where round fits meet (the largest contact sag is
+    0.022 mm: a ring r 23.5 in a seat of n = 72) or 0.1 mm (flat contacts only); the interferences
+    are 0.25-1.0 mm. --quick caps every $fn at 24 and keeps only assemblies whose contacts still
+    pass this check.
+  - $fn: 32-128 for round features; tiny ones as exporters tessellate them by chord error (pins
+    r 0.4 and a grease hole r 1.5 at 16), hexagons at 6.
 
 The gears' nominal relations are checked in the plane here too (see gear_pair): the exact
 involute profiles (sampled finely) and the rendered polylines are tested for overlap (vertex in
@@ -271,7 +275,7 @@ def bearing_balls_check():
 
 
 def bearing_housing(ctx, name):
-    fr, fh, fb, fs = 96, 72, 24, 64
+    fr, fh, fb, fs = 96, 72, 32, 64
     co, ci = RP + RB - RG, RP - RB + RG
     outer = ("rotate_extrude($fn=%d) difference(){ translate([%r,-7]) square([%r,14]);"
              " translate([%r,0]) circle(r=%r, $fn=48); }" % (ctx.fn(fr), RP + 2.0, 23.5 - RP - 2.0, co, RG))
@@ -623,7 +627,18 @@ def render(src, cache, exe, version):
     tris = read_stl(out)
     if not tris:
         sys.exit("openscad rendered an empty body:\n" + src)
-    return tris
+    return canonical(tris)
+
+
+def canonical(tris):
+    """OpenSCAD (CGAL) writes the same triangles in a different order from run to run: each
+    triangle starts at its smallest vertex (orientation kept) and the list is sorted, so that
+    the files, and pdcheck's content hashes of them, are the same on every machine."""
+    out = []
+    for t in tris:
+        k = min(range(3), key=lambda i: t[i])
+        out.append((t[k], t[(k + 1) % 3], t[(k + 2) % 3]))
+    return sorted(out)
 
 
 def write_stl(path, tris, header):
