@@ -16,7 +16,8 @@ Per assembly OUTDIR/NAME/ holds:
                   "pairs": [{"a", "b", "expect", "nominal_depth"?, "gap"?, "max_sag", "note"}]}
 OUTDIR/.render-cache/ keeps OpenSCAD's output per CSG text (SHA-256), so a rerun, or a variant
 reusing a part, renders nothing again. Triangles are written in a canonical order: the files are
-the same byte for byte on every run (OpenSCAD's own order is not). OUTDIR/index.json lists the assemblies written.
+the same byte for byte on every run (OpenSCAD's own order is not). OUTDIR/index.json lists the
+assemblies written.
 
 How the files are written (the habits of real exporters):
   - each part is OpenSCAD CSG in assembly coordinates, rendered with `openscad --export-format
