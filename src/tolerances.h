@@ -129,15 +129,16 @@ inline constexpr double kThicknessBracket = 0.25;
 /// sound lower bound; more only find a deeper one.
 inline constexpr long kSurfaceDepthSamples = 20000;
 /// Local plane models (geometry/solid_distance.h). Effort, not accuracy: at
-/// most this many faces near a cell, distinct planes, and LPs per cell (one per
-/// choice of each part's active hole plane); beyond them the cell is split and
-/// the Lipschitz bound holds. And the largest kappa = 1/cos(spread of a hole's
-/// normals) accepted: 1.4, a spread <= 44 degrees, so any two hole normals are
-/// < 90 degrees apart and just outside each hole face lies the hole.
-inline constexpr int kLocalPlanesMaxFaces = 192;
-inline constexpr int kLocalPlanesMaxPlanes = 24;
+/// most this many faces near a cell, hole planes (the nearest supporting planes
+/// kept: each bounds on its own), and LPs per cell (one per choice of each
+/// part's active hole plane); beyond them the cell is split and the Lipschitz
+/// bound holds. And the largest kappa = 1/cos(spread of a hole's normals)
+/// accepted: 2, a spread <= 60 degrees (a shaft's shoulder, a 90-degree inner
+/// corner, has sqrt 2); a larger kappa would only loosen the bound.
+inline constexpr int kLocalPlanesMaxFaces = 512;
+inline constexpr int kLocalPlanesMaxPlanes = 16;
 inline constexpr int kLocalPlanesMaxChoices = 32;
-inline constexpr double kLocalPlanesMaxKappa = 1.4;
+inline constexpr double kLocalPlanesMaxKappa = 2.0;
 
 /// HTML report (report/write_html.h): the most triangles one part, piece or
 /// overlap is shown with (larger ones decimated: report/html_geometry.h), and

@@ -144,7 +144,8 @@ TEST(OverlapThickness, FarFromTheOriginInFloat32StaysDecided) {
 TEST(OverlapThickness, MultiBodyBoltIsTheUnionOfItsShells) {
   // Head and shank as two closed bodies face to face (as multi-body exports
   // write them); the block overlaps both across the shared face, where the
-  // largest ball (radius 1.5, centre z = 9.5) spans head and shank.
+  // largest ball (radius 1.5, centre z = 9.5) spans head and shank: no single
+  // shell holds it, so the union is what is measured.
   const Mesh bolt = sh::joined({sh::box(Vec3(0, 0, 10), Vec3(10, 10, 12)),
                                 sh::box(Vec3(3, 3, 0), Vec3(7, 7, 10))});
   const Mesh block = sh::box(Vec3(2, 2, 8), Vec3(8, 8, 11));

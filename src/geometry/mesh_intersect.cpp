@@ -257,6 +257,10 @@ bool PreparedMesh::inside(const Vec3& v) const {
   return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_BOUNDED_SIDE;
 }
 
+bool PreparedMesh::outside(const Vec3& v) const {
+  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_UNBOUNDED_SIDE;
+}
+
 bool PreparedMesh::oriented() const {
   return impl_->parity && impl_->oriented;
 }
@@ -265,25 +269,30 @@ bool PreparedMesh::has_segments() const {
   return !impl_->segments.empty();
 }
 
-double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest) const {
+double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
   Point3 q = p;
   double d2 = INFINITY;
   int side = 0;
+  Vec3 normal = Vec3::Zero();
   if (!m.faces.empty()) {
     const auto [qf, face] = m.tree.closest_point_and_primitive(p);
     q = qf;
     d2 = CGAL::squared_distance(p, q);
     if (m.parity) side = nearest_face_side(m, v, q, face, d2);
+    const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
+    normal = Vec3(n.x(), n.y(), n.z()).normalized();
   }
   for (const Segment3& s : m.segments)
     if (CGAL::squared_distance(p, s) < d2) {
       q = m.closest(p);
       d2 = CGAL::squared_distance(p, q);
       side = 0;
+      normal.setZero();
       break;
     }
+  if (face_normal) *face_normal = normal;
   if (nearest) *nearest = Vec3(q.x(), q.y(), q.z());
   const double d = std::sqrt(d2);
   if (!m.parity || d == 0) return -d;

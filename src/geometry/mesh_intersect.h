@@ -38,8 +38,11 @@ class PreparedMesh {
   bool has_segments() const;
   /// Signed distance to the surface: > 0 strictly inside the closed mesh
   /// (even-odd rule), else minus the distance; the nearest surface point in
-  /// *nearest. On open meshes it is never positive.
-  double signed_distance(const Vec3& p, Vec3* nearest = nullptr) const;
+  /// *nearest and its face's unit normal (from the corners' order; zero when
+  /// the nearest is a degenerate triangle) in *face_normal. On open meshes it
+  /// is never positive.
+  double signed_distance(const Vec3& p, Vec3* nearest = nullptr,
+                         Vec3* face_normal = nullptr) const;
   /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to `out`.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
   /// Corners of face i (0 <= i < faces()), in the mesh's order.
@@ -51,6 +54,8 @@ class PreparedMesh {
   Vec3 closest_point(const Vec3& p) const;
   /// p strictly inside the closed mesh (even-odd rule); always false when open.
   bool inside(const Vec3& p) const;
+  /// p strictly outside the closed mesh (not on its surface); always false when open.
+  bool outside(const Vec3& p) const;
   /// Distance from p to the part: 0 strictly inside a closed mesh, else the
   /// distance to the surface. On consistently oriented closed meshes the side
   /// of the nearest face decides when the nearest point is inside that face

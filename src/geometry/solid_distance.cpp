@@ -10,7 +10,6 @@
 #include "tolerances.h"
 
 namespace pd {
-
 namespace {
 
 int find_root(std::vector<int>& parent, int i) {
@@ -77,6 +76,32 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
   return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
 }
 
+// The part of triangle t inside the box [lo, hi] (Sutherland–Hodgman against
+// its six planes): the side tests below need only what lies near the cell, and
+// a large face's far corners would fail them for no reason.
+std::vector<Vec3> clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3& hi) {
+  std::vector<Vec3> poly(t.begin(), t.end()), next;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int upper = 0; upper < 2; ++upper) {
+      const double bound = upper ? hi[axis] : lo[axis];
+      const auto inside = [&](const Vec3& p) { return upper ? p[axis] <= bound : p[axis] >= bound; };
+      next.clear();
+      for (size_t k = 0; k < poly.size(); ++k) {
+        const Vec3 &p = poly[k], &q = poly[(k + 1) % poly.size()];
+        if (inside(p)) next.push_back(p);
+        if (inside(p) != inside(q)) {
+          const double u = (bound - p[axis]) / (q[axis] - p[axis]);
+          Vec3 x = p + u * (q - p);
+          x[axis] = bound;
+          next.push_back(x);
+        }
+      }
+      poly.swap(next);
+      if (poly.empty()) return poly;
+    }
+  return poly;
+}
+
 }  // namespace
 
 SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
@@ -85,6 +110,7 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) box_.extend(Vec3(mesh.vertices.col(mesh.triangles(k, t))));
   noise_ = coordinate_noise(mesh.vertices);
+  hair_ = 1e-9 * std::max(box_.diagonal().norm(), box_.max().cwiseAbs().maxCoeff());
   std::vector<Mesh> shells = shells_of(mesh);
   if (shells.empty()) {
     if (!closed_) note_ = "open mesh: no inside";
@@ -107,14 +133,14 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
                         [](const PreparedMesh& s) { return s.closed(); });
   shells_ = std::move(prepared);
   note_ = closed_ ? std::to_string(shells_.size()) +
-                        " shells whose surfaces meet: their union, distance from inside "
-                        "known from below only"
+                        " shells whose surfaces meet: taken as their union"
                   : "open shell: no inside";
 }
 
 DistanceBounds SolidDistance::at(const Vec3& p) const {
   DistanceBounds r;
-  const double sd = whole_.signed_distance(p, &r.nearest);
+  Vec3 normal = Vec3::Zero();
+  const double sd = whole_.signed_distance(p, &r.nearest, &normal);
   if (exact_) {
     r.lower = r.upper = sd;
     return r;
@@ -123,9 +149,18 @@ DistanceBounds SolidDistance::at(const Vec3& p) const {
   const bool inside = closed_ && std::any_of(shells_.begin(), shells_.end(),
                                              [&](const PreparedMesh& s) { return s.inside(p); });
   // Inside the union: every triangle is at least as near as the union's
-  // surface (shared faces are not surface), so d is a lower bound only.
+  // surface (shared faces are not surface), so d is a lower bound. It is also
+  // one from above, up to a hair, where the nearest point is union surface:
+  // a point a hair outside its face that lies outside every shell is a point
+  // of the complement (the ray tests are exact).
   r.lower = inside ? d : -d;
   r.upper = inside ? INFINITY : -d;
+  if (inside && normal.allFinite() && normal.norm() > 0) {
+    const Vec3 y = r.nearest + hair_ * normal;
+    if (std::all_of(shells_.begin(), shells_.end(),
+                    [&](const PreparedMesh& s) { return s.outside(y); }))
+      r.upper = (y - p).norm();
+  }
   return r;
 }
 
@@ -175,46 +210,58 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   return best;
 }
 
-LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const {
+namespace {
+
+// The plane model of one oriented closed mesh about a box (SolidDistance::local_planes).
+LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d,
+                        double r) {
   LocalPlanes out;
-  if (!exact_ || !oriented_ || whole_.has_segments()) return out;
+  if (!mesh.oriented() || mesh.has_segments()) return out;
   // A face may cross a plane it should not by at most `cap` (the coordinates'
   // rounding) and still count as on its side; the crossings actually measured
   // become the bound's slack, so the certificate holds exactly.
-  const double cap = noise_;
-  const double reach = tol::kLocalPlanesMaxKappa * (d + 2.0 * r + 2.0 * cap) + 2.0 * r;
+  const double cap = noise;
+  // Every foot point a bound below uses lies within `reach` of c: a supporting
+  // plane's within r + s_k(x) ≤ 2r + s_k(c) (planes farther are not used), a
+  // hole's within r + kappa·(σ_c + r + slack) (checked once kappa is known).
+  const double reach = tol::kLocalPlanesMaxKappa * (d + r + cap) + r;
   std::vector<int> near;
-  whole_.faces_in_box(c.array() - reach, c.array() + reach, near);
+  mesh.faces_in_box(c.array() - reach, c.array() + reach, near);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
   // The faces meeting the ball, grouped by plane (a quad's two triangles, a
   // flat face's fan: one plane, their rounding measured as slack below).
   struct Group {
     FacePlane plane;
-    std::vector<std::array<Vec3, 3>> faces;
+    std::vector<std::vector<Vec3>> faces;  ///< each face clipped to the reach's box
     bool supporting = true;
   };
+  const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
   std::vector<Group> groups;
   for (int f : near) {
-    const std::array<Vec3, 3> t = whole_.face(f);
+    const std::array<Vec3, 3> t = mesh.face(f);
     if (point_triangle_distance(c, t[0], t[1], t[2]) > reach) continue;
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return out;
+    std::vector<Vec3> part = clip_to_box(t, box_lo, box_hi);
+    if (part.empty()) continue;
     auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& q) {
-      return q.plane.normal.dot(n) > 0.999 && std::abs(q.plane.at(t[0])) <= cap &&
-             std::abs(q.plane.at(t[1])) <= cap && std::abs(q.plane.at(t[2])) <= cap;
+      return q.plane.normal.dot(n) > 0.999 &&
+             std::all_of(part.begin(), part.end(),
+                         [&](const Vec3& p) { return std::abs(q.plane.at(p)) <= cap; });
     });
     if (g == groups.end()) {
-      if (groups.size() == static_cast<size_t>(tol::kLocalPlanesMaxPlanes)) return out;
       groups.push_back({{n, n.dot(t[0])}, {}, true});
       g = groups.end() - 1;
     }
-    g->faces.push_back(t);
+    g->faces.push_back(std::move(part));
   }
   double slack = 0.0;
   // The least s over a face's corners (sign +1) or minus the largest (sign -1):
   // ≥ -cap means the face lies on that side up to rounding.
-  const auto least = [](const std::array<Vec3, 3>& t, const FacePlane& q, double sign) {
-    return std::min({sign * q.at(t[0]), sign * q.at(t[1]), sign * q.at(t[2])});
+  const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
+    double m = INFINITY;
+    for (const Vec3& p : face) m = std::min(m, sign * q.at(p));
+    return m;
   };
   // Supporting: every face in the ball on the plane's inner side.
   std::vector<double> crossing(groups.size(), 0.0);
@@ -226,16 +273,27 @@ LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const
         groups[k].supporting = groups[k].supporting && m >= -cap;
       }
   std::vector<const Group*> hole;
+  std::vector<std::pair<double, size_t>> nearest;  // supporting planes by s(c)
   for (size_t k = 0; k < groups.size(); ++k) {
     const Group& g = groups[k];
-    if (!g.supporting) {
+    if (!g.supporting)
       hole.push_back(&g);
-    } else if (g.plane.at(c) + 2.0 * r <= reach) {  // every foot point within the ball
-      out.supporting.push_back(g.plane);
-      slack = std::max(slack, crossing[k]);
-    }
+    else if (g.plane.at(c) + 2.0 * r <= reach)  // every foot point within the ball
+      nearest.push_back({g.plane.at(c), k});
+  }
+  // Each supporting plane bounds sd on its own: the nearest ones bound it best.
+  std::sort(nearest.begin(), nearest.end());
+  if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
+    nearest.resize(tol::kLocalPlanesMaxPlanes);
+  for (const auto& [s_c, k] : nearest) {
+    out.supporting.push_back(groups[k].plane);
+    slack = std::max(slack, crossing[k]);
   }
   out.slack = slack;
+  if (hole.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes)) {
+    out.supporting.clear();
+    return out;
+  }
   if (hole.empty()) return out;
   // A convex hole: each of its faces on the outer side of the others' planes,
   // every other face on the inner side of one of them.
@@ -275,6 +333,28 @@ LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const
   out.slack = hole_slack;
   for (const Group* g : hole) out.hole.push_back(g->plane);
   return out;
+}
+
+}  // namespace
+
+LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const {
+  if (exact_) return planes_near(whole_, noise_, c, d, r);
+  // A union: where one shell alone has faces near the box and the centre lies
+  // outside every other shell, the union is that shell there.
+  const double reach = tol::kLocalPlanesMaxKappa * (d + r + noise_) + r;
+  int alone = -1;
+  std::vector<int> near;
+  for (size_t i = 0; i < shells_.size(); ++i) {
+    near.clear();
+    shells_[i].faces_in_box(c.array() - reach, c.array() + reach, near);
+    if (near.empty()) continue;
+    if (alone >= 0) return {};
+    alone = static_cast<int>(i);
+  }
+  if (alone < 0) return {};
+  for (size_t i = 0; i < shells_.size(); ++i)
+    if (static_cast<int>(i) != alone && !shells_[i].outside(c)) return {};
+  return planes_near(shells_[alone], noise_, c, d, r);
 }
 
 }  // namespace pd

@@ -41,7 +41,7 @@ struct FacePlane {
 ///   sd(x) ≤ s_k(x) + slack for each k (a pin's facets, a plate's face);
 /// - hole planes: the other faces' planes, when they bound a convex hole (each
 ///   such face on the outer side of the others' planes, every other face on the
-///   inner side of one of them, normals within 44° of their mean m): the
+///   inner side of one of them, normals within 60° of their mean m): the
 ///   complement then holds the intersection of their outer sides, and
 ///   sd(x) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread), since
 ///   moving x along m by that much leaves every outer side's boundary behind.
@@ -86,8 +86,8 @@ class SolidDistance {
 
   /// The plane structure of the surface around a box of half-diagonal r about
   /// c, for a centre at distance d from the surface (|at(c)|): the planes of
-  /// every face within reach = kappa_max·(d + 2r + 2·noise) + 2r of c, and
-  /// only those whose bound's foot points provably stay within that reach.
+  /// every face within reach = kappa_max·(d + r + noise) + r of c, and only
+  /// those whose bound's foot points provably stay within that reach.
   LocalPlanes local_planes(const Vec3& c, double d, double r) const;
 
  private:
@@ -97,6 +97,7 @@ class SolidDistance {
   std::string note_;
   Eigen::AlignedBox3d box_;
   double noise_ = 0.0;
+  double hair_ = 0.0;  ///< how far outside a face a union's complement is probed
 };
 
 /// A lower bound of a pair's penetration depth from one part's surface, which
