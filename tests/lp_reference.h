@@ -12,13 +12,15 @@ namespace pd {
 
 // The exact max over the box of min_k f_k: the LP max t s.t. t ≤ f_k(x),
 // lo ≤ x ≤ hi has its optimum at a vertex where 4 of its constraints are tight.
-inline double max_min_affine_reference(const std::vector<Affine>& f, const Vec3& lo, const Vec3& hi) {
+inline double max_min_affine_reference(const std::vector<Affine>& f, const Vec3& lo,
+                                       const Vec3& hi) {
   struct Row {
     Eigen::Vector4d a;  // a·(x, t) = b at the constraint's boundary
     double b;
   };
   std::vector<Row> rows;
-  for (const Affine& g : f) rows.push_back({Eigen::Vector4d(-g.slope.x(), -g.slope.y(), -g.slope.z(), 1), g.value});
+  for (const Affine& g : f)
+    rows.push_back({Eigen::Vector4d(-g.slope.x(), -g.slope.y(), -g.slope.z(), 1), g.value});
   for (int d = 0; d < 3; ++d) {
     Eigen::Vector4d e = Eigen::Vector4d::Zero();
     e[d] = 1;

@@ -1,11 +1,10 @@
 // max_min_affine against the exact LP optimum found by enumerating vertices.
-#include "solve/max_min_affine.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "lp_reference.h"
+#include "solve/max_min_affine.h"
 
 namespace pd {
 namespace {
@@ -24,7 +23,7 @@ TEST(MaxMinAffine, EqualsTheExactOptimumOnRandomProblems) {
     const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
     const double exact = max_min_affine_reference(f, lo, hi);
     const double bound = max_min_affine(f, lo, hi);
-    EXPECT_GE(bound, exact - 1e-12) << "trial " << trial;  // sound
+    EXPECT_GE(bound, exact - 1e-12) << "trial " << trial;                         // sound
     EXPECT_LE(bound, exact + 1e-9 * (1 + std::abs(exact))) << "trial " << trial;  // tight
   }
 }

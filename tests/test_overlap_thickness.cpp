@@ -1,8 +1,6 @@
 // The overlap thickness against exact references: the Chebyshev centre of two
 // convex polytopes' intersection (an LP solved by vertex enumeration), and
 // nonconvex CAD shapes whose overlap is known by construction.
-#include "solve/overlap_thickness.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +9,7 @@
 #include "corpus/cad_shapes.h"
 #include "geometry/hull.h"
 #include "lp_reference.h"
+#include "solve/overlap_thickness.h"
 
 namespace pd {
 namespace {
@@ -28,7 +27,8 @@ struct Polytope {
 Polytope random_polytope(std::mt19937& rng, const Vec3& centre, double radius, int n) {
   std::normal_distribution<double> g(0, 1);
   Points p(3, n);
-  for (int k = 0; k < n; ++k) p.col(k) = centre + radius * Vec3(g(rng), g(rng), g(rng)).normalized();
+  for (int k = 0; k < n; ++k)
+    p.col(k) = centre + radius * Vec3(g(rng), g(rng), g(rng)).normalized();
   HullFacets f;
   EXPECT_TRUE(hull_facets(p, f));
   Polytope out;
@@ -58,8 +58,8 @@ TEST(OverlapThickness, ConvexPairsBracketTheChebyshevCentreAndDecideBothWays) {
     const Polytope b = random_polytope(rng, far + Vec3(u(rng), u(rng), u(rng)) * 1.2, 0.8, 9);
     std::vector<Affine> both = a.planes;
     both.insert(both.end(), b.planes.begin(), b.planes.end());
-    const double exact = 2 * std::max(0.0, max_min_affine_reference(both, far.array() - 3,
-                                                                      far.array() + 3));
+    const double exact =
+        2 * std::max(0.0, max_min_affine_reference(both, far.array() - 3, far.array() + 3));
     const SolidDistance sa(a.mesh), sb(b.mesh);
     const double slack = 1e-9 * (1 + far.norm());
     if (exact < 1e-3) continue;  // touching or apart: the mesh test's business
@@ -119,8 +119,7 @@ TEST(OverlapThickness, BlockPushedIntoAnLBracketLegIsASlab) {
   const Mesh bracket = sh::l_bracket(40, 5, 20);  // inner corner at (5, 5)
   for (double push : {0.0, 0.3, 2.0}) {
     const Mesh block = sh::box(Vec3(5 - push, 5, 2), Vec3(25, 25, 18));
-    const ThicknessResult r =
-        overlap_thickness(SolidDistance(block), SolidDistance(bracket), 0.1);
+    const ThicknessResult r = overlap_thickness(SolidDistance(block), SolidDistance(bracket), 0.1);
     EXPECT_TRUE(brackets(r, push, 1e-9)) << push << ": " << r.lower << " " << r.upper;
     EXPECT_EQ(r.outcome, push > 0.1 ? Outcome::kAbove : Outcome::kBelow) << push;
   }
@@ -146,8 +145,8 @@ TEST(OverlapThickness, MultiBodyBoltIsTheUnionOfItsShells) {
   // write them); the block overlaps both across the shared face, where the
   // largest ball (radius 1.5, centre z = 9.5) spans head and shank: no single
   // shell holds it, so the union is what is measured.
-  const Mesh bolt = sh::joined({sh::box(Vec3(0, 0, 10), Vec3(10, 10, 12)),
-                                sh::box(Vec3(3, 3, 0), Vec3(7, 7, 10))});
+  const Mesh bolt = sh::joined(
+      {sh::box(Vec3(0, 0, 10), Vec3(10, 10, 12)), sh::box(Vec3(3, 3, 0), Vec3(7, 7, 10))});
   const Mesh block = sh::box(Vec3(2, 2, 8), Vec3(8, 8, 11));
   const SolidDistance a(bolt), b(block);
   EXPECT_FALSE(a.exact());
@@ -166,8 +165,7 @@ TEST(OverlapThickness, AWallPenetratedBeyondAHousingsCavity) {
   // the cavity pushes 1 mm into the top wall.
   const Mesh housing = sh::hollow_box(Vec3(0, 0, 0), Vec3(30, 20, 10), 1.5);
   const Mesh part = sh::box(Vec3(5, 5, 3), Vec3(15, 12, 9.5));
-  const ThicknessResult r =
-      overlap_thickness(SolidDistance(part), SolidDistance(housing), 0.1);
+  const ThicknessResult r = overlap_thickness(SolidDistance(part), SolidDistance(housing), 0.1);
   EXPECT_EQ(r.outcome, Outcome::kAbove);
   EXPECT_TRUE(brackets(r, 1.0, 1e-9)) << r.lower << " " << r.upper;
 }

@@ -25,7 +25,9 @@ enum class Status {
 };
 const char* status_name(Status s);
 /// Not decided against the tolerance: an error, or an undecided bracket.
-inline bool not_decided(Status s) { return s == Status::kError || s == Status::kUndecided; }
+inline bool not_decided(Status s) {
+  return s == Status::kError || s == Status::kUndecided;
+}
 
 /// A motion sweep's outcome: the signed minimum translational distance s(t)
 /// (depth > 0 when overlapping, −distance when not) over the time grid.
@@ -60,7 +62,7 @@ struct PairResult {
   std::optional<bool> confirmed;  ///< pairs of a nonconvex part: decided on its own geometry
   std::optional<Vec3> at;  ///< where the depth was found (nonconvex pairs: the thickest overlap)
   std::string reason;      ///< why an undecided pair stayed undecided
-  bool reused = false;            ///< taken from an earlier report (--reuse), not solved
+  bool reused = false;     ///< taken from an earlier report (--reuse), not solved
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

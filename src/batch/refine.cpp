@@ -405,11 +405,11 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     const bool complete = (!pa.decomposition || pa.decomposition->complete) &&
                           (!pb.decomposition || pb.decomposition->complete);
     PairResult& r = results[flagged[n]];
-    r = thickness[n] ? decide_thickness(r, verdicts[n], *thickness[n], options.tolerance,
-                                        pair_size(pa, pb), why_not[n])
-                     : decide_refined(r, verdicts[n],
-                                      piece_results[n] ? &*piece_results[n] : nullptr, complete,
-                                      options.tolerance, pair_size(pa, pb));
+    r = thickness[n]
+            ? decide_thickness(r, verdicts[n], *thickness[n], options.tolerance, pair_size(pa, pb),
+                               why_not[n])
+            : decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr,
+                             complete, options.tolerance, pair_size(pa, pb));
     // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
     if (!keys.empty() && r.status != Status::kError) {
       const bool solved = std::find(solve.begin(), solve.end(), n) != solve.end();

@@ -47,9 +47,9 @@ PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const
 
 /// The refined result of a flagged pair whose surfaces meet, from its hull-stage
 /// result, the mesh verdict (its vertex_depth: the deepest point of either
-/// surface inside the other, geometry/solid_distance.h) and the overlap thickness. Pure: the status rules
-/// of docs/solver.md ("Overlap thickness") in one place. `why_not` is the
-/// parts' note when a part is no closed solid.
+/// surface inside the other, geometry/solid_distance.h) and the overlap thickness. Pure: the status
+/// rules of docs/solver.md ("Overlap thickness") in one place. `why_not` is the parts' note when a
+/// part is no closed solid.
 PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
                             const ThicknessResult& t, double tolerance, double pair_size,
                             const std::string& why_not);

@@ -208,7 +208,8 @@ namespace {
 int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
                       double d2) {
   bool decided = m.oriented && d2 > 0;
-  for (const Segment3& s : m.segments) decided = decided && CGAL::squared_distance(Point3(v.x(), v.y(), v.z()), s) > d2;
+  for (const Segment3& s : m.segments)
+    decided = decided && CGAL::squared_distance(Point3(v.x(), v.y(), v.z()), s) > d2;
   if (!decided) return 0;
   // Barycentric coordinates of q in the nearest face: strictly inside it?
   const Triangle3& t = *face;

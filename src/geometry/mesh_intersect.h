@@ -41,8 +41,7 @@ class PreparedMesh {
   /// *nearest and its face's unit normal (from the corners' order; zero when
   /// the nearest is a degenerate triangle) in *face_normal. On open meshes it
   /// is never positive.
-  double signed_distance(const Vec3& p, Vec3* nearest = nullptr,
-                         Vec3* face_normal = nullptr) const;
+  double signed_distance(const Vec3& p, Vec3* nearest = nullptr, Vec3* face_normal = nullptr) const;
   /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to `out`.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
   /// Corners of face i (0 <= i < faces()), in the mesh's order.

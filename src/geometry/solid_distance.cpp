@@ -33,7 +33,8 @@ std::vector<Mesh> shells_of(const Mesh& mesh) {
   std::iota(parent.begin(), parent.end(), 0);
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 1; k < 3; ++k)
-      parent[find_root(parent, id[mesh.triangles(k, t)])] = find_root(parent, id[mesh.triangles(0, t)]);
+      parent[find_root(parent, id[mesh.triangles(k, t)])] =
+          find_root(parent, id[mesh.triangles(0, t)]);
   std::map<int, std::vector<long>> groups;
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     groups[find_root(parent, id[mesh.triangles(0, t)])].push_back(t);
@@ -84,7 +85,9 @@ std::vector<Vec3> clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, cons
   for (int axis = 0; axis < 3; ++axis)
     for (int upper = 0; upper < 2; ++upper) {
       const double bound = upper ? hi[axis] : lo[axis];
-      const auto inside = [&](const Vec3& p) { return upper ? p[axis] <= bound : p[axis] >= bound; };
+      const auto inside = [&](const Vec3& p) {
+        return upper ? p[axis] <= bound : p[axis] >= bound;
+      };
       next.clear();
       for (size_t k = 0; k < poly.size(); ++k) {
         const Vec3 &p = poly[k], &q = poly[(k + 1) % poly.size()];
@@ -132,9 +135,9 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   closed_ = std::all_of(prepared.begin(), prepared.end(),
                         [](const PreparedMesh& s) { return s.closed(); });
   shells_ = std::move(prepared);
-  note_ = closed_ ? std::to_string(shells_.size()) +
-                        " shells whose surfaces meet: taken as their union"
-                  : "open shell: no inside";
+  note_ = closed_
+              ? std::to_string(shells_.size()) + " shells whose surfaces meet: taken as their union"
+              : "open shell: no inside";
 }
 
 DistanceBounds SolidDistance::at(const Vec3& p) const {
@@ -201,10 +204,9 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
       continue;
     }
     const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
-    for (const std::array<Vec3, 3>& q : {std::array<Vec3, 3>{t[0], m01, m20},
-                                        std::array<Vec3, 3>{m01, t[1], m12},
-                                        std::array<Vec3, 3>{m20, m12, t[2]},
-                                        std::array<Vec3, 3>{m01, m12, m20}})
+    for (const std::array<Vec3, 3>& q :
+         {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
+          std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
       stack.push_back({q, level + 1});
   }
   return best;
@@ -213,8 +215,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
 namespace {
 
 // The plane model of one oriented closed mesh about a box (SolidDistance::local_planes).
-LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d,
-                        double r) {
+LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r) {
   LocalPlanes out;
   if (!mesh.oriented() || mesh.has_segments()) return out;
   // A face may cross a plane it should not by at most `cap` (the coordinates'

@@ -107,7 +107,7 @@ class SolidDistance {
 /// within b's box (every corner there included, so it is never below the
 /// deepest vertex), at most `max_samples` points.
 struct SurfaceDepth {
-  double depth = 0.0;  ///< 0 when no sample lies strictly inside b
+  double depth = 0.0;      ///< 0 when no sample lies strictly inside b
   Vec3 at = Vec3::Zero();  ///< the sample realising it
   /// Unit; the DepthSolution convention (solve/result.h): (p − q)/|p − q| for
   /// p of a with nearest point q on b's surface.

@@ -48,9 +48,8 @@ Baseline parse_baseline(const std::string& text, const std::string& path) {
     f.a = p["a"].string();
     f.b = p["b"].string();
     f.status = p["status"].string();
-    static const char* kStatuses[] = {"separated",           "false_positive", "interference",
-                                      "error",               "clearance_violation",
-                                      "undecided"};
+    static const char* kStatuses[] = {"separated", "false_positive",      "interference",
+                                      "error",     "clearance_violation", "undecided"};
     bool known = false;
     for (const char* s : kStatuses) known |= f.status == s;
     if (!known) p["status"].fail("unknown status \"" + f.status + "\"");

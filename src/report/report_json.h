@@ -24,7 +24,8 @@ struct Summary {
   long clearance_violation = 0;
   long undecided = 0;  ///< pairs whose depth bracket straddles the tolerance
   bool clearance_checked = false;
-  /// 3 if anything was unchecked or undecided, else 1 on interference or clearance violation, else 0
+  /// 3 if anything was unchecked or undecided, else 1 on interference or clearance violation, else
+  /// 0
   int exit_code() const;
 };
 Summary summarize(const RunResult& r);

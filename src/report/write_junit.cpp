@@ -50,8 +50,7 @@ std::string render_junit(const ReportInput& in) {
     if (not_decided(r.status)) {
       ++errors;
       cases += ">\n      <error type=\"" + std::string(status_name(r.status)) + "\" message=\"" +
-               markup_escape(text) + "\">" +
-               markup_escape(text) + "</error>\n    </testcase>\n";
+               markup_escape(text) + "\">" + markup_escape(text) + "</error>\n    </testcase>\n";
     } else if (pr.suppressed) {
       ++skipped;
       cases += ">\n      <skipped>" +

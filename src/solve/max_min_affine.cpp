@@ -1,9 +1,8 @@
 #include "solve/max_min_affine.h"
 
+#include <Eigen/Core>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Core>
 
 namespace pd {
 
@@ -74,8 +73,10 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
   Eigen::VectorXd lambda(m);
   for (int k = 0; k < m; ++k) lambda[k] = std::max(0.0, T(rows, vars + k));
   const double sum = lambda.sum();
-  if (!(sum > 0) || !std::isfinite(sum)) lambda.setConstant(1.0 / m);
-  else lambda /= sum;
+  if (!(sum > 0) || !std::isfinite(sum))
+    lambda.setConstant(1.0 / m);
+  else
+    lambda /= sum;
   return dual_value(f, lambda, lo, hi);
 }
 

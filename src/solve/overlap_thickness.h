@@ -36,8 +36,8 @@ struct ThicknessResult {
     kNoInside,  ///< a part is not a closed solid: no thickness at all
   };
   Outcome outcome = Outcome::kBudget;
-  double lower = 0.0;  ///< certified: T ≥ lower (0 when no common interior point was found)
-  double upper = 0.0;  ///< certified: T ≤ upper
+  double lower = 0.0;      ///< certified: T ≥ lower (0 when no common interior point was found)
+  double upper = 0.0;      ///< certified: T ≤ upper
   Vec3 at = Vec3::Zero();  ///< centre of the thickest ball found (the lower bound's witness)
   /// Unit: from `at` towards a's nearest surface point; moving b that way
   /// thins the overlap there (a local escape, not a separating move).
