@@ -18,6 +18,7 @@ Groups (each --copies times, 100 mm apart in y so groups never meet):
   thick L-block with a part buried in its material (containment, no surfaces meet)
   open tray (no lid: an open mesh) with a part resting inside with clearance, and a rod
   through its wall (interference)
+  a 0.05 mm foil 3 mm deep into an L-bracket's leg (interference: thin, yet a clash)
 --bench writes, per copy, only the groups whose parts grow with --segments (a plate with
 an exact-fit and a clearance bolt, a plate with an interference-fit bolt, a two-bore block
 with a pin, a drilled board with a component): 4 nonconvex parts of ~1,000-4,000 triangles
@@ -266,6 +267,12 @@ def main():
         rel(g + "tray", g + "in_tray", "clearance", "resting 0.5 mm above the open tray's floor")
         part(g + "rod", prism(29.5, y + 25, 1.0, n, 6, 9), True)
         rel(g + "tray", g + "rod", "interference", "a rod through the open tray's wall")
+        y += 100
+        # 8. a 0.05 mm foil pushed 3 mm into an L-bracket's leg: a thin overlap,
+        # a genuine clash (its surface lies deep inside the bracket).
+        part(g + "bracket3", l_bracket(0, y, 0, 30, 30, 4, 10), False)
+        part(g + "foil", box((10, y + 2, 1), (10.05, y + 8, 12)), True)
+        rel(g + "bracket3", g + "foil", "interference", "0.05 mm foil 3 mm into the leg")
 
     scene = {"version": 1, "units": "mm",
              "tolerance": a.tolerance, "parts": parts}

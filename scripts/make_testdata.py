@@ -175,7 +175,8 @@ def demo():
             {"id": "slot", "mesh": "slot.obj", "pieces": "meshes",
              "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]},
             {"id": "pin", "mesh": "pin.ply"},
-            {"id": "bracket", "mesh": "bracket.gltf"},
+            # Authored in mm; glTF 2.0 fixes metres, so the part says mm.
+            {"id": "bracket", "mesh": "bracket.gltf", "units": "mm"},
             {"id": "spacer", "units": "cm",
              "vertices": [[8, 6, 0], [9, 6, 0], [8, 7, 0], [9, 7, 0],
                           [8, 6, -1], [9, 6, -1], [8, 7, -1], [9, 7, -1]]},

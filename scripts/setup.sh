@@ -8,7 +8,8 @@ PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-d
           nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev libgtest-dev
           libcgal-dev libgmp-dev libmpfr-dev python3 python3-jsonschema libxml2-utils parallel
           clang libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, symbolizer
-          libjs-three chromium)  # the HTML report: three.js inlined in it; its browser test
+          libjs-three chromium  # the HTML report: three.js inlined in it; its browser test
+          openscad)  # scripts/make_cad_assemblies.py: CAD test assemblies (and their ctest)
 # Callers may need more (accuracy_vs_time.sh: python3-matplotlib for its plot).
 read -r -a EXTRA <<<"${EXTRA_PACKAGES:-}"
 PACKAGES+=("${EXTRA[@]}")

@@ -20,6 +20,14 @@ inline constexpr double kFlat = 1e-12;
 /// and facet offsets (a few hundred ulps), well below any tessellation tolerance.
 inline constexpr double kTouch = 1e-11;
 
+/// A gap (unit frame) at or below this is the rounding of evaluating h_P − h_Q
+/// at a facet normal of a touching pair (a few dozen ulps of the unit frame's
+/// coordinates; the normal itself is rounded too): the pair touches and its
+/// depth is 0, in both the exact reference and mlsl, so the two cannot differ
+/// by which side of 0 their rounding fell. Far below the 1e-12 of the pair's
+/// scale every depth is held to, and below kTouch.
+inline constexpr double kGapRounding = 1e-14;
+
 /// Depths closer to the user's tolerance than this fraction of the pair size are
 /// on the boundary: they are always classified as false positives (depth <= tol),
 /// so a status cannot flip with rounding noise. The report gives the margin.
@@ -69,6 +77,10 @@ inline constexpr double kDescentSnapBand = 1e-3;
 /// The facet snap accepts a plane when its normal fits the active vertices to
 /// this residual (smallest singular value of the active edge matrix).
 inline constexpr double kSnapResidual = 1e-9;
+/// The snap's fitted plane is then refined to the exact facet of P − Q with its
+/// normal within this angle (radians) of the fit (solve/facet_snap.cpp): a fit
+/// within kSnapResidual of edges >= 1e-3 of the frame is within 1e-6 of it.
+inline constexpr double kSnapCap = 1e-5;
 
 /// --baseline: a finding of unchanged status is `updated` when its depth moved
 /// by more than both kBaselineDepthAbs · tolerance and kBaselineDepthRel · the
@@ -98,6 +110,35 @@ inline constexpr long kDecomposeMaxWork = 4000;
 /// Samples of the coarse screen run before a piece's full estimate: a cell it
 /// finds more than twice the tolerance concave is cut without the full one.
 inline constexpr int kDecomposeScreenSamples = 64;
+
+/// Overlap thickness of a nonconvex pair (solve/overlap_thickness.h). Effort,
+/// not accuracy: the bracket stays certified whatever they are, and a pair whose
+/// bracket still straddles the tolerance when they run out is `undecided`.
+/// Distance evaluations (one per part and cell centre or ascent step, ~2-10 us
+/// each) per pair: deterministic, so the result is the same for every --jobs.
+inline constexpr long kThicknessMaxEvaluations = 400000;
+/// The wall-clock box per pair, seconds: the users' safety net, never reached on
+/// the benchmark assemblies (their slowest pair stays far below it).
+inline constexpr double kThicknessSeconds = 20.0;
+/// Once an interference is certified (lower bound > tolerance), the search goes
+/// on until the bracket's upper end is within this fraction of its lower end,
+/// so the reported depth means something (bounded by the same budget).
+inline constexpr double kThicknessBracket = 0.25;
+/// Effort, not accuracy: the most points one surface is sampled at for the
+/// deepest-surface-point bound (geometry/solid_distance.h). Any sample is a
+/// sound lower bound; more only find a deeper one.
+inline constexpr long kSurfaceDepthSamples = 20000;
+/// Local plane models (geometry/solid_distance.h). Effort, not accuracy: at
+/// most this many faces near a cell, hole planes (the nearest supporting planes
+/// kept: each bounds on its own), and LPs per cell (one per choice of each
+/// part's active hole plane); beyond them the cell is split and the Lipschitz
+/// bound holds. And the largest kappa = 1/cos(spread of a hole's normals)
+/// accepted: 2, a spread <= 60 degrees (a shaft's shoulder, a 90-degree inner
+/// corner, has sqrt 2); a larger kappa would only loosen the bound.
+inline constexpr int kLocalPlanesMaxFaces = 512;
+inline constexpr int kLocalPlanesMaxPlanes = 16;
+inline constexpr int kLocalPlanesMaxChoices = 32;
+inline constexpr double kLocalPlanesMaxKappa = 2.0;
 
 /// HTML report (report/write_html.h): the most triangles one part, piece or
 /// overlap is shown with (larger ones decimated: report/html_geometry.h), and

@@ -112,6 +112,26 @@ TEST(MeshIsolation, PlyCutInItsHeaderIsAPartError) {
   }
 }
 
+TEST(MeshIsolation, PlyHeaderLineWithoutCommentLoadsWithAWarning) {
+  // As in assimp's own Wuson.ply: a Blender 2.47 header line without `comment`.
+  const std::string ply =
+      "ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org, source file: \n"
+      "element vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n3 0 1 2\n";
+  const CliRun r = pdcheck(scene_with("wuson.ply", ply));
+  EXPECT_EQ(r.code, 1) << r.err;  // a and b interfere; c loads
+  const json rep = json::parse(r.out);
+  ASSERT_FALSE(rep["parts"][2].contains("error")) << rep["parts"][2];
+  EXPECT_EQ(rep["parts"][2]["vertices"], 8);
+  ASSERT_EQ(rep["parts"][2]["warnings"].size(), 1u) << rep["parts"][2];
+  EXPECT_NE(rep["parts"][2]["warnings"][0].get<std::string>().find(
+                "PLY header line 3: unknown line \"Created by Blender3D"),
+            std::string::npos)
+      << rep["parts"][2]["warnings"];
+  EXPECT_NE(r.err.find("part \"c\": mesh file"), std::string::npos) << r.err;
+}
+
 TEST(MeshIsolation, LoadTimeoutMustBeANumberOfSeconds) {
   for (const char* bad : {"-1", "nan", "inf", "1e300"}) {
     const CliRun r = pdcheck(scene_with("c.stl") + " --quiet --load-timeout " + bad);

@@ -118,6 +118,135 @@ TEST(HardCases, TouchingVertexFace) {
   }
 }
 
+namespace {
+
+enum class Touch { kBoxEdgeOnFace, kBoxEdgeOnEdge, kEdgeEdge, kVertexFace, kPolytopeEdgeOnFace };
+
+const char* touch_name(Touch t) {
+  switch (t) {
+    case Touch::kBoxEdgeOnFace:
+      return "box edge on face";
+    case Touch::kBoxEdgeOnEdge:
+      return "box edge on edge";
+    case Touch::kEdgeEdge:
+      return "edge across edge";
+    case Touch::kVertexFace:
+      return "vertex on face";
+    case Touch::kPolytopeEdgeOnFace:
+      return "polytope edge on face";
+  }
+  return "";
+}
+
+/// n random points of the slab lo <= z <= hi over [-w, w]².
+Points slab_points(SphereSampler& r, int n, double w, double lo, double hi) {
+  Points p(3, n);
+  for (int i = 0; i < n; ++i)
+    p.col(i) =
+        Vec3(w * (2 * r.uniform() - 1), w * (2 * r.uniform() - 1), lo + (hi - lo) * r.uniform());
+  return p;
+}
+
+Points joined(const Points& a, const Points& b) {
+  Points p(3, a.cols() + b.cols());
+  p << a, b;
+  return p;
+}
+
+/// Two convex polytopes touching at z = 0 (a below, b above) along the feature
+/// `t`, in their own frame: the contact is exact there (every touching vertex
+/// has z = 0, every other of b has z > 0 and of a z < 0).
+testgen::PairCase touching_pair(SphereSampler& r, Touch t) {
+  const double w = 1 + 4 * r.uniform();
+  const Points a_box = box(Vec3(-w, -w, -1 - r.uniform()), Vec3(w, w, 0));
+  switch (t) {
+    case Touch::kBoxEdgeOnFace:
+    case Touch::kBoxEdgeOnEdge: {
+      // A box tilted by θ about its lowest edge, which lies along x at z = 0.
+      const double th = 0.1 + 1.3 * r.uniform(), s1 = 0.5 + r.uniform(), s2 = 0.5 + r.uniform();
+      const double y0 = t == Touch::kBoxEdgeOnEdge ? w : w * (1.6 * r.uniform() - 0.8);
+      const double x0 = -w * r.uniform(), x1 = w * r.uniform() + 0.1;
+      const Vec3 e1(0, std::cos(th), std::sin(th)), e2(0, -std::sin(th), std::cos(th));
+      Points b(3, 8);
+      for (int k = 0; k < 8; ++k)
+        b.col(k) = Vec3(k & 1 ? x1 : x0, y0, 0) + (k & 2 ? s1 : 0.0) * e1 + (k & 4 ? s2 : 0.0) * e2;
+      return {a_box, b};
+    }
+    case Touch::kEdgeEdge: {
+      // a's top edge and b's bottom edge cross at the origin.
+      const double p0 = M_PI * r.uniform(), p1 = p0 + 0.3 + 2.5 * r.uniform();
+      const Vec3 d0(std::cos(p0), std::sin(p0), 0), d1(std::cos(p1), std::sin(p1), 0);
+      Points ea(3, 2), eb(3, 2);
+      ea << w * d0, -w * d0;
+      eb << w * d1, -w * d1;
+      return {joined(ea, slab_points(r, 6, w, -w, -0.1 * w)),
+              joined(eb, slab_points(r, 6, w, 0.1 * w, w))};
+    }
+    case Touch::kVertexFace: {
+      Points v(3, 1);
+      v.col(0) = Vec3(0.8 * w * (2 * r.uniform() - 1), 0.8 * w * (2 * r.uniform() - 1), 0);
+      return {a_box, joined(v, (slab_points(r, 7, 0.5, 0.2, 1.5).colwise() + v.col(0)).eval())};
+    }
+    case Touch::kPolytopeEdgeOnFace: {
+      Points e(3, 2);
+      const double p0 = M_PI * r.uniform();
+      e << 0.5 * w * Vec3(std::cos(p0), std::sin(p0), 0),
+          -0.5 * w * Vec3(std::cos(p0), std::sin(p0), 0);
+      return {a_box, joined(e, slab_points(r, 10, w, 0.05 * w, w))};
+    }
+  }
+  return {};
+}
+
+/// The pair moved rigidly: a random rotation, then an offset of `far` in a
+/// random direction.
+testgen::PairCase posed(SphereSampler& r, testgen::PairCase c, double far) {
+  const Eigen::Matrix3d rot =
+      Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
+  const Vec3 shift = far * r.direction();
+  c.a = (rot * c.a).colwise() + shift;
+  c.b = (rot * c.b).colwise() + shift;
+  return c;
+}
+
+}  // namespace
+
+// Touching along an edge, a vertex or a face at random poses: where the exact
+// reference says 0, mlsl says exactly 0 too (it used to stop at a fitted facet
+// or a first local facet within kTouch and keep its gap as the depth), and
+// elsewhere (rounding tipped the pair into overlap) it is within the
+// scale-relative floor of 1e-12 · L. Far from the origin the input's own
+// rounding (~1e-12 of the frame) makes the touching faces facets of their own,
+// some a hair apart, some overlapping: there the floor is the measure.
+TEST(HardCases, TouchingPairsAtRandomPosesGiveTheExactDepth) {
+  SphereSampler r(2025);
+  int exact_zero = 0, cases = 0;
+  for (Touch t : {Touch::kBoxEdgeOnFace, Touch::kBoxEdgeOnEdge, Touch::kEdgeEdge,
+                  Touch::kVertexFace, Touch::kPolytopeEdgeOnFace})
+    for (double far : {0.0, 30.0, 2000.0, 35000.0})
+      for (int k = 0; k < 12; ++k) {
+        const testgen::PairCase c = posed(r, touching_pair(r, t), far);
+        const PairResult e = check(c.a, c.b, Method::kExact, 0.01);
+        const PairResult m = check(c.a, c.b, Method::kMlsl, 0.01);
+        const double floor = 1e-12 * pair_size(part("a", c.a), part("b", c.b));
+        SCOPED_TRACE(std::string(touch_name(t)) + " far " + std::to_string(far) + " case " +
+                     std::to_string(k) + ": exact " + std::to_string(e.depth * 1e15) +
+                     "e-15 mlsl " + std::to_string(m.depth * 1e15) + "e-15 (" +
+                     stop_reason_name(m.stats.stop_reason) + ")");
+        ASSERT_NE(m.status, Status::kError) << m.error;
+        EXPECT_EQ(m.status, Status::kSeparated);
+        EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+        EXPECT_LE(std::abs(m.depth - e.depth), floor);
+        if (e.depth == 0 && far < 100) {
+          ++exact_zero;
+          EXPECT_EQ(m.depth, 0.0);
+        }
+        ++cases;
+      }
+  EXPECT_EQ(cases, 5 * 4 * 12);
+  EXPECT_GE(exact_zero, cases / 4);  // most near the origin: a real share
+}
+
 TEST(HardCases, OverlapOfOneBillionthOfTheSize) {
   const Points a = box(kO, kOne), b = box(Vec3(1 - 2e-9, 0, 0), Vec3(2 - 2e-9, 1, 1));
   expect_case("overlap 1e-9", a, b, 2e-9, 1e-15, Status::kFalsePositive);

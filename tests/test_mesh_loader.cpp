@@ -204,6 +204,65 @@ TEST(PlyInput, DamagedFilesAreErrors) {
         << c.what << ": " << error_of([&] { read_meshes(c.bytes, "ply", false); });
 }
 
+// assimp's own test model Wuson.ply (Blender 2.47's exporter) has a header line
+// without `comment`; assimp skips such lines, and so does the check, warning.
+TEST(PlyInput, AHeaderLineAssimpSkipsIsSkippedWithAWarning) {
+  const std::string blender = "Created by Blender3D 247 - www.blender.org, source file: ";
+  const std::string tail =
+      "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n0.5 0.25 1.5\n3 0 1 2\n";
+  Points want(3, 4);
+  want << 0, 1, 0, 0.5, 0, 0, 1, 0.25, 0, 0, 0, 1.5;
+  // As in Wuson.ply (line 3), and among a vertex's properties, where it would
+  // end assimp's property list: the rewrite leaves it out.
+  const std::string wuson = "ply\nformat ascii 1.0\n" + blender + "\n" + tail;
+  std::string among = wuson;
+  among.replace(among.find(blender), blender.size() + 1, "");
+  among.insert(among.find("property float y"), "made with care\r\n");
+  for (const std::string& bytes : {wuson, among}) {
+    const PlyFile p = check_ply(bytes);
+    EXPECT_TRUE(p.rewritten);
+    EXPECT_EQ(p.for_assimp.find("Created"), std::string::npos);
+    ASSERT_EQ(p.warnings.size(), 1u);
+    EXPECT_NE(p.warnings[0].find(bytes == wuson ? "header line 3: unknown line \"Created by"
+                                                : "header line 5: unknown line \"made with care\""),
+              std::string::npos)
+        << p.warnings[0];
+    std::vector<std::string> warnings;
+    const auto m = read_meshes(bytes, "ply", false, &warnings);
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_EQ(m[0].vertices, want);
+    EXPECT_EQ(m[0].triangles.cols(), 1);
+    EXPECT_EQ(warnings, p.warnings);
+  }
+  // A file by path names itself in the warning.
+  const std::string path = temp_dir() + "wuson_like.ply";
+  std::ofstream(path, std::ios::binary) << wuson;
+  std::vector<std::string> warnings;
+  EXPECT_EQ(load_meshes(path, false, &warnings)[0].vertices, want);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("mesh file " + path + ": PLY header line 3", 0), 0u) << warnings[0];
+  // Through the loader processes, as a run reads it.
+  const auto loaded = load_meshes_isolated({{path, false}}, 1);
+  ASSERT_FALSE(loaded[0].error) << *loaded[0].error;
+  EXPECT_EQ(loaded[0].warnings, warnings);
+  // Bytes that are not text are a damaged header still, not a skipped line.
+  std::string damaged = wuson;
+  damaged[damaged.find("Created") + 3] = '\x01';
+  EXPECT_NE(error_of([&] { check_ply(damaged); }).find("header line 3: unknown line"),
+            std::string::npos)
+      << error_of([&] { check_ply(damaged); });
+  EXPECT_NE(error_of([&] { check_ply(damaged); }).find("is not text"), std::string::npos);
+  // A binary file with the line and the 0x0a first byte: both worked around.
+  Points written;
+  std::string binary = binary_ply({false, false, false, false, 0x0a}, written);
+  binary.insert(binary.find("element vertex"), blender + "\n");
+  std::vector<Mesh> b;
+  ASSERT_NO_THROW(b = read_meshes(binary, "ply", false));
+  EXPECT_EQ(b[0].vertices, as_float(written));
+}
+
 // assimp 5.2.5's PLY reader, chosen by the extension, crashes or spins on files
 // that start "ply" without a line end (the fuzzer's finds, replayed from
 // tests/fuzz/regressions/ply/); the PLY check refuses them before assimp runs.

@@ -135,15 +135,13 @@ TEST(Nonconvex, EveryNominalRelationIsRecovered) {
     }
   }
 
-  // A cached rerun repeats the cold run, decomposing nothing.
+  // No whole part is decomposed: the pairs are decided where the parts meet.
+  for (const auto& part : rep["parts"]) EXPECT_FALSE(part.contains("cached")) << part["id"];
+  // A rerun takes the refined pairs from the cache and repeats the cold run.
+  long entries = 0;
+  for (const auto& f : fs::directory_iterator(cache)) entries += f.path().extension() == ".pdr";
+  EXPECT_GT(entries, 0);
   const json again = pdcheck(d, "--pieces auto --cache " + cache.string());
-  bool any_cached = false;
-  for (const auto& part : again["parts"])
-    if (part.contains("cached")) {
-      EXPECT_TRUE(part["cached"].get<bool>()) << part["id"];
-      any_cached = true;
-    }
-  EXPECT_TRUE(any_cached);
   EXPECT_EQ(without_timings(rep), without_timings(again));
 }
 

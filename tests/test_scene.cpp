@@ -2,13 +2,16 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
+#include "batch/fingerprint.h"
 #include "geometry/hull.h"
 #include "scene/json_split.h"
 #include "scene/mesh_loader.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
+#include "scene/units.h"
 
 using namespace pd;
 
@@ -89,6 +92,70 @@ TEST(PartList, TabSeparatedIdsAndComments) {
   EXPECT_EQ(*s.parts[0].mesh, "parts/wing.stl");
   EXPECT_EQ(s.parts[1].id, "parts/rib.obj");
   EXPECT_THROW(parse_part_list("a\tx.stl\na\ty.stl\n", "<stdin>"), SceneError);
+}
+
+TEST(PartList, IdsAreNormalisedPaths) {
+  // `find parts`, `find ./parts`, a doubled slash, a detour and the absolute
+  // path give the same ids, so the same fingerprints (and baseline findings).
+  const std::string cwd = std::filesystem::current_path().string();
+  const std::vector<std::string> spellings = {
+      "parts/a.stl\nparts/sub/b.stl\n", "./parts/a.stl\n./parts/sub/b.stl\n",
+      "parts//a.stl\nparts/sub//b.stl\n", "x/../parts/a.stl\nparts/./sub/../sub/b.stl\n",
+      cwd + "/parts/a.stl\n" + cwd + "//parts/sub/b.stl\n"};
+  for (const std::string& list : spellings) {
+    const SceneSpec s = parse_part_list(list, "<stdin>");
+    ASSERT_EQ(s.parts.size(), 2u) << list;
+    EXPECT_EQ(s.parts[0].id, "parts/a.stl") << list;
+    EXPECT_EQ(s.parts[1].id, "parts/sub/b.stl") << list;
+    EXPECT_EQ(pair_fingerprint(s.parts[0].id, s.parts[1].id),
+              pair_fingerprint("parts/a.stl", "parts/sub/b.stl"));
+  }
+  // The file is read as written; ids that stay as they are.
+  const SceneSpec s =
+      parse_part_list("./parts/a.stl\n../up.stl\n/elsewhere/c.stl\nn\t./m.stl\n", "<stdin>");
+  EXPECT_EQ(*s.parts[0].mesh, "./parts/a.stl");
+  EXPECT_EQ(s.parts[1].id, "../up.stl");
+  if (cwd.rfind("/elsewhere", 0) != 0) {
+    EXPECT_EQ(s.parts[2].id, "/elsewhere/c.stl");
+  }
+  EXPECT_EQ(s.parts[3].id, "n");  // an id given is kept
+  EXPECT_EQ(part_list_id("a/.."), ".");
+  // One file listed twice under two spellings is one id twice: refused.
+  EXPECT_THROW(parse_part_list("parts/a.stl\n./parts/a.stl\n", "<stdin>"), SceneError);
+}
+
+TEST(Units, GltfIsReadInMetres) {
+  // box_nodes.gltf: a 2 x 4 x 6 box moved to x in [9, 11], and one scaled by 2
+  // to x in [-2, 2]; in metres.
+  auto part_box = [](const std::string& scene_units, const std::string& part_units) {
+    const SceneSpec s = parse_scene_json(
+        "{\"units\": \"" + scene_units + "\", \"tolerance\": 0.1, \"parts\": [{\"id\": \"g\", " +
+            part_units + "\"mesh\": \"" + kFormats + "box_nodes.gltf\"}]}",
+        "s.json", "");
+    const std::vector<Part> parts = build_parts(s);
+    EXPECT_FALSE(parts[0].error) << *parts[0].error;
+    return parts[0].box;
+  };
+  const Aabb metres = part_box("m", ""), mm = part_box("mm", "");
+  EXPECT_EQ(metres.lo.x(), -2.0);
+  EXPECT_EQ(metres.hi.x(), 11.0);
+  EXPECT_EQ(mm.lo, 1000.0 * metres.lo);
+  EXPECT_EQ(mm.hi, 1000.0 * metres.hi);
+  const Aabb inches = part_box("in", "");
+  EXPECT_NEAR(inches.hi.x(), 11000.0 / 25.4, 1e-9);
+  // A part's explicit units win (a file written in mm against the specification).
+  const Aabb said_mm = part_box("mm", "\"units\": \"mm\", ");
+  EXPECT_EQ(said_mm.lo, metres.lo);
+  EXPECT_EQ(said_mm.hi, metres.hi);
+  // Other formats take the scene's unit; a part list's glTF is metres too.
+  EXPECT_EQ(mesh_to_scene_units("x/part.stl", "m"), 1.0);
+  EXPECT_EQ(mesh_to_scene_units("x/part.GLB", "mm"), 1000.0);
+  EXPECT_EQ(mesh_to_scene_units("x/part.gltf", "cm"), 100.0);
+  const SceneSpec list = parse_stdin_scene("a.gltf\nb.glb\nc.obj\n", std::string("cm"));
+  EXPECT_EQ(list.parts[0].to_scene_units, 100.0);
+  EXPECT_EQ(list.parts[1].to_scene_units, 100.0);
+  EXPECT_EQ(list.parts[2].to_scene_units, 1.0);
+  EXPECT_EQ(parse_stdin_scene("a.gltf\n").parts[0].to_scene_units, 1000.0);
 }
 
 TEST(MeshLoader, EveryFormatGivesTheSameBox) {

@@ -11,8 +11,23 @@
 
 namespace pd {
 
-enum class Status { kSeparated, kFalsePositive, kInterference, kError, kClearanceViolation };
+/// kUndecided: the pair was checked, but its certified depth bracket still
+/// straddles the tolerance when the work or time box ran out (exit code 3, as
+/// an error: the run could not check everything to the tolerance). Appended
+/// last: the worker encoding stores the enum's value.
+enum class Status {
+  kSeparated,
+  kFalsePositive,
+  kInterference,
+  kError,
+  kClearanceViolation,
+  kUndecided
+};
 const char* status_name(Status s);
+/// Not decided against the tolerance: an error, or an undecided bracket.
+inline bool not_decided(Status s) {
+  return s == Status::kError || s == Status::kUndecided;
+}
 
 /// A motion sweep's outcome: the signed minimum translational distance s(t)
 /// (depth > 0 when overlapping, −distance when not) over the time grid.
@@ -45,7 +60,9 @@ struct PairResult {
   std::optional<double> hull_depth;                   ///< the hull stage's depth, when refined
   std::optional<std::array<double, 2>> depth_bounds;  ///< [lower, upper] when they differ
   std::optional<bool> confirmed;  ///< pairs of a nonconvex part: decided on its own geometry
-  bool reused = false;            ///< taken from an earlier report (--reuse), not solved
+  std::optional<Vec3> at;  ///< where the depth was found (nonconvex pairs: the thickest overlap)
+  std::string reason;      ///< why an undecided pair stayed undecided
+  bool reused = false;     ///< taken from an earlier report (--reuse), not solved
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

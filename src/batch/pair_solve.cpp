@@ -27,6 +27,8 @@ const char* status_name(Status s) {
       return "error";
     case Status::kClearanceViolation:
       return "clearance_violation";
+    case Status::kUndecided:
+      return "undecided";
   }
   return "error";
 }

@@ -11,6 +11,7 @@
 #include "geometry/decompose.h"
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
+#include "geometry/solid_distance.h"
 #include "parallel_for.h"
 #include "tolerances.h"
 #include "work_queue.h"
@@ -78,6 +79,56 @@ PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const
   return r;
 }
 
+PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
+                            const ThicknessResult& t, double tolerance, double pair_size,
+                            const std::string& why_not) {
+  using Outcome = ThicknessResult::Outcome;
+  PairResult r = hull;
+  r.hull_depth = hull.depth;
+  r.pieces.reset();
+  r.distance.reset();
+  r.depth_source = "thickness";
+  r.depth = t.lower;
+  r.direction = t.direction;
+  r.depth_bounds = {{t.lower, std::min(t.upper, hull.depth)}};
+  if (t.lower > 0) r.at = t.at;
+  r.confirmed = true;
+  // A part thinner than the tolerance pushed deep into another has a thin
+  // overlap: the deepest point of its surface inside the other, a lower bound
+  // of any separating move, says it is a clash all the same.
+  if (classify(mesh.vertex_depth, tolerance, pair_size) == Status::kInterference &&
+      t.outcome != Outcome::kAbove) {
+    r.status = Status::kInterference;
+    r.depth = mesh.vertex_depth;
+    r.depth_source = "surface";
+    r.direction = mesh.vertex_direction;
+    r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
+    r.at.reset();
+  } else if (t.outcome == Outcome::kAbove) {
+    r.status = Status::kInterference;
+  } else if (t.outcome == Outcome::kBelow) {
+    // Touching within rounding is separated, as for convex pairs.
+    r.status = classify(std::min(t.upper, hull.depth), tolerance, pair_size) == Status::kSeparated
+                   ? Status::kSeparated
+                   : Status::kFalsePositive;
+  } else {
+    r.status = Status::kUndecided;
+    r.confirmed = false;
+    if (t.outcome == Outcome::kNoInside) {
+      r.depth = mesh.vertex_depth;
+      r.depth_source = "surface";
+      r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
+      r.reason = why_not + ": only the surfaces' meeting and the deepest surface point are known";
+    } else {
+      r.reason = std::string(t.outcome == Outcome::kTime ? "time box" : "work budget") +
+                 " reached after " + std::to_string(t.evaluations) +
+                 " distance evaluations with the bracket still around the tolerance";
+    }
+  }
+  r.margin = tolerance - r.depth;
+  return r;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -101,7 +152,13 @@ Mesh surface_mesh(const Part& p) {
     if (!hull_facets(h.vertices, f)) continue;
     const int base = static_cast<int>(v.size());
     for (Eigen::Index k = 0; k < h.vertices.cols(); ++k) v.push_back(h.vertices.col(k));
-    for (const auto& tri : f.triangles) t.push_back({base + tri[0], base + tri[1], base + tri[2]});
+    for (size_t k = 0; k < f.triangles.size(); ++k) {  // outward, as the normal says
+      auto tri = f.triangles[k];
+      const Vec3 n = (h.vertices.col(tri[1]) - h.vertices.col(tri[0]))
+                         .cross(h.vertices.col(tri[2]) - h.vertices.col(tri[0]));
+      if (n.dot(f.normals[k]) < 0) std::swap(tri[1], tri[2]);
+      t.push_back({base + tri[0], base + tri[1], base + tri[2]});
+    }
   }
   m.vertices.resize(3, v.size());
   for (size_t k = 0; k < v.size(); ++k) m.vertices.col(k) = v[k];
@@ -223,26 +280,27 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     flagged.swap(misses);
   }
 
-  // 1. The surfaces: do they meet, and how deep is the deepest vertex.
+  // 1. The surfaces as solids: do they meet, and how deep is the deepest vertex.
   std::vector<int> used(parts.size(), 0);
   for (size_t k : flagged) used[pairs[k].first] = used[pairs[k].second] = 1;
-  std::vector<std::unique_ptr<PreparedMesh>> meshes(parts.size());
+  std::vector<std::unique_ptr<SolidDistance>> solids(parts.size());
   std::vector<int> used_list;
   for (size_t p = 0; p < parts.size(); ++p)
     if (used[p]) used_list.push_back(static_cast<int>(p));
   parallel_for(used_list.size(), options.jobs, [&](size_t n) {
     try {  // once per part, shared by its pairs and threads
-      meshes[used_list[n]] = std::make_unique<PreparedMesh>(surface_mesh(parts[used_list[n]]));
+      solids[used_list[n]] = std::make_unique<SolidDistance>(surface_mesh(parts[used_list[n]]));
     } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
     }
   });
+  const auto mesh_of = [&](int p) { return solids[p] ? &solids[p]->mesh() : nullptr; };
   std::vector<MeshVerdict> verdicts(flagged.size());
   {
     Progress progress(flagged.size(), options.quiet, "mesh tests");
     parallel_for(flagged.size(), options.jobs, [&](size_t n) {
       const auto [a, b] = pairs[flagged[n]];
       try {
-        verdicts[n] = mesh_verdict(meshes[a].get(), meshes[b].get());
+        verdicts[n] = mesh_verdict(mesh_of(a), mesh_of(b));
       } catch (const std::exception&) {
         verdicts[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
       }
@@ -250,17 +308,50 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     });
     progress.finish();
   }
-  meshes.clear();
 
-  // 2. Decompose the refinable parts of the pairs that need pieces.
-  std::vector<size_t> solve;  // indices into flagged
-  std::fill(used.begin(), used.end(), 0);
+  // 2. Pairs whose surfaces meet: the overlap thickness where the parts meet.
+  // A clearance check, a part in pieces `decompose` or one without a surface
+  // keeps the convex pieces of a whole-part decomposition (below).
+  std::vector<size_t> solve, thick;  // indices into flagged
   for (size_t n = 0; n < flagged.size(); ++n) {
     const auto [a, b] = pairs[flagged[n]];
-    if (!verdicts[n].intersect && !checks(a, b).clearance) continue;
-    solve.push_back(n);
-    used[a] = used[b] = 1;
+    const bool clearance = checks(a, b).clearance.has_value();
+    if (!verdicts[n].intersect && !clearance) continue;
+    const bool pieces = clearance || parts[a].mode == Pieces::kDecompose ||
+                        parts[b].mode == Pieces::kDecompose || !solids[a] || !solids[b];
+    (pieces ? solve : thick).push_back(n);
   }
+  std::vector<std::optional<ThicknessResult>> thickness(flagged.size());
+  std::vector<std::string> why_not(flagged.size());
+  {
+    Progress progress(thick.size(), options.quiet, "overlap thickness");
+    parallel_for(thick.size(), options.jobs, [&](size_t k) {
+      const size_t n = thick[k];
+      const auto [a, b] = pairs[flagged[n]];
+      const auto t0 = Clock::now();
+      // The deepest point of either surface inside the other: a lower bound of
+      // any separating move that needs no inside of the surface's own part.
+      const SurfaceDepth ab = surface_depth(solids[a]->mesh(), *solids[b]);
+      const SurfaceDepth ba = surface_depth(solids[b]->mesh(), *solids[a]);
+      MeshVerdict& v = verdicts[n];
+      if (std::max(ab.depth, ba.depth) > v.vertex_depth) {
+        v.vertex_depth = std::max(ab.depth, ba.depth);
+        v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
+      }
+      thickness[n] =
+          overlap_thickness(*solids[a], *solids[b], options.tolerance, results[flagged[n]].depth);
+      results[flagged[n]].time_ms +=
+          std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+      why_not[n] = solids[a]->closed() ? solids[b]->note() : solids[a]->note();
+      progress.tick();
+    });
+    progress.finish();
+  }
+  solids.clear();
+
+  // 3. Decompose the refinable parts of the pairs that need pieces.
+  std::fill(used.begin(), used.end(), 0);
+  for (size_t n : solve) used[pairs[flagged[n]].first] = used[pairs[flagged[n]].second] = 1;
   for (const auto& [k, hit] : hits)
     if (hit.solved) used[pairs[k].first] = used[pairs[k].second] = 1;
   std::vector<int> to_decompose;
@@ -269,7 +360,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
       to_decompose.push_back(static_cast<int>(p));
   decompose_parts(parts, to_decompose, options);
 
-  // 3. Piece pairs in the worker pool (the parts' pieces as pieces-only parts).
+  // 4. Piece pairs in the worker pool (the parts' pieces as pieces-only parts).
   std::vector<std::optional<Part>> piece_parts(parts.size());
   for (size_t p = 0; p < parts.size(); ++p) {
     if (!used[p]) continue;
@@ -306,7 +397,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   run_work_queue(order, {options.jobs, options.pair_timeout, options.on_warning}, task, done);
   progress.finish();
 
-  // 4. Decide.
+  // 5. Decide.
   bool warned = false;  // a cache that cannot be written is said once
   for (size_t n = 0; n < flagged.size(); ++n) {
     const auto [a, b] = pairs[flagged[n]];
@@ -314,8 +405,11 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     const bool complete = (!pa.decomposition || pa.decomposition->complete) &&
                           (!pb.decomposition || pb.decomposition->complete);
     PairResult& r = results[flagged[n]];
-    r = decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr, complete,
-                       options.tolerance, pair_size(pa, pb));
+    r = thickness[n]
+            ? decide_thickness(r, verdicts[n], *thickness[n], options.tolerance, pair_size(pa, pb),
+                               why_not[n])
+            : decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr,
+                             complete, options.tolerance, pair_size(pa, pb));
     // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
     if (!keys.empty() && r.status != Status::kError) {
       const bool solved = std::find(solve.begin(), solve.end(), n) != solve.end();

@@ -1,15 +1,16 @@
-// The nonconvex refinement (the paper's §V), after the hull stage: a pair whose
-// hull depth exceeds the tolerance and that has a nonconvex part is decided on
-// the parts themselves — the exact mesh test, then convex pieces.
+// The nonconvex refinement, after the hull stage: a pair whose hull depth
+// exceeds the tolerance and that has a nonconvex part is decided on the parts
+// themselves, where they meet.
 //
 // The hull depth is an upper bound of the parts' depth (the hulls contain the
 // parts), so every pair it leaves at or below the tolerance is final. For the
 // rest: meshes that do not meet are separated ("mesh-test"); otherwise the
-// nonconvex parts are decomposed (once per mesh file, cached, time-boxed, on
-// threads in the parent) and the piece pairs are solved in the worker pool with
-// the pair's method; the deepest vertex of one part inside the other is a lower
-// bound that thin pieces cannot collapse. docs/solver.md says what the depth
-// then means.
+// overlap thickness (solve/overlap_thickness.h) decides with a certified
+// bracket, and the deepest vertex of one part inside the other — a lower bound
+// of any separating move — guards thin parts pushed deep into another. Pairs
+// with a clearance check, parts in `pieces: decompose` and parts without a
+// surface keep the paper's §V: convex pieces of a whole-part decomposition,
+// solved in the worker pool. docs/solver.md says what each depth means.
 #pragma once
 
 #include <functional>
@@ -19,6 +20,7 @@
 #include "batch/pair_solve.h"
 #include "batch/run.h"
 #include "scene/parts.h"
+#include "solve/overlap_thickness.h"
 
 namespace pd {
 
@@ -42,6 +44,15 @@ void note_hull_stage(PairResult& r, const Part& a, const Part& b);
 /// Pure: the status rules of docs/solver.md in one place.
 PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const PairResult* pieces,
                           bool complete, double tolerance, double pair_size);
+
+/// The refined result of a flagged pair whose surfaces meet, from its hull-stage
+/// result, the mesh verdict (its vertex_depth: the deepest point of either
+/// surface inside the other, geometry/solid_distance.h) and the overlap thickness. Pure: the status
+/// rules of docs/solver.md ("Overlap thickness") in one place. `why_not` is the parts' note when a
+/// part is no closed solid.
+PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
+                            const ThicknessResult& t, double tolerance, double pair_size,
+                            const std::string& why_not);
 
 /// Refines the flagged pairs of `results` in place (same order as `pairs`);
 /// the parts used get their `decomposition`. Seconds spent go to `seconds`.

@@ -11,7 +11,8 @@ namespace pd {
 namespace {
 
 // 2: the "solved" flag moved into the checked body (cache_file.h).
-constexpr CacheKind kKind{"pdcheck-refinement-2", ".pdr"};
+// 3: nonconvex pairs decided by the overlap thickness (at, reason, undecided).
+constexpr CacheKind kKind{"pdcheck-refinement-3", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -38,6 +39,8 @@ std::string encode_refinement_fields(const PairResult& r) {
   if (r.depth_bounds) j["depth_bounds"] = {(*r.depth_bounds)[0], (*r.depth_bounds)[1]};
   if (r.confirmed) j["confirmed"] = *r.confirmed;
   if (r.pieces) j["pieces"] = {(*r.pieces)[0], (*r.pieces)[1]};
+  if (r.at) j["at"] = {r.at->x(), r.at->y(), r.at->z()};
+  if (!r.reason.empty()) j["reason"] = r.reason;
   return j.dump();
 }
 
@@ -48,6 +51,12 @@ void decode_refinement_fields(const std::string& line, PairResult& r) {
   r.depth_bounds.reset();
   r.confirmed.reset();
   r.pieces.reset();
+  r.at.reset();
+  r.reason.clear();
+  if (j.contains("at"))
+    r.at = Vec3(j.at("at").at(0).get<double>(), j.at("at").at(1).get<double>(),
+                j.at("at").at(2).get<double>());
+  if (j.contains("reason")) r.reason = j.at("reason").get<std::string>();
   if (j.contains("hull_depth")) r.hull_depth = j.at("hull_depth").get<double>();
   if (j.contains("depth_bounds"))
     r.depth_bounds = {
@@ -78,6 +87,10 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
   h.add(checks.clearance ? *checks.clearance : -1.0);
   for (double x :
        {tol::kConcavityFraction, tol::kDecomposeSeconds,
+        static_cast<double>(tol::kThicknessMaxEvaluations), tol::kThicknessSeconds,
+        tol::kThicknessBracket, static_cast<double>(tol::kLocalPlanesMaxFaces),
+        static_cast<double>(tol::kLocalPlanesMaxPlanes),
+        static_cast<double>(tol::kLocalPlanesMaxChoices), tol::kLocalPlanesMaxKappa,
         static_cast<double>(tol::kDecomposeMaxWork), static_cast<double>(tol::kDecomposeSamples)})
     h.add(x);
   return h.hex();

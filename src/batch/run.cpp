@@ -58,7 +58,7 @@ PairResult decode_pair_result(const std::string& s) {
   r.a = j["a"];
   r.b = j["b"];
   const int status = j["s"];
-  if (status < int(Status::kSeparated) || status > int(Status::kClearanceViolation))
+  if (status < int(Status::kSeparated) || status > int(Status::kUndecided))
     throw std::runtime_error("unknown status " + std::to_string(status));
   r.status = static_cast<Status>(status);
   r.depth = j["d"];

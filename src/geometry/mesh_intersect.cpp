@@ -198,6 +198,34 @@ double PreparedMesh::outside_distance(const Vec3& v) const {
   return outside_distance(v, none);
 }
 
+namespace {
+
+// Which side of an oriented closed mesh p lies on, from its nearest point q on
+// face `face` (squared distance d2): +1 outside, -1 inside, 0 when the nearest
+// face cannot tell (q on an edge or vertex, a degenerate segment as near, or
+// orientation unknown), and only the ray test can. Exact when q lies strictly
+// inside the face: the segment p–q then crosses no other face.
+int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
+                      double d2) {
+  bool decided = m.oriented && d2 > 0;
+  for (const Segment3& s : m.segments)
+    decided = decided && CGAL::squared_distance(Point3(v.x(), v.y(), v.z()), s) > d2;
+  if (!decided) return 0;
+  // Barycentric coordinates of q in the nearest face: strictly inside it?
+  const Triangle3& t = *face;
+  const Vec3 a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()),
+      c(t[2].x(), t[2].y(), t[2].z()), x(q.x(), q.y(), q.z());
+  const Vec3 e0 = b - a, e1 = c - a, e2 = x - a;
+  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0),
+               d21 = e2.dot(e1), den = d00 * d11 - d01 * d01;
+  const double l1 = (d11 * d20 - d01 * d21) / den, l2 = (d00 * d21 - d01 * d20) / den;
+  const double margin = 1e-6;
+  if (!(den > 0 && l1 > margin && l2 > margin && 1 - l1 - l2 > margin)) return 0;
+  return e0.cross(e1).dot(Vec3(v - x)) > 0 ? 1 : -1;
+}
+
+}  // namespace
+
 double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
@@ -221,28 +249,75 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
   hint.point = Vec3(q.x(), q.y(), q.z());
   hint.face = static_cast<long>(face - m.faces.cbegin());
   const double d2 = CGAL::squared_distance(p, q);
-  bool decided = m.oriented && d2 > 0;
-  for (const Segment3& s : m.segments) decided = decided && CGAL::squared_distance(p, s) > d2;
-  if (decided) {
-    // Barycentric coordinates of q in the nearest face: strictly inside it?
-    const Triangle3& t = *face;
-    const Vec3 a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()),
-        c(t[2].x(), t[2].y(), t[2].z()), x(q.x(), q.y(), q.z());
-    const Vec3 e0 = b - a, e1 = c - a, e2 = x - a;
-    const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0),
-                 d21 = e2.dot(e1), den = d00 * d11 - d01 * d01;
-    const double l1 = (d11 * d20 - d01 * d21) / den, l2 = (d00 * d21 - d01 * d20) / den;
-    const double margin = 1e-6;
-    if (den > 0 && l1 > margin && l2 > margin && 1 - l1 - l2 > margin) {
-      const Vec3 n = e0.cross(e1);
-      return n.dot(Vec3(v - x)) > 0 ? std::sqrt(d2) : inside_here();
-    }
-  }
+  const int side = nearest_face_side(m, v, q, face, d2);
+  if (side != 0) return side > 0 ? std::sqrt(d2) : inside_here();
   return m.side(p) == CGAL::ON_BOUNDED_SIDE ? inside_here() : distance(v);
 }
 
 bool PreparedMesh::inside(const Vec3& v) const {
   return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_BOUNDED_SIDE;
+}
+
+bool PreparedMesh::outside(const Vec3& v) const {
+  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_UNBOUNDED_SIDE;
+}
+
+bool PreparedMesh::oriented() const {
+  return impl_->parity && impl_->oriented;
+}
+
+bool PreparedMesh::has_segments() const {
+  return !impl_->segments.empty();
+}
+
+double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal) const {
+  const Impl& m = *impl_;
+  const Point3 p(v.x(), v.y(), v.z());
+  Point3 q = p;
+  double d2 = INFINITY;
+  int side = 0;
+  Vec3 normal = Vec3::Zero();
+  if (!m.faces.empty()) {
+    const auto [qf, face] = m.tree.closest_point_and_primitive(p);
+    q = qf;
+    d2 = CGAL::squared_distance(p, q);
+    if (m.parity) side = nearest_face_side(m, v, q, face, d2);
+    const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
+    normal = Vec3(n.x(), n.y(), n.z()).normalized();
+  }
+  for (const Segment3& s : m.segments)
+    if (CGAL::squared_distance(p, s) < d2) {
+      q = m.closest(p);
+      d2 = CGAL::squared_distance(p, q);
+      side = 0;
+      normal.setZero();
+      break;
+    }
+  if (face_normal) *face_normal = normal;
+  if (nearest) *nearest = Vec3(q.x(), q.y(), q.z());
+  const double d = std::sqrt(d2);
+  if (!m.parity || d == 0) return -d;
+  if (side == 0) side = m.side(p) == CGAL::ON_BOUNDED_SIDE ? -1 : 1;
+  return side < 0 ? d : -d;
+}
+
+void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const {
+  const Impl& m = *impl_;
+  if (m.faces.empty()) return;
+  std::vector<TriIter> hits;
+  m.tree.all_intersected_primitives(CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()),
+                                    std::back_inserter(hits));
+  for (TriIter t : hits) out.push_back(static_cast<int>(t - m.faces.cbegin()));
+}
+
+std::array<Vec3, 3> PreparedMesh::face(int i) const {
+  const Triangle3& t = impl_->faces[i];
+  return {Vec3(t[0].x(), t[0].y(), t[0].z()), Vec3(t[1].x(), t[1].y(), t[1].z()),
+          Vec3(t[2].x(), t[2].y(), t[2].z())};
+}
+
+int PreparedMesh::faces() const {
+  return static_cast<int>(impl_->faces.size());
 }
 
 namespace {
@@ -321,6 +396,10 @@ bool meshes_intersect(const PreparedMesh& pa, const PreparedMesh& pb) {
   if (!CGAL::do_overlap(a.box, b.box)) return false;
   if (surfaces_meet(a, b)) return true;
   return shell_inside(a, b) || shell_inside(b, a);
+}
+
+bool surfaces_meet(const PreparedMesh& a, const PreparedMesh& b) {
+  return CGAL::do_overlap(a.impl().box, b.impl().box) && surfaces_meet(a.impl(), b.impl());
 }
 
 bool meshes_intersect(const Mesh& a, const Mesh& b) {

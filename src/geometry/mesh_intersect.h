@@ -3,7 +3,9 @@
 // CGAL lives in mesh_intersect.cpp only.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <vector>
 
 #include "geometry/mesh.h"
 #include "geometry/types.h"
@@ -28,13 +30,31 @@ class PreparedMesh {
   PreparedMesh& operator=(PreparedMesh&&) noexcept;
 
   bool closed() const;
+  /// Closed, every edge used as often u→v as v→u, enclosed volume > 0: each
+  /// face's corners run counter-clockwise seen from outside the solid.
+  bool oriented() const;
   int shells() const;  ///< connected components (triangles sharing a vertex)
+  /// Some triangles are degenerate (kept as segments): a face list is not the whole surface.
+  bool has_segments() const;
+  /// Signed distance to the surface: > 0 strictly inside the closed mesh
+  /// (even-odd rule), else minus the distance; the nearest surface point in
+  /// *nearest and its face's unit normal (from the corners' order; zero when
+  /// the nearest is a degenerate triangle) in *face_normal. On open meshes it
+  /// is never positive.
+  double signed_distance(const Vec3& p, Vec3* nearest = nullptr, Vec3* face_normal = nullptr) const;
+  /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to `out`.
+  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
+  /// Corners of face i (0 <= i < faces()), in the mesh's order.
+  std::array<Vec3, 3> face(int i) const;
+  int faces() const;
   /// Distance from p to the surface (the nearest triangle), scene units.
   double distance(const Vec3& p) const;
   /// The point of the surface nearest to p.
   Vec3 closest_point(const Vec3& p) const;
   /// p strictly inside the closed mesh (even-odd rule); always false when open.
   bool inside(const Vec3& p) const;
+  /// p strictly outside the closed mesh (not on its surface); always false when open.
+  bool outside(const Vec3& p) const;
   /// Distance from p to the part: 0 strictly inside a closed mesh, else the
   /// distance to the surface. On consistently oriented closed meshes the side
   /// of the nearest face decides when the nearest point is inside that face
@@ -72,6 +92,8 @@ class PreparedMesh {
 /// self-intersecting meshes: their inside is the even-odd one, so a part in
 /// the overlap of two overlapping shells of one mesh counts as outside.
 bool meshes_intersect(const PreparedMesh& a, const PreparedMesh& b);
+/// Whether a surface of a meets a surface of b (exact; touching counts); no containment test.
+bool surfaces_meet(const PreparedMesh& a, const PreparedMesh& b);
 bool meshes_intersect(const Mesh& a, const Mesh& b);
 
 /// A lower bound of the pair's penetration depth from single vertices: a vertex

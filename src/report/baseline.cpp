@@ -48,8 +48,8 @@ Baseline parse_baseline(const std::string& text, const std::string& path) {
     f.a = p["a"].string();
     f.b = p["b"].string();
     f.status = p["status"].string();
-    static const char* kStatuses[] = {"separated", "false_positive", "interference", "error",
-                                      "clearance_violation"};
+    static const char* kStatuses[] = {"separated", "false_positive",      "interference",
+                                      "error",     "clearance_violation", "undecided"};
     bool known = false;
     for (const char* s : kStatuses) known |= f.status == s;
     if (!known) p["status"].fail("unknown status \"" + f.status + "\"");
@@ -98,7 +98,8 @@ std::vector<GoneFinding> gone_findings(const Baseline& baseline, const RunResult
         g.state = BaselineState::kAbsent;
         g.reason = "checked: separated";
       } else {
-        g.reason = "the pair failed: " + r.error;
+        g.reason = r.status == Status::kUndecided ? "the pair is undecided: " + r.reason
+                                                  : "the pair failed: " + r.error;
       }
       gone.push_back(g);
       continue;

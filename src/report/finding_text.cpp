@@ -11,6 +11,14 @@ std::string short_number(double x) {
   return buf;
 }
 
+std::string depth_meaning(const std::string& depth_source) {
+  if (depth_source == "thickness") return "overlap thickness";
+  if (depth_source == "vertex") return "deepest vertex depth";
+  if (depth_source == "surface") return "deepest surface point depth";
+  if (depth_source == "pieces") return "piece depth";
+  return "depth";
+}
+
 std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
                          const PairReview& review, const std::string& units, double tolerance) {
   const std::string& a = parts[r.a].id;
@@ -26,11 +34,21 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
          short_number(*r.clearance_min) + " " + units + "; separating normal " + dir;
   } else if (r.status == Status::kSeparated) {
     t += "; separating normal " + dir;
+  } else if (r.status == Status::kUndecided) {
+    const auto [lower, upper] = r.depth_bounds.value_or(std::array<double, 2>{r.depth, r.depth});
+    t += ": depth between " + short_number(lower) + " and " + short_number(upper) + " " + units +
+         ", tolerance " + short_number(tolerance) + " " + units + " (" + r.reason + ")";
   } else {
-    t += ": depth " + short_number(r.depth) + " " + units +
+    t += ": " + depth_meaning(r.depth_source) + " " + short_number(r.depth) + " " + units +
          (r.status == Status::kInterference ? " > " : " <= ") + "tolerance " +
-         short_number(tolerance) + " " + units + "; moving " + b + " by the depth along " + dir +
-         " separates the pair";
+         short_number(tolerance) + " " + units;
+    if (r.depth_bounds && r.depth_source != "hull")
+      t += " (certified between " + short_number((*r.depth_bounds)[0]) + " and " +
+           short_number((*r.depth_bounds)[1]) + " " + units + ")";
+    // Only a convex pair's depth is a move that separates it; a nonconvex
+    // pair's depth is a bound or a thickness (docs/solver.md).
+    if (r.depth_source == "hull")
+      t += "; moving " + b + " by the depth along " + dir + " separates the pair";
   }
   if (review.baseline_state)
     t += "; baseline: " + std::string(baseline_state_name(*review.baseline_state));

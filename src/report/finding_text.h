@@ -8,10 +8,19 @@
 
 namespace pd {
 
+/// Every sentence about a pair, rendered from its status, depth source and
+/// bounds, so no output can contradict the numbers:
 /// "interference: depth 0.53 mm > tolerance 0.1 mm; moving b by the depth along
-/// (0, 0, 1) separates the pair" (with the baseline state and suppression when set).
+/// (0, 0, 1) separates the pair" (convex pairs: the depth is a separating move);
+/// "false_positive: overlap thickness 0.02 mm <= tolerance 0.05 mm (certified
+/// between 0.02 and 0.03 mm)" (nonconvex pairs: no move is claimed);
+/// "undecided: depth between 0.02 and 0.3 mm, tolerance 0.05 mm (why)"; with
+/// the baseline state and suppression when set.
 std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
                          const PairReview& review, const std::string& units, double tolerance);
+
+/// What a depth of this source is: "depth", "overlap thickness", "deepest vertex depth", …
+std::string depth_meaning(const std::string& depth_source);
 
 /// Shortest round-trip-ish decimal for messages (%.6g).
 std::string short_number(double x);

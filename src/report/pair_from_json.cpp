@@ -4,7 +4,7 @@ namespace pd {
 
 Status status_from_name(const std::string& name) {
   for (Status s : {Status::kSeparated, Status::kFalsePositive, Status::kInterference,
-                   Status::kError, Status::kClearanceViolation})
+                   Status::kError, Status::kClearanceViolation, Status::kUndecided})
     if (name == status_name(s)) return s;
   throw std::invalid_argument("unknown status \"" + name + "\"");
 }
@@ -38,6 +38,11 @@ PairResult pair_from_json(const nlohmann::ordered_json& j, int a, int b) {
     if (j.contains("depth_bounds")) r.depth_bounds = j["depth_bounds"].get<std::array<double, 2>>();
     if (j.contains("confirmed")) r.confirmed = j["confirmed"].get<bool>();
     if (j.contains("pieces")) r.pieces = j["pieces"].get<std::array<int, 2>>();
+    if (j.contains("at")) {
+      const auto& p = j["at"];
+      r.at = Vec3(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
+    }
+    if (j.contains("reason")) r.reason = j["reason"].get<std::string>();
     if (j.contains("clearance")) r.clearance_min = j["clearance"].at("min").get<double>();
     if (j.contains("motion")) {
       const auto& mo = j["motion"];

@@ -9,7 +9,7 @@ namespace pd {
 using json = nlohmann::ordered_json;
 
 int Summary::exit_code() const {
-  if (error > 0 || part_errors > 0 || unchecked > 0) return 3;
+  if (error > 0 || undecided > 0 || part_errors > 0 || unchecked > 0) return 3;
   return interference > 0 || clearance_violation > 0 ? 1 : 0;
 }
 
@@ -39,6 +39,9 @@ Summary summarize(const RunResult& r) {
       case Status::kClearanceViolation:
         ++s.clearance_violation;
         break;
+      case Status::kUndecided:
+        ++s.undecided;
+        break;
     }
   }
   return s;
@@ -62,6 +65,8 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
     if (r.depth_bounds) j["depth_bounds"] = *r.depth_bounds;
     if (r.confirmed) j["confirmed"] = *r.confirmed;
     if (r.pieces) j["pieces"] = *r.pieces;
+    if (r.at) j["at"] = {r.at->x() + 0.0, r.at->y() + 0.0, r.at->z() + 0.0};
+    if (!r.reason.empty()) j["reason"] = r.reason;
   }
   if (r.clearance_min && r.status != Status::kError) {
     json c = {{"min", *r.clearance_min}};
@@ -122,6 +127,7 @@ json summary_json(const Summary& s) {
             {"false_positive", s.false_positive},
             {"interference", s.interference},
             {"error", s.error},
+            {"undecided", s.undecided},
             {"clearance_violation", s.clearance_violation},
             {"exit_code", s.exit_code()}};
   if (!s.clearance_checked) j.erase("clearance_violation");
@@ -193,14 +199,15 @@ std::string summary_line(const Summary& s, double seconds) {
   std::snprintf(
       buf, sizeof buf,
       "pdcheck: %ld parts, %ld candidate pairs (%ld culled%s): %ld interference, %s%ld "
-      "false_positive, %ld separated, %ld error%s in %.2f s",
+      "false_positive, %ld separated, %s%ld error%s in %.2f s",
       s.parts, s.candidates, s.culled,
       s.unchecked ? (", " + std::to_string(s.unchecked) + " unchecked").c_str() : "",
       s.interference,
       s.clearance_checked
           ? (std::to_string(s.clearance_violation) + " clearance_violation, ").c_str()
           : "",
-      s.false_positive, s.separated, s.error,
+      s.false_positive, s.separated,
+      s.undecided ? (std::to_string(s.undecided) + " undecided, ").c_str() : "", s.error,
       s.part_errors ? (", " + std::to_string(s.part_errors) + " part(s) unusable").c_str() : "",
       seconds);
   return buf;

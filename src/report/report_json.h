@@ -22,8 +22,10 @@ struct Summary {
   long unchecked = 0;  ///< pairs of an unusable part, never formed
   long separated = 0, false_positive = 0, interference = 0, error = 0;
   long clearance_violation = 0;
+  long undecided = 0;  ///< pairs whose depth bracket straddles the tolerance
   bool clearance_checked = false;
-  /// 3 if anything was unchecked, else 1 on interference or clearance violation, else 0
+  /// 3 if anything was unchecked or undecided, else 1 on interference or clearance violation, else
+  /// 0
   int exit_code() const;
 };
 Summary summarize(const RunResult& r);

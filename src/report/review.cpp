@@ -64,7 +64,7 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
     if (pr.baseline_state) ++rv.state_count[static_cast<int>(*pr.baseline_state)];
     rv.suppressed += pr.suppressed ? 1 : 0;
     rv.failing += pr.fails ? 1 : 0;
-    if (r.status == Status::kError) failed.insert(pr.fingerprint);
+    if (not_decided(r.status)) failed.insert(pr.fingerprint);
     if (pr.not_holding) {
       const Suppression& s =
           options.suppressions->entries[options.suppressions->by_fingerprint.at(pr.fingerprint)];

@@ -121,8 +121,9 @@ json mesh_json(const std::string& label, const WebMesh& m) {
 int status_rank(const std::string& s) {
   if (s == "interference") return 0;
   if (s == "clearance_violation") return 1;
-  if (s == "error") return 2;
-  return 3;  // false_positive
+  if (s == "undecided") return 2;
+  if (s == "error") return 3;
+  return 4;  // false_positive
 }
 
 double depth_of(const json& p) {
@@ -210,7 +211,7 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
                 {"status", p.value("status", "")}};
     for (const char* key : {"depth", "direction", "margin", "depth_source", "pieces", "confirmed",
                             "error", "baseline_state", "suppressed", "warnings", "hull_depth",
-                            "depth_bounds", "distance", "clearance", "motion"})
+                            "depth_bounds", "distance", "clearance", "motion", "at", "reason"})
       if (p.contains(key)) row[key] = p[key];
     if (row.contains("motion")) row["motion"].erase("series");
     if (budget == 0) {

@@ -47,10 +47,10 @@ std::string render_junit(const ReportInput& in) {
              markup_escape(case_name(run.parts[r.a].id, run.parts[r.b].id, pr.fingerprint)) +
              "\" time=\"" + seconds(r.time_ms / 1000.0) + "\"";
     ++tests;
-    if (r.status == Status::kError) {
+    if (not_decided(r.status)) {
       ++errors;
-      cases += ">\n      <error type=\"error\" message=\"" + markup_escape(text) + "\">" +
-               markup_escape(text) + "</error>\n    </testcase>\n";
+      cases += ">\n      <error type=\"" + std::string(status_name(r.status)) + "\" message=\"" +
+               markup_escape(text) + "\">" + markup_escape(text) + "</error>\n    </testcase>\n";
     } else if (pr.suppressed) {
       ++skipped;
       cases += ">\n      <skipped>" +

@@ -32,10 +32,14 @@ const Rule kRules[] = {
      "Two parts overlap by at most the tolerance: a discretization false positive.", "note"},
     {Status::kError, "PairNotChecked", "The pair could not be checked (the reason is given).",
      "error"},
+    {Status::kUndecided, "PairUndecided",
+     "The pair's certified depth bracket still straddles the tolerance: not decided within the "
+     "work box (the bracket and the reason are given).",
+     "error"},
 };
 
 int rule_index(Status s) {
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < static_cast<int>(std::size(kRules)); ++k)
     if (kRules[k].status == s) return k;
   return -1;
 }
@@ -83,7 +87,7 @@ std::string part_file(const Part& p, const std::string& scene) {
 }
 
 json rule_json(const Rule& r, FailOn bar) {
-  const bool fails = reaches_bar(bar, r.status) || r.status == Status::kError;
+  const bool fails = reaches_bar(bar, r.status) || not_decided(r.status);
   return {{"id", status_name(r.status)},
           {"name", r.name},
           {"shortDescription", {{"text", r.description}}},
@@ -103,14 +107,14 @@ std::string render_sarif(const ReportInput& in) {
   for (size_t k = 0; k < run.pairs.size(); ++k) {
     const PairResult& r = run.pairs[k];
     const PairReview& pr = rv.pairs[k];
-    if (!is_finding(r.status) && r.status != Status::kError) continue;
+    if (!is_finding(r.status) && !not_decided(r.status)) continue;
     const int rule = rule_index(r.status);
     const Part& a = run.parts[r.a];
     const Part& b = run.parts[r.b];
     json res = {
         {"ruleId", status_name(r.status)},
         {"ruleIndex", rule},
-        {"level", r.status == Status::kError || pr.fails ? "error" : kRules[rule].level},
+        {"level", not_decided(r.status) || pr.fails ? "error" : kRules[rule].level},
         {"message",
          {{"text", finding_text(r, run.parts, pr, in.context.units, in.context.tolerance)}}},
         {"locations", locations({part_file(a, scene), part_file(b, scene)})},

@@ -10,8 +10,29 @@ namespace pd {
 
 namespace {
 
-constexpr CacheKind kKind{"pdcheck-hulls-1", ".pdh"};
+constexpr CacheKind kKind{"pdcheck-hulls-2", ".pdh"};
 constexpr CacheKind kInlineKind{"pdcheck-inline-hull-1", ".pdi"};
+
+/// One line per warning (a line end inside one becomes a space).
+std::string warning_lines(const std::vector<std::string>& warnings) {
+  std::string out;
+  for (const std::string& w : warnings) {
+    for (char c : w) out += c == '\n' ? ' ' : c;
+    out += '\n';
+  }
+  return out;
+}
+
+/// `n` lines from `at` into `out`; the offset past them, or npos when cut short.
+size_t read_warning_lines(const std::string& e, size_t at, long n, std::vector<std::string>& out) {
+  for (long k = 0; k < n; ++k) {
+    const size_t eol = e.find('\n', at);
+    if (eol == std::string::npos) return std::string::npos;
+    out.push_back(e.substr(at, eol - at));
+    at = eol + 1;
+  }
+  return at;
+}
 
 }  // namespace
 
@@ -21,7 +42,8 @@ std::string hulls_key(const std::string& content_hash, bool per_mesh) {
   return h.hex();
 }
 
-// Body: the counts on one line ("n c1 … cn"), then the point-set bytes.
+// Body: the counts on one line ("n c1 … cn w"), w warning lines, then the
+// point-set bytes.
 std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key) {
   const std::optional<std::string> entry = read_cache_entry(dir, kKind, key);
   if (!entry) return std::nullopt;
@@ -36,7 +58,11 @@ std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::
     if (!(head >> c) || c < 0) return std::nullopt;
     h.counts.push_back(c);
   }
-  auto sets = point_sets_from_bytes(*entry, eol + 1, n);
+  long warnings = 0;
+  if (!(head >> warnings) || warnings < 0) return std::nullopt;
+  const size_t at = read_warning_lines(*entry, eol + 1, warnings, h.warnings);
+  if (at == std::string::npos) return std::nullopt;
+  auto sets = point_sets_from_bytes(*entry, at, n);
   if (!sets) return std::nullopt;
   h.reduced = std::move(*sets);
   return h;
@@ -47,7 +73,7 @@ std::string write_cached_hulls(const std::string& dir, const std::string& key,
   std::ostringstream head;
   head << h.reduced.size();
   for (long c : h.counts) head << ' ' << c;
-  head << '\n';
+  head << ' ' << h.warnings.size() << '\n' << warning_lines(h.warnings);
   return write_cache_entry(dir, kKind, key, head.str() + point_sets_bytes(h.reduced));
 }
 
@@ -64,20 +90,15 @@ std::optional<Hull> read_cached_hull(const std::string& dir, const std::string& 
   const std::optional<std::string> entry = read_cache_entry(dir, kInlineKind, key);
   if (!entry) return std::nullopt;
   const std::string& e = *entry;
-  size_t eol = e.find('\n');
+  const size_t eol = e.find('\n');
   if (eol == std::string::npos) return std::nullopt;
   std::istringstream head(e.substr(0, eol));
   Hull h;
   long warnings = 0;
   if (!(head >> h.dimension >> warnings) || h.dimension < 0 || h.dimension > 3 || warnings < 0)
     return std::nullopt;
-  size_t at = eol + 1;
-  for (long k = 0; k < warnings; ++k) {
-    eol = e.find('\n', at);
-    if (eol == std::string::npos) return std::nullopt;
-    h.warnings.push_back(e.substr(at, eol - at));
-    at = eol + 1;
-  }
+  const size_t at = read_warning_lines(e, eol + 1, warnings, h.warnings);
+  if (at == std::string::npos) return std::nullopt;
   auto sets = point_sets_from_bytes(e, at, 1);
   if (!sets) return std::nullopt;
   h.vertices = std::move((*sets)[0]);
@@ -86,12 +107,7 @@ std::optional<Hull> read_cached_hull(const std::string& dir, const std::string& 
 
 std::string write_cached_hull(const std::string& dir, const std::string& key, const Hull& h) {
   std::ostringstream head;
-  head << h.dimension << ' ' << h.warnings.size() << '\n';
-  for (std::string w : h.warnings) {
-    for (char& c : w)
-      if (c == '\n') c = ' ';
-    head << w << '\n';
-  }
+  head << h.dimension << ' ' << h.warnings.size() << '\n' << warning_lines(h.warnings);
   return write_cache_entry(dir, kInlineKind, key, head.str() + point_sets_bytes({h.vertices}));
 }
 

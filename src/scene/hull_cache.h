@@ -17,8 +17,9 @@ namespace pd {
 
 /// What the parts stage keeps of a mesh file before placing it.
 struct StoredHulls {
-  std::vector<long> counts;     ///< vertices per mesh as read
-  std::vector<Points> reduced;  ///< per mesh: its hull's vertices, file coordinates
+  std::vector<long> counts;           ///< vertices per mesh as read
+  std::vector<Points> reduced;        ///< per mesh: its hull's vertices, file coordinates
+  std::vector<std::string> warnings;  ///< the loader's about the file (one line each)
 };
 
 /// The key of a file's hulls: its content hash, whether each mesh of the file

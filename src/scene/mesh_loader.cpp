@@ -104,8 +104,10 @@ Eigen::Matrix<float, 3, Eigen::Dynamic> raw_vertices(const aiScene* scene) {
   return out;
 }
 
-std::vector<Mesh> read_ply(std::string_view bytes, bool split_instances) {
+std::vector<Mesh> read_ply(std::string_view bytes, bool split_instances,
+                           std::vector<std::string>* warnings) {
   const PlyFile ply = check_ply(bytes);
+  if (warnings) warnings->insert(warnings->end(), ply.warnings.begin(), ply.warnings.end());
   Assimp::Importer importer;
   const aiScene* scene =
       checked(importer.ReadFileFromMemory(ply.for_assimp.data(), ply.for_assimp.size(), 0, "ply"),
@@ -170,8 +172,8 @@ bool goes_to_ply_check(std::string_view head, std::string_view extension) {
 }  // namespace
 
 std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
-                              bool split_instances) {
-  if (goes_to_ply_check(bytes, extension)) return read_ply(bytes, split_instances);
+                              bool split_instances, std::vector<std::string>* warnings) {
+  if (goes_to_ply_check(bytes, extension)) return read_ply(bytes, split_instances, warnings);
   Assimp::Importer importer;
   // Only positions are needed; no post-processing that could move vertices.
   const aiScene* scene = checked(
@@ -179,14 +181,20 @@ std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extensi
   return meshes_of(scene, split_instances);
 }
 
-std::vector<Mesh> load_meshes(const std::string& path, bool split_instances) {
+std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
+                              std::vector<std::string>* warnings) {
   const std::string problem = path_problem(path);
   if (!problem.empty()) throw MeshError("cannot read mesh file " + path + ": " + problem);
   try {
     // A PLY is read from memory, checked and maybe rewritten; other formats
     // from the path, so a glTF finds its external buffers.
-    if (goes_to_ply_check(read_bytes(path, 4), std::filesystem::path(path).extension().string()))
-      return read_ply(read_bytes(path), split_instances);
+    if (goes_to_ply_check(read_bytes(path, 4), std::filesystem::path(path).extension().string())) {
+      std::vector<std::string> found;
+      std::vector<Mesh> meshes = read_ply(read_bytes(path), split_instances, &found);
+      if (warnings)
+        for (const std::string& w : found) warnings->push_back("mesh file " + path + ": " + w);
+      return meshes;
+    }
     Assimp::Importer importer;
     // Only positions are needed; no post-processing that could move vertices.
     return meshes_of(checked(importer.ReadFile(path, 0), importer), split_instances);

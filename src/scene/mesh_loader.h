@@ -24,7 +24,10 @@ class MeshError : public std::runtime_error {
 /// With split_instances, one mesh per (node, mesh) instance; else one mesh
 /// (triangle indices offset to the concatenated vertices). Faces of more than
 /// three vertices are fanned; points and lines contribute vertices only.
-std::vector<Mesh> load_meshes(const std::string& path, bool split_instances);
+/// `warnings`, when given, gets what the file holds that was skipped (a PLY
+/// header line assimp skips, say), each naming the file.
+std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
+                              std::vector<std::string>* warnings = nullptr);
 
 /// Reads a mesh file's bytes in this process (no time limit, no isolation; for
 /// tests of the PLY check: runs read files by path, load_meshes): a PLY (recognized by its first
@@ -34,7 +37,7 @@ std::vector<Mesh> load_meshes(const std::string& path, bool split_instances);
 /// MeshError with the reason (the caller names the file). A glTF with external buffers needs
 /// load_meshes.
 std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
-                              bool split_instances);
+                              bool split_instances, std::vector<std::string>* warnings = nullptr);
 
 /// Default limit, in seconds, on reading one mesh file in a loader process
 /// (--load-timeout). Generous: assimp reads STL at tens of MB/s and a large
@@ -57,6 +60,7 @@ struct MeshRequest {
 struct LoadedMeshes {
   std::vector<Mesh> meshes;
   std::optional<std::string> error;
+  std::vector<std::string> warnings;  ///< load_meshes' warnings
 };
 
 /// Tests only (fault injection): runs in a loader process before it reads the

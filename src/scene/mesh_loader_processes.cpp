@@ -36,14 +36,15 @@ namespace pd {
 namespace {
 
 // A payload: 'E' and the reason, or 'M', the mesh count, then per mesh its
-// vertex and triangle counts and raw arrays (this machine's byte order: the
-// reader is a fork of the writer).
+// vertex and triangle counts and raw arrays, then the warning count and per
+// warning its length and bytes (this machine's byte order: the reader is a
+// fork of the writer).
 template <class T>
 void put(std::string& out, const T& v) {
   out.append(reinterpret_cast<const char*>(&v), sizeof v);
 }
 
-std::string encode(const std::vector<Mesh>& meshes) {
+std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::string>& warnings) {
   size_t bytes = 1 + 8;
   for (const Mesh& m : meshes)
     bytes += 16 + m.vertices.size() * sizeof(double) + m.triangles.size() * sizeof(int);
@@ -57,6 +58,11 @@ std::string encode(const std::vector<Mesh>& meshes) {
     out.append(reinterpret_cast<const char*>(m.vertices.data()),
                m.vertices.size() * sizeof(double));
     out.append(reinterpret_cast<const char*>(m.triangles.data()), m.triangles.size() * sizeof(int));
+  }
+  put(out, std::uint64_t(warnings.size()));
+  for (const std::string& w : warnings) {
+    put(out, std::uint64_t(w.size()));
+    out += w;
   }
   return out;
 }
@@ -98,6 +104,14 @@ LoadedMeshes decode(const std::string& payload) {
     r.take(m.triangles.data(), m.triangles.size() * sizeof(int));
     out.meshes.push_back(std::move(m));
   }
+  const auto nw = r.get<std::uint64_t>();
+  for (std::uint64_t k = 0; k < nw; ++k) {
+    const auto len = r.get<std::uint64_t>();
+    if (len > payload.size()) throw std::runtime_error("malformed answer from the loader process");
+    std::string w(len, '\0');
+    r.take(w.data(), len);
+    out.warnings.push_back(std::move(w));
+  }
   return out;
 }
 
@@ -118,7 +132,9 @@ std::string load_one(const MeshRequest& f, double memory_mb) {
       mallopt(M_MMAP_THRESHOLD, 32 << 20) && mallopt(M_TRIM_THRESHOLD, 256 << 20);
   (void)tuned;
   try {
-    return encode(load_meshes(f.path, f.split_instances));
+    std::vector<std::string> warnings;
+    std::vector<Mesh> meshes = load_meshes(f.path, f.split_instances, &warnings);
+    return encode(meshes, warnings);
   } catch (const MeshError& e) {
     return std::string("E") + e.what();
   } catch (const std::bad_alloc&) {
@@ -174,7 +190,7 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
     try {
       out[k] = decode(payload);
     } catch (const std::exception& e) {
-      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what()};
+      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what(), {}};
     }
   };
   QueueOptions queue{loaders, timeout, {}, {}};

@@ -1,8 +1,27 @@
+#include <filesystem>
 #include <sstream>
+#include <system_error>
 
 #include "scene/scene.h"
+#include "scene/units.h"
 
 namespace pd {
+
+namespace fs = std::filesystem;
+
+std::string part_list_id(const std::string& path) {
+  fs::path p = fs::path(path).lexically_normal();
+  if (p.is_absolute()) {
+    std::error_code ec;
+    const fs::path cwd = fs::current_path(ec).lexically_normal();
+    if (!ec) {
+      const fs::path rel = p.lexically_relative(cwd);
+      if (!rel.empty() && *rel.begin() != ".." && rel != ".") p = rel;
+    }
+  }
+  std::string id = p.string();
+  return id.empty() ? path : id;
+}
 
 SceneSpec parse_part_list(const std::string& text, const std::string& path) {
   SceneSpec s;
@@ -16,7 +35,7 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
     PartSpec p;
     const auto tab = line.find('\t');
     if (tab == std::string::npos) {
-      p.id = line;
+      p.id = part_list_id(line);
       p.mesh = line;
     } else {
       p.id = line.substr(0, tab);
@@ -39,6 +58,7 @@ SceneSpec parse_stdin_scene(const std::string& text, const std::optional<std::st
     return parse_scene_json(text, "<stdin>", "", units, threads);
   SceneSpec s = parse_part_list(text, "<stdin>");
   s.units = units;
+  for (PartSpec& p : s.parts) p.to_scene_units = mesh_to_scene_units(*p.mesh, units.value_or("mm"));
   return s;
 }
 

@@ -59,8 +59,9 @@ struct MeshFile {
   std::vector<Points> reduced;  ///< per piece, file coordinates
   std::vector<long> counts;     ///< vertices per piece as read
   std::optional<std::string> error;
-  bool hulls_cached = false;  ///< `reduced` and `counts` came from the hull cache
-  std::string hash;           ///< content hash, when a cache needs it
+  std::vector<std::string> warnings;  ///< the loader's (a PLY header line skipped, …)
+  bool hulls_cached = false;          ///< `reduced` and `counts` came from the hull cache
+  std::string hash;                   ///< content hash, when a cache needs it
   // Pieces auto/decompose: the surface and its nonconvexity, once per file.
   std::shared_ptr<const Mesh> mesh;
   double concavity = 0.0;  ///< file units
@@ -113,6 +114,7 @@ bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   if (!hit) return false;
   f.counts = std::move(hit->counts);
   f.reduced = std::move(hit->reduced);
+  f.warnings = std::move(hit->warnings);
   f.hulls_cached = true;
   return true;
 }
@@ -124,13 +126,14 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     // Hulls first: a mesh they reject (non-finite coordinates, ...) fails as in
     // pieces "hull", before any measurement.
     if (!f.hulls_cached) {
+      f.warnings = f.read.warnings;
       for (const Mesh& m : meshes) {
         f.counts.push_back(m.vertices.cols());
         f.reduced.push_back(convex_hull(m.vertices).vertices);
       }
       if (!f.hash.empty())
         write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
-                           {f.counts, f.reduced});
+                           {f.counts, f.reduced, f.warnings});
     }
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
@@ -196,6 +199,7 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
       part.error = file->error;
       return part;
     }
+    part.warnings = file->warnings;
   }
   std::vector<const Points*> sets;  // the point sets to place and hull, not copied
   if (file)

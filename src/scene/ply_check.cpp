@@ -30,6 +30,10 @@
 //    The rewrite leaves out every element but vertex, face and tristrips
 //    (the only ones that carry geometry), data included.
 //
+// 3. A header line it does not know is skipped (not an error), but one among
+//    an element's properties ends that element's property list there. The
+//    rewrite leaves such lines out (and the check warns about each).
+//
 // Whatever assimp returns is then compared with the vertices read here
 // (check_ply_read), so a misreading not worked around is an error, not
 // wrong geometry.
@@ -206,6 +210,13 @@ void walk_binary(std::string_view bytes, size_t pos, bool big, std::vector<Eleme
   }
 }
 
+/// No control characters but tabs: a line of text, not damaged bytes.
+bool text_line(std::string_view line) {
+  return std::none_of(line.begin(), line.end(), [](char c) {
+    return (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f;
+  });
+}
+
 bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
@@ -269,6 +280,8 @@ PlyFile check_ply(std::string_view bytes) {
   std::vector<Element> elements;
   std::optional<Format> format;
   std::string format_line;
+  PlyFile out;
+  bool skipped = false;  // an unknown header line: assimp gets the header without it
   size_t pos = bytes.find('\n') + 1;
   for (int line_no = 2; pos < data; ++line_no) {
     size_t eol = bytes.find('\n', pos);
@@ -320,7 +333,14 @@ PlyFile check_ply(std::string_view bytes) {
       elements.back().properties.push_back(p);
       elements.back().lines.emplace_back(line);
     } else {
-      fail(at + "unknown keyword " + quoted(w[0]));
+      // assimp skips a header line it does not know (Blender 2.4's exporter
+      // wrote "Created by Blender3D 247 - …" without `comment`); so does this
+      // check, with a warning. The line is left out of what assimp gets: among
+      // an element's properties it would end assimp's property list there.
+      if (!text_line(line)) fail(at + "unknown line " + quoted(line) + " is not text");
+      out.warnings.push_back("PLY " + at + "unknown line " + quoted(line) +
+                             " skipped (neither comment, element nor property)");
+      skipped = true;
     }
   }
   if (!format) fail("header has no format line");
@@ -342,7 +362,6 @@ PlyFile check_ply(std::string_view bytes) {
   int xyz[3] = {-1, -1, -1};
   for (size_t e = 0; e < elements.size() && vertex_element == elements.size(); ++e)
     if (elements[e].name == "vertex") vertex_element = e;
-  PlyFile out;
   out.ascii = *format == Format::kAscii;
   if (vertex_element < elements.size()) {
     const Element& v = elements[vertex_element];
@@ -371,7 +390,7 @@ PlyFile check_ply(std::string_view bytes) {
       break;
     }
   const bool pad = !out.ascii && first && *first == '\n';
-  if (kept.size() == elements.size() && !pad) {
+  if (kept.size() == elements.size() && !pad && !skipped) {
     out.for_assimp = std::string(bytes);
     return out;
   }

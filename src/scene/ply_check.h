@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geometry/types.h"
 
@@ -15,6 +16,7 @@ struct PlyFile {
   bool rewritten = false;  ///< for_assimp differs from the file
   bool ascii = false;
   Points vertices;  ///< x, y, z of every `vertex` instance, as the file holds them
+  std::vector<std::string> warnings;  ///< header lines skipped, as assimp skips them
 };
 
 /// True when `bytes` begin like a PLY file ("ply" and a line end).
@@ -22,8 +24,10 @@ bool looks_like_ply(std::string_view bytes);
 
 /// Parses the header and walks every element's data. Throws MeshError naming
 /// the header line or the element instance for: no `end_header` (a file cut
-/// inside its header), an unknown format, keyword or property type, binary or
-/// ASCII data cut short, a value that is not a number, a negative list length.
+/// inside its header), an unknown format or property type, binary or ASCII
+/// data cut short, a value that is not a number, a negative list length, a
+/// header line holding control characters. A header line of text that is no
+/// PLY keyword is skipped as assimp skips it, with a warning.
 PlyFile check_ply(std::string_view bytes);
 
 /// Throws MeshError("the mesh loader misread the file (PLY): …") when the

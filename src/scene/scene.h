@@ -134,7 +134,13 @@ std::string vertex_digest(const Points& p);
 
 /// A plain part list: one mesh path per line, or "id<TAB>path"; blank lines and
 /// lines starting with '#' are skipped. Paths are relative to the working directory.
+/// A line's id is part_list_id(path), so `find x` and `find ./x` give the same ids.
 SceneSpec parse_part_list(const std::string& text, const std::string& path);
+
+/// The id of a part-list path: lexically normal ("./" and "//" gone, "a/../"
+/// resolved without looking at the file system), and relative to the working
+/// directory when it is an absolute path inside it.
+std::string part_list_id(const std::string& path);
 
 /// Standard input: a scene JSON when it starts with '{', a part list otherwise.
 SceneSpec parse_stdin_scene(const std::string& text,

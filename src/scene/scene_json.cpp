@@ -141,6 +141,8 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
   }
   if (j.contains("units")) {
     p.to_scene_units = *unit_in_mm(unit(c, j["units"], at + ".units")) / *unit_in_mm(scene_units);
+  } else if (p.mesh) {
+    p.to_scene_units = mesh_to_scene_units(*p.mesh, scene_units);  // glTF: metres
   }
   if (j.contains("transform")) p.transform = transform(c, j["transform"], at + ".transform");
   if (j.contains("pieces")) {

@@ -100,7 +100,7 @@ DepthSolution exact_depth(const Points& p, const Points& q) {
   // normal (the direction of a tiny closest point would be noise).
   if (depth > -tol::kTouch) {
     DepthSolution s;
-    s.depth = depth > 0 ? depth : 0.0;  // never -0
+    s.depth = depth > tol::kGapRounding ? depth : 0.0;  // touching; never -0
     s.direction = f.normals[best];
     s.distance = 0.0;
     return s;

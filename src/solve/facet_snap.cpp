@@ -3,6 +3,7 @@
 #include <Eigen/SVD>
 #include <vector>
 
+#include "solve/neighbourhood.h"
 #include "solve/objective.h"
 #include "tolerances.h"
 
@@ -17,6 +18,21 @@ std::vector<int> within(const Eigen::RowVectorXd& s, double e, double band, bool
   for (Eigen::Index k = 0; k < s.size(); ++k)
     if (top ? s[k] >= e - band : s[k] <= e + band) ids.push_back(static_cast<int>(k));
   return ids;
+}
+
+// The fitted plane is only within kSnapResidual of the active vertices (their
+// faces are flat to rounding of the input, a float32 mesh's to ~1e-7), so its
+// gap is off by up to that much: too much for a contact, which mlsl settles at
+// kTouch. The facet itself is exact: the lowest facet of P − Q with its normal
+// in a small cap around the fit, from the vertices extreme there. None there,
+// or too many vertices for one exact local search (bumpy faces of a thousand
+// vertices): the fit, a candidate the certificate checks.
+Vec3 exact_facet(const Points& p, const Points& q, const Vec3& fit) {
+  const std::vector<int> pi = extreme_in_cap(p, fit, tol::kSnapCap, true);
+  const std::vector<int> qj = extreme_in_cap(q, fit, tol::kSnapCap, false);
+  if (long(pi.size()) * long(qj.size()) > tol::kNeighbourhoodPoints) return fit;
+  if (const auto f = lowest_local_facet(p, q, pi, qj, fit, tol::kSnapCap)) return f->normal;
+  return fit;
 }
 
 // Tries the active-set tolerances in `bands` from loose to tight (see the header).
@@ -47,7 +63,7 @@ std::optional<Vec3> snap_with(const Points& p, const Points& q, const Vec3& v,
     }
     Vec3 n = svd.matrixV().col(2);
     if (n.dot(v) < 0) n = -n;
-    return n.normalized();
+    return exact_facet(p, q, n.normalized());
   }
   return std::nullopt;
 }

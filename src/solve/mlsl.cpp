@@ -78,7 +78,7 @@ double expected_optima(int w, long searches) {
 
 DepthSolution finish(const PairProblem& pr, const Optimum& best, int distinct, SolveStats stats) {
   DepthSolution s;
-  s.depth = std::max(0.0, best.gap);
+  s.depth = best.gap > tol::kGapRounding ? best.gap : 0.0;
   s.direction = best.v;
   stats.distinct_optima = distinct;
   stats.alpha_evaluations += pr.evaluations();
@@ -174,7 +174,9 @@ bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& st
         gap = g;
         improved = true;
       }
-      if (gap <= tol::kTouch) return true;  // settled: the caller reports the contact
+      // Settled at rounding of 0 (depth 0). A contact above it goes on through
+      // the other caps: one may hold a lower facet of the contact.
+      if (gap <= tol::kGapRounding) return true;
     }
     if (!improved) return true;
     // The cap's facet is a facet of P − Q, exact to rounding: no Ipopt polish;
@@ -200,8 +202,17 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
     if (g < best.gap) best = {v, g};
   };
   // A direction with gap <= 0 is a separating (or touching) plane: depth 0,
-  // proved. Within kTouch of 0 the depth is below the contact resolution.
+  // proved. Within kTouch of 0 the depth is below the contact resolution, but
+  // the depth reported must still be the minimum's: a gap above rounding there
+  // (a fitted or local facet of faces flat only to the input's rounding) may
+  // have a lower facet elsewhere on the contact, down to a separating one, so
+  // the certificate searches for it first (once).
+  bool contact_certified = false;
   auto settled = [&]() {
+    if (best.gap > tol::kGapRounding && best.gap <= tol::kTouch && !contact_certified) {
+      contact_certified = true;
+      certify_minimum(pr, best.v, best.gap, stats);
+    }
     if (best.gap <= 0) return StopReason::kProvenSeparated;
     if (best.gap <= tol::kTouch) return StopReason::kContact;
     return StopReason::kNone;

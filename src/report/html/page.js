@@ -14,7 +14,7 @@
   lap('parse');
   window.pdcheck = api;
 
-  const STATUS_ORDER = ['interference', 'clearance_violation', 'error', 'false_positive', 'separated'];
+  const STATUS_ORDER = ['interference', 'clearance_violation', 'undecided', 'error', 'false_positive', 'separated'];
   const rank = (s) => { const k = STATUS_ORDER.indexOf(s); return k < 0 ? STATUS_ORDER.length : k; };
   const units = data.units || '';
   const findings = data.findings;
@@ -42,7 +42,7 @@
     $('tool').textContent = (tool.name || 'pdcheck') + ' ' + (tool.version || '');
     const cards = [
       ['interference', s.interference], ['clearance_violation', s.clearance_violation],
-      ['false_positive', s.false_positive], ['separated', s.separated], ['error', s.error],
+      ['undecided', s.undecided], ['false_positive', s.false_positive], ['separated', s.separated], ['error', s.error],
       ['parts', s.parts], ['part_errors', s.part_errors], ['candidate_pairs', s.candidate_pairs],
       ['culled', s.culled], ['unchecked', s.unchecked], ['tolerance', len(data.tolerance)],
       ['units', units], ['method', (data.method || {}).name], ['run time', num(data.seconds, 3) + ' s'],
@@ -199,11 +199,22 @@
     add('status', f.status.replace(/_/g, ' ') + (f.confirmed === false ? ' (unconfirmed: an upper bound)' : ''));
     if (f.status === 'error') add('error', f.error || '');
     else {
-      add('depth', len(f.depth) + ' (tolerance ' + len(data.tolerance) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
-      if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') +
+      const source = f.depth_source || 'hull';
+      const meaning = { hull: 'depth', thickness: 'overlap thickness', vertex: 'deepest vertex',
+        surface: 'deepest surface point', pieces: 'piece depth', 'mesh-test': 'depth' }[source] || 'depth';
+      if (f.status === 'undecided' && f.depth_bounds)
+        add('depth', 'between ' + f.depth_bounds.map(len).join(' and ') + ' (tolerance ' + len(data.tolerance) + ')', COLORS.arrow);
+      else
+        add(meaning, len(f.depth) + ' (tolerance ' + len(data.tolerance) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
+      if (f.reason) add('why undecided', f.reason);
+      // Only a convex pair's depth is a move that separates it.
+      if (f.direction && source === 'hull') add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') +
         '): moving B by depth × direction separates the pair');
-      add('depth source', f.depth_source || 'hull');
+      else if (f.direction && source === 'thickness') add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') +
+        '): moving B this way thins the overlap where it is thickest (not a separating move)');
+      add('depth source', source);
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
+      if (f.at) add('at', '(' + f.at.map((x) => num(x, 7)).join(', ') + ')');
     }
     const v = f.view;
     const how = (i) => (i === undefined || i === null ? 'no geometry' : data.meshes[i].how);

@@ -1,0 +1,361 @@
+#include "geometry/solid_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+
+#include "geometry/convexity.h"
+#include "tolerances.h"
+
+namespace pd {
+namespace {
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// The mesh's triangles grouped into shells: triangles that share a vertex
+// position (equal coordinates) are in one shell.
+std::vector<Mesh> shells_of(const Mesh& mesh) {
+  std::map<std::array<double, 3>, int> index;
+  std::vector<int> id(mesh.vertices.cols(), -1);
+  for (long t = 0; t < mesh.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles(k, t);
+      if (id[v] >= 0) continue;
+      const std::array<double, 3> c{mesh.vertices(0, v), mesh.vertices(1, v), mesh.vertices(2, v)};
+      id[v] = index.emplace(c, static_cast<int>(index.size())).first->second;
+    }
+  std::vector<int> parent(index.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (long t = 0; t < mesh.triangles.cols(); ++t)
+    for (int k = 1; k < 3; ++k)
+      parent[find_root(parent, id[mesh.triangles(k, t)])] =
+          find_root(parent, id[mesh.triangles(0, t)]);
+  std::map<int, std::vector<long>> groups;
+  for (long t = 0; t < mesh.triangles.cols(); ++t)
+    groups[find_root(parent, id[mesh.triangles(0, t)])].push_back(t);
+  std::vector<Mesh> shells;
+  if (groups.size() < 2) return shells;
+  for (const auto& [root, tris] : groups) {
+    Mesh s;
+    s.vertices.resize(3, 3 * tris.size());
+    s.triangles.resize(3, tris.size());
+    for (size_t n = 0; n < tris.size(); ++n)
+      for (int k = 0; k < 3; ++k) {
+        s.vertices.col(3 * n + k) = mesh.vertices.col(mesh.triangles(k, tris[n]));
+        s.triangles(k, n) = static_cast<int>(3 * n + k);
+      }
+    shells.push_back(std::move(s));
+  }
+  return shells;
+}
+
+// Distance from p to the triangle (a, b, c) (Ericson, Real-Time Collision
+// Detection, 5.1.5: the closest point by Voronoi region).
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.norm();
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  const double denom = 1.0 / (va + vb + vc);
+  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
+}
+
+// The part of triangle t inside the box [lo, hi] (Sutherland–Hodgman against
+// its six planes): the side tests below need only what lies near the cell, and
+// a large face's far corners would fail them for no reason.
+std::vector<Vec3> clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3& hi) {
+  std::vector<Vec3> poly(t.begin(), t.end()), next;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int upper = 0; upper < 2; ++upper) {
+      const double bound = upper ? hi[axis] : lo[axis];
+      const auto inside = [&](const Vec3& p) {
+        return upper ? p[axis] <= bound : p[axis] >= bound;
+      };
+      next.clear();
+      for (size_t k = 0; k < poly.size(); ++k) {
+        const Vec3 &p = poly[k], &q = poly[(k + 1) % poly.size()];
+        if (inside(p)) next.push_back(p);
+        if (inside(p) != inside(q)) {
+          const double u = (bound - p[axis]) / (q[axis] - p[axis]);
+          Vec3 x = p + u * (q - p);
+          x[axis] = bound;
+          next.push_back(x);
+        }
+      }
+      poly.swap(next);
+      if (poly.empty()) return poly;
+    }
+  return poly;
+}
+
+}  // namespace
+
+SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
+  closed_ = whole_.closed();
+  oriented_ = whole_.oriented();
+  for (long t = 0; t < mesh.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) box_.extend(Vec3(mesh.vertices.col(mesh.triangles(k, t))));
+  noise_ = coordinate_noise(mesh.vertices);
+  hair_ = 1e-9 * std::max(box_.diagonal().norm(), box_.max().cwiseAbs().maxCoeff());
+  std::vector<Mesh> shells = shells_of(mesh);
+  if (shells.empty()) {
+    if (!closed_) note_ = "open mesh: no inside";
+    return;
+  }
+  std::vector<PreparedMesh> prepared;
+  prepared.reserve(shells.size());
+  for (const Mesh& s : shells) prepared.emplace_back(s);
+  bool meet = false;
+  for (size_t i = 0; i < prepared.size() && !meet; ++i)
+    for (size_t j = i + 1; j < prepared.size() && !meet; ++j)
+      meet = surfaces_meet(prepared[i], prepared[j]);
+  if (!meet) {  // the even-odd solid of the whole mesh (cavities are voids)
+    if (!closed_) note_ = "open mesh: no inside";
+    return;
+  }
+  // Shells that touch or overlap (multi-body exports): their union.
+  exact_ = false;
+  closed_ = std::all_of(prepared.begin(), prepared.end(),
+                        [](const PreparedMesh& s) { return s.closed(); });
+  shells_ = std::move(prepared);
+  note_ = closed_
+              ? std::to_string(shells_.size()) + " shells whose surfaces meet: taken as their union"
+              : "open shell: no inside";
+}
+
+DistanceBounds SolidDistance::at(const Vec3& p) const {
+  DistanceBounds r;
+  Vec3 normal = Vec3::Zero();
+  const double sd = whole_.signed_distance(p, &r.nearest, &normal);
+  if (exact_) {
+    r.lower = r.upper = sd;
+    return r;
+  }
+  const double d = std::abs(sd);
+  const bool inside = closed_ && std::any_of(shells_.begin(), shells_.end(),
+                                             [&](const PreparedMesh& s) { return s.inside(p); });
+  // Inside the union: every triangle is at least as near as the union's
+  // surface (shared faces are not surface), so d is a lower bound. It is also
+  // one from above, up to a hair, where the nearest point is union surface:
+  // a point a hair outside its face that lies outside every shell is a point
+  // of the complement (the ray tests are exact).
+  r.lower = inside ? d : -d;
+  r.upper = inside ? INFINITY : -d;
+  if (inside && normal.allFinite() && normal.norm() > 0) {
+    const Vec3 y = r.nearest + hair_ * normal;
+    if (std::all_of(shells_.begin(), shells_.end(),
+                    [&](const PreparedMesh& s) { return s.outside(y); }))
+      r.upper = (y - p).norm();
+  }
+  return r;
+}
+
+SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long max_samples) {
+  SurfaceDepth best;
+  if (!b.closed()) return best;
+  std::vector<int> faces;
+  const Eigen::AlignedBox3d& box = b.box();
+  a.faces_in_box(box.min(), box.max(), faces);
+  // Faces are split in four until a piece is within a quarter of b's thinnest
+  // extent (a rod through a large wall face is sampled across its section);
+  // pieces outside b's box are dropped, so the work follows the overlap.
+  const double spacing = std::max(box.sizes().minCoeff() / 4, 1e-300);
+  long samples = 0;
+  const auto sample = [&](const Vec3& p) {
+    if (!box.contains(p)) return;
+    ++samples;
+    const DistanceBounds d = b.at(p);
+    if (!(d.lower > best.depth)) return;
+    best.depth = d.lower;
+    best.at = p;
+    const Vec3 dir = (p - d.nearest).normalized();
+    if (dir.allFinite()) best.direction = dir;
+  };
+  std::vector<std::pair<std::array<Vec3, 3>, int>> stack;
+  for (int f : faces) stack.push_back({a.face(f), 0});
+  while (!stack.empty() && samples < max_samples) {
+    const auto [t, level] = stack.back();
+    stack.pop_back();
+    Eigen::AlignedBox3d tb(t[0]);
+    tb.extend(t[1]).extend(t[2]);
+    if (!tb.intersects(box)) continue;
+    const double longest =
+        std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
+    if (longest <= spacing || level >= 16) {
+      for (const Vec3& p : t) sample(p);
+      sample((t[0] + t[1] + t[2]) / 3);
+      continue;
+    }
+    const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+    for (const std::array<Vec3, 3>& q :
+         {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
+          std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
+      stack.push_back({q, level + 1});
+  }
+  return best;
+}
+
+namespace {
+
+// The plane model of one oriented closed mesh about a box (SolidDistance::local_planes).
+LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r) {
+  LocalPlanes out;
+  if (!mesh.oriented() || mesh.has_segments()) return out;
+  // A face may cross a plane it should not by at most `cap` (the coordinates'
+  // rounding) and still count as on its side; the crossings actually measured
+  // become the bound's slack, so the certificate holds exactly.
+  const double cap = noise;
+  // Every foot point a bound below uses lies within `reach` of c: a supporting
+  // plane's within r + s_k(x) ≤ 2r + s_k(c) (planes farther are not used), a
+  // hole's within r + kappa·(σ_c + r + slack) (checked once kappa is known).
+  const double reach = tol::kLocalPlanesMaxKappa * (d + r + cap) + r;
+  std::vector<int> near;
+  mesh.faces_in_box(c.array() - reach, c.array() + reach, near);
+  if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
+  // The faces meeting the ball, grouped by plane (a quad's two triangles, a
+  // flat face's fan: one plane, their rounding measured as slack below).
+  struct Group {
+    FacePlane plane;
+    std::vector<std::vector<Vec3>> faces;  ///< each face clipped to the reach's box
+    bool supporting = true;
+  };
+  const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
+  std::vector<Group> groups;
+  for (int f : near) {
+    const std::array<Vec3, 3> t = mesh.face(f);
+    if (point_triangle_distance(c, t[0], t[1], t[2]) > reach) continue;
+    const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+    if (!n.allFinite()) return out;
+    std::vector<Vec3> part = clip_to_box(t, box_lo, box_hi);
+    if (part.empty()) continue;
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& q) {
+      return q.plane.normal.dot(n) > 0.999 &&
+             std::all_of(part.begin(), part.end(),
+                         [&](const Vec3& p) { return std::abs(q.plane.at(p)) <= cap; });
+    });
+    if (g == groups.end()) {
+      groups.push_back({{n, n.dot(t[0])}, {}, true});
+      g = groups.end() - 1;
+    }
+    g->faces.push_back(std::move(part));
+  }
+  double slack = 0.0;
+  // The least s over a face's corners (sign +1) or minus the largest (sign -1):
+  // ≥ -cap means the face lies on that side up to rounding.
+  const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
+    double m = INFINITY;
+    for (const Vec3& p : face) m = std::min(m, sign * q.at(p));
+    return m;
+  };
+  // Supporting: every face in the ball on the plane's inner side.
+  std::vector<double> crossing(groups.size(), 0.0);
+  for (size_t k = 0; k < groups.size(); ++k)
+    for (const Group& h : groups)
+      for (const auto& t : h.faces) {
+        const double m = least(t, groups[k].plane, 1.0);
+        crossing[k] = std::max(crossing[k], -m);
+        groups[k].supporting = groups[k].supporting && m >= -cap;
+      }
+  std::vector<const Group*> hole;
+  std::vector<std::pair<double, size_t>> nearest;  // supporting planes by s(c)
+  for (size_t k = 0; k < groups.size(); ++k) {
+    const Group& g = groups[k];
+    if (!g.supporting)
+      hole.push_back(&g);
+    else if (g.plane.at(c) + 2.0 * r <= reach)  // every foot point within the ball
+      nearest.push_back({g.plane.at(c), k});
+  }
+  // Each supporting plane bounds sd on its own: the nearest ones bound it best.
+  std::sort(nearest.begin(), nearest.end());
+  if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
+    nearest.resize(tol::kLocalPlanesMaxPlanes);
+  for (const auto& [s_c, k] : nearest) {
+    out.supporting.push_back(groups[k].plane);
+    slack = std::max(slack, crossing[k]);
+  }
+  out.slack = slack;
+  if (hole.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes)) {
+    out.supporting.clear();
+    return out;
+  }
+  if (hole.empty()) return out;
+  // A convex hole: each of its faces on the outer side of the others' planes,
+  // every other face on the inner side of one of them.
+  double hole_slack = slack;
+  for (const Group* g : hole) {
+    for (const auto& t : g->faces) hole_slack = std::max(hole_slack, -least(t, g->plane, 1.0));
+    for (const Group* h : hole) {
+      if (g == h) continue;
+      for (const auto& t : g->faces) {
+        const double m = least(t, h->plane, -1.0);
+        if (m < -cap) return out;
+        hole_slack = std::max(hole_slack, -m);
+      }
+    }
+  }
+  for (const Group& g : groups) {
+    if (!g.supporting) continue;
+    for (const auto& t : g.faces) {
+      double best = -INFINITY;
+      for (const Group* h : hole) best = std::max(best, least(t, h->plane, 1.0));
+      if (best < -cap) return out;
+      hole_slack = std::max(hole_slack, -best);
+    }
+  }
+  Vec3 mean = Vec3::Zero();
+  for (const Group* g : hole) mean += g->plane.normal;
+  mean.normalize();
+  double cos_spread = 1.0, sigma = -INFINITY;
+  for (const Group* g : hole) {
+    cos_spread = std::min(cos_spread, g->plane.normal.dot(mean));
+    sigma = std::max(sigma, g->plane.at(c));
+  }
+  if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return out;
+  const double kappa = 1.0 / cos_spread;
+  if (r + kappa * (sigma + r + hole_slack) > reach) return out;  // a foot could leave the ball
+  out.kappa = kappa;
+  out.slack = hole_slack;
+  for (const Group* g : hole) out.hole.push_back(g->plane);
+  return out;
+}
+
+}  // namespace
+
+LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const {
+  if (exact_) return planes_near(whole_, noise_, c, d, r);
+  // A union: where one shell alone has faces near the box and the centre lies
+  // outside every other shell, the union is that shell there.
+  const double reach = tol::kLocalPlanesMaxKappa * (d + r + noise_) + r;
+  int alone = -1;
+  std::vector<int> near;
+  for (size_t i = 0; i < shells_.size(); ++i) {
+    near.clear();
+    shells_[i].faces_in_box(c.array() - reach, c.array() + reach, near);
+    if (near.empty()) continue;
+    if (alone >= 0) return {};
+    alone = static_cast<int>(i);
+  }
+  if (alone < 0) return {};
+  for (size_t i = 0; i < shells_.size(); ++i)
+    if (static_cast<int>(i) != alone && !shells_[i].outside(c)) return {};
+  return planes_near(shells_[alone], noise_, c, d, r);
+}
+
+}  // namespace pd

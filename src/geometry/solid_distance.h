@@ -1,0 +1,119 @@
+// Signed distance to a part's solid, with what the overlap thickness needs to
+// bound it soundly: the distance from inside (exact, or a lower bound where a
+// multi-body file's shells meet) and, around a region, the local plane
+// structure of the surface that bounds the distance from above.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "geometry/mesh_intersect.h"
+#include "geometry/types.h"
+#include "tolerances.h"
+
+namespace pd {
+
+/// Bounds of the signed distance sd(p) = d(p, complement) inside, −d(p, solid)
+/// outside. Outside a closed solid both bounds are the exact −distance.
+struct DistanceBounds {
+  double lower = 0.0;
+  double upper = 0.0;  ///< +inf inside a solid whose inside distance is not known from above
+  Vec3 nearest = Vec3::Zero();  ///< nearest point of the surface (every triangle)
+};
+
+/// A face plane: s(x) = offset − normal·x, positive on the solid's side
+/// (`normal` points out of the solid, from the face's orientation).
+struct FacePlane {
+  Vec3 normal = Vec3::UnitZ();
+  double offset = 0.0;
+  double at(const Vec3& x) const { return offset - normal.dot(x); }
+};
+
+/// The surface near a ball, as planes that bound the distance from inside from
+/// above for every point x of a box about the ball's centre that lies in the
+/// solid (docs/solver.md, "Overlap thickness"):
+/// - supporting planes: every face near the ball lies on their inner side, so
+///   the solid's complement holds each one's outer half-ball and
+///   sd(x) ≤ s_k(x) + slack for each k (a pin's facets, a plate's face);
+/// - hole planes: the other faces' planes, when they bound a convex hole (each
+///   such face on the outer side of the others' planes, every other face on the
+///   inner side of one of them, normals within 60° of their mean m): the
+///   complement then holds the intersection of their outer sides, and
+///   sd(x) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread), since
+///   moving x along m by that much leaves every outer side's boundary behind.
+/// Both empty: nothing could be certified (degenerate faces, no orientation,
+/// too many faces); the Lipschitz bound still holds.
+struct LocalPlanes {
+  std::vector<FacePlane> supporting;
+  std::vector<FacePlane> hole;
+  double kappa = 1.0;
+  /// How far faces were measured to cross the planes they should lie behind (the
+  /// coordinates' rounding; accepted up to noise()): added to the bound, so it holds exactly.
+  double slack = 0.0;
+  bool empty() const { return supporting.empty() && hole.empty(); }
+};
+
+/// A closed triangle mesh as a solid. Vertices with equal coordinates are one
+/// (shells as exported are welded by position). A mesh of several shells whose
+/// surfaces do not meet is a solid by the even-odd rule (a housing with a
+/// cavity); shells whose surfaces meet (a bolt exported as shank and head face
+/// to face) are their union: inside any shell is inside, and the distance from
+/// inside is known only from below (the shared faces are not surface).
+/// Immutable after construction; queries may run on several threads.
+class SolidDistance {
+ public:
+  /// Throws std::invalid_argument as PreparedMesh does (no triangles, bad index, NaN).
+  explicit SolidDistance(const Mesh& mesh);
+
+  /// A solid at all: closed (every edge used an even number of times).
+  bool closed() const { return closed_; }
+  /// Inside distances exact (no two shells' surfaces meet).
+  bool exact() const { return exact_; }
+  /// Why the distance from inside is not exact, or the solid not closed; empty when it is both.
+  const std::string& note() const { return note_; }
+  const Eigen::AlignedBox3d& box() const { return box_; }
+  /// The whole surface, for the exact mesh tests (geometry/mesh_intersect.h).
+  const PreparedMesh& mesh() const { return whole_; }
+  /// The coordinates' rounding: the largest float32 half-step of any coordinate
+  /// when the vertices are float32 values, else a few double ulps.
+  double noise() const { return noise_; }
+
+  DistanceBounds at(const Vec3& p) const;
+
+  /// The plane structure of the surface around a box of half-diagonal r about
+  /// c, for a centre at distance d from the surface (|at(c)|): the planes of
+  /// every face within reach = kappa_max·(d + r + noise) + r of c, and only
+  /// those whose bound's foot points provably stay within that reach.
+  LocalPlanes local_planes(const Vec3& c, double d, double r) const;
+
+ private:
+  PreparedMesh whole_;
+  std::vector<PreparedMesh> shells_;  ///< union mode only: one per shell
+  bool closed_ = false, exact_ = true, oriented_ = false;
+  std::string note_;
+  Eigen::AlignedBox3d box_;
+  double noise_ = 0.0;
+  double hair_ = 0.0;  ///< how far outside a face a union's complement is probed
+};
+
+/// A lower bound of a pair's penetration depth from one part's surface, which
+/// needs no inside of that part (open meshes, thin sheets): a point p of a's
+/// surface strictly inside closed b must leave b, so any separating translation
+/// is at least sd_b(p) long. The largest sd_b over points sampled on a's faces
+/// within b's box (every corner there included, so it is never below the
+/// deepest vertex), at most `max_samples` points.
+struct SurfaceDepth {
+  double depth = 0.0;      ///< 0 when no sample lies strictly inside b
+  Vec3 at = Vec3::Zero();  ///< the sample realising it
+  /// Unit; the DepthSolution convention (solve/result.h): (p − q)/|p − q| for
+  /// p of a with nearest point q on b's surface.
+  Vec3 direction = Vec3::UnitZ();
+};
+SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b,
+                           long max_samples = tol::kSurfaceDepthSamples);
+
+}  // namespace pd

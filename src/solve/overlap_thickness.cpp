@@ -1,0 +1,233 @@
+#include "solve/overlap_thickness.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <queue>
+#include <vector>
+
+#include "solve/max_min_affine.h"
+
+namespace pd {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Cell {
+  Vec3 lo, hi;
+  double upper;  ///< bound of φ over the cell
+  int depth;
+};
+struct ByUpper {
+  bool operator()(const Cell& x, const Cell& y) const { return x.upper < y.upper; }
+};
+
+struct Probe {
+  DistanceBounds a, b;
+  double lower() const { return std::min(a.lower, b.lower); }
+  double upper() const { return std::min(a.upper, b.upper); }
+};
+
+// The plane constraints one part's model puts on φ over the cell: every
+// supporting plane (sd ≤ s_k + slack), and with hole planes one alternative per
+// hole plane that can be the largest somewhere in the cell (sd ≤ kappa ·
+// (max_k s_k + slack), so φ ≤ kappa · (s_k + slack) for some k). No
+// alternative at all: no point of the cell is in the solid.
+std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& lo,
+                                              const Vec3& hi) {
+  std::vector<Affine> base;
+  for (const FacePlane& q : m.supporting) base.push_back({q.offset + m.slack, -q.normal});
+  if (m.hole.empty()) return {base};
+  const Vec3 c = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  std::vector<std::vector<Affine>> alts;
+  for (const FacePlane& q : m.hole) {
+    if (q.at(c) + half.dot(q.normal.cwiseAbs()) + m.slack < 0) continue;  // never the largest > 0
+    alts.push_back(base);
+    alts.back().push_back({m.kappa * (q.offset + m.slack), -m.kappa * q.normal});
+  }
+  return alts;
+}
+
+class Search {
+ public:
+  Search(const SolidDistance& a, const SolidDistance& b, double threshold)
+      : a_(a), b_(b), min_step_(std::max({1e-4 * threshold, 4 * a.noise(), 4 * b.noise()})) {}
+
+  Probe probe(const Vec3& x) {
+    evaluations += 2;
+    Probe p{a_.at(x), b_.at(x)};
+    if (p.lower() > best) {
+      best = p.lower();
+      at = x;
+      near_a = p.a.nearest;
+    }
+    return p;
+  }
+
+  // An upper bound of φ over the cell with centre probe p; -inf when the cell
+  // holds no point of both solids.
+  double bound(const Cell& cell, const Probe& p, bool planes) const {
+    const Vec3 c = 0.5 * (cell.lo + cell.hi);
+    const double r = 0.5 * (cell.hi - cell.lo).norm();
+    if (p.a.upper < -r || p.b.upper < -r) return -INFINITY;  // wholly outside a part
+    double upper = p.upper() + r;                            // φ is 1-Lipschitz
+    if (!planes || !(upper > best)) return upper;
+    const LocalPlanes la = a_.local_planes(c, std::abs(p.a.lower), r);
+    const LocalPlanes lb = b_.local_planes(c, std::abs(p.b.lower), r);
+    if (la.empty() && lb.empty()) return upper;
+    std::vector<Affine> common;
+    if (std::isfinite(p.a.upper)) common.push_back({p.a.upper + r, Vec3::Zero()});
+    if (std::isfinite(p.b.upper)) common.push_back({p.b.upper + r, Vec3::Zero()});
+    const auto alts_a = alternatives(la, cell.lo, cell.hi),
+               alts_b = alternatives(lb, cell.lo, cell.hi);
+    if (alts_a.empty() || alts_b.empty()) return -INFINITY;  // outside a part throughout
+    if (alts_a.size() * alts_b.size() > static_cast<size_t>(tol::kLocalPlanesMaxChoices))
+      return upper;
+    double model = -INFINITY;
+    std::vector<Affine> f;
+    for (const auto& x : alts_a)
+      for (const auto& y : alts_b) {
+        f = common;
+        f.insert(f.end(), x.begin(), x.end());
+        f.insert(f.end(), y.begin(), y.end());
+        model = std::max(model, max_min_affine(f, cell.lo, cell.hi));
+        if (!(model < upper)) return upper;
+      }
+    return model;
+  }
+
+  // Pattern ascent of φ from x (its probe p): steps away from the nearer
+  // surface, the other, or both, halving the step when none improves.
+  void ascend(Vec3 x, Probe p, double step, long budget) {
+    const long stop = evaluations + budget;
+    while (step > min_step_ && evaluations < stop) {
+      const Vec3 ga = away(x, p.a), gb = away(x, p.b);
+      bool moved = false;
+      for (const Vec3& u : {ga, gb, Vec3((ga + gb).normalized())}) {
+        if (!u.allFinite()) continue;
+        const Vec3 y = x + step * u;
+        const Probe q = probe(y);
+        if (q.lower() > p.lower()) {
+          x = y, p = q, moved = true;
+          break;
+        }
+      }
+      if (!moved) step *= 0.5;
+    }
+  }
+
+  long evaluations = 0;
+  double best = -INFINITY;
+  Vec3 at = Vec3::Zero(), near_a = Vec3::Zero();
+
+ private:
+  // The direction in which sd grows at x: away from the nearest surface point
+  // inside, towards it outside.
+  static Vec3 away(const Vec3& x, const DistanceBounds& d) {
+    const Vec3 v = (x - d.nearest).normalized();
+    return d.lower > 0 ? v : Vec3(-v);
+  }
+
+  const SolidDistance &a_, &b_;
+  double min_step_;
+};
+
+// Halves every axis at least half as long as the longest (2, 4 or 8 children),
+// so cells stay about cubic and a flat region is not cut across its thickness.
+std::vector<Cell> split(const Cell& c) {
+  const Vec3 e = c.hi - c.lo, mid = 0.5 * (c.lo + c.hi);
+  std::vector<Cell> out{{c.lo, c.hi, c.upper, c.depth + 1}};
+  for (int d = 0; d < 3; ++d) {
+    if (e[d] < 0.5 * e.maxCoeff()) continue;
+    const size_t n = out.size();
+    for (size_t k = 0; k < n; ++k) {
+      Cell upper = out[k];
+      out[k].hi[d] = mid[d];
+      upper.lo[d] = mid[d];
+      out.push_back(upper);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b, double threshold,
+                                  double upper_hint, const ThicknessLimits& limits) {
+  using Outcome = ThicknessResult::Outcome;
+  ThicknessResult res;
+  const double cap = 0.5 * upper_hint;  // on h
+  if (!a.closed() || !b.closed()) {
+    res.outcome = Outcome::kNoInside;
+    res.upper = upper_hint;
+    return res;
+  }
+  const double pad = 4 * std::max(a.noise(), b.noise());
+  Eigen::AlignedBox3d region = a.box().intersection(b.box());
+  if (region.isEmpty()) {
+    res.outcome = Outcome::kBelow;
+    return res;
+  }
+  region.min().array() -= pad;
+  region.max().array() += pad;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(limits.seconds);
+  Search s(a, b, threshold);
+  std::priority_queue<Cell, std::vector<Cell>, ByUpper> open;
+  {
+    Cell root{region.min(), region.max(), cap, 0};
+    const Probe p = s.probe(0.5 * (root.lo + root.hi));
+    root.upper = std::min(cap, s.bound(root, p, false));
+    if (root.upper > s.best) open.push(root);
+    ++res.cells;
+  }
+  double last_ascent = -INFINITY;
+  for (;;) {
+    const double top = open.empty() ? s.best : std::max(s.best, open.top().upper);
+    const double lower = 2 * std::max(0.0, s.best), upper = 2 * std::max(0.0, std::min(top, cap));
+    res.lower = lower;
+    res.upper = std::max(lower, upper);
+    if (upper <= threshold) {
+      res.outcome = Outcome::kBelow;
+      break;
+    }
+    if (lower > threshold && (upper <= lower * (1 + tol::kThicknessBracket) || open.empty())) {
+      res.outcome = Outcome::kAbove;
+      break;
+    }
+    const bool out_of_work = s.evaluations >= limits.max_evaluations || open.empty();
+    const bool out_of_time = res.cells % 64 == 0 && Clock::now() > deadline;
+    if (out_of_work || out_of_time) {
+      res.outcome = lower > threshold ? Outcome::kAbove
+                    : out_of_time     ? Outcome::kTime
+                                      : Outcome::kBudget;
+      break;
+    }
+    const Cell cell = open.top();
+    open.pop();
+    if (!(cell.upper > s.best)) continue;
+    double step = 0.0;
+    for (const Cell& child : split(cell)) {
+      const Vec3 c = 0.5 * (child.lo + child.hi);
+      const Probe p = s.probe(c);
+      ++res.cells;
+      Cell next = child;
+      next.upper = std::min(cell.upper, s.bound(child, p, child.depth >= 2));
+      if (next.upper > s.best) open.push(next);
+      step = 0.5 * (child.hi - child.lo).norm();
+    }
+    if (s.best > last_ascent && s.best > 0) {  // a new best centre: climb from it
+      s.ascend(s.at, s.probe(s.at), step, 200);
+      last_ascent = s.best;
+    }
+  }
+  res.evaluations = s.evaluations;
+  if (s.best > 0) {
+    res.at = s.at;
+    const Vec3 d = (s.near_a - s.at).normalized();
+    if (d.allFinite()) res.direction = d;
+  }
+  return res;
+}
+
+}  // namespace pd

@@ -1,0 +1,55 @@
+// The overlap thickness of two solids, with a certified bracket (issue 24).
+//
+// With sd_X the signed distance to solid X (positive inside), φ(x) =
+// min(sd_A(x), sd_B(x)) is positive exactly inside A ∩ B and 1-Lipschitz;
+// h = max φ is the radius of the largest ball inside the overlap. Any
+// translation that separates the parts moves that ball's two copies apart, so
+// it is at least 2h long: the thickness T = 2h is a lower bound of the
+// penetration depth that does not depend on any decomposition. A tessellation
+// sliver is thin (T small), a genuine clash thick.
+//
+// Branch and bound over boxes of the region where both parts' boxes meet: a
+// box's φ is at most φ(centre) + its half-diagonal, and at most what the planes
+// of both surfaces near it allow (geometry/solid_distance.h, solve/
+// max_min_affine.h), which keeps large thin contacts cheap; the best φ found
+// (cell centres, then a local ascent from each new best) is a lower bound.
+// docs/solver.md says why each bound is sound.
+#pragma once
+
+#include "geometry/solid_distance.h"
+#include "geometry/types.h"
+#include "tolerances.h"
+
+namespace pd {
+
+struct ThicknessLimits {
+  long max_evaluations = tol::kThicknessMaxEvaluations;
+  double seconds = tol::kThicknessSeconds;
+};
+
+struct ThicknessResult {
+  enum class Outcome {
+    kBelow,     ///< upper ≤ threshold: thin (or no) overlap
+    kAbove,     ///< lower > threshold: a thick overlap
+    kBudget,    ///< the evaluation budget ran out with the bracket straddling it
+    kTime,      ///< the time box ran out likewise
+    kNoInside,  ///< a part is not a closed solid: no thickness at all
+  };
+  Outcome outcome = Outcome::kBudget;
+  double lower = 0.0;      ///< certified: T ≥ lower (0 when no common interior point was found)
+  double upper = 0.0;      ///< certified: T ≤ upper
+  Vec3 at = Vec3::Zero();  ///< centre of the thickest ball found (the lower bound's witness)
+  /// Unit: from `at` towards a's nearest surface point; moving b that way
+  /// thins the overlap there (a local escape, not a separating move).
+  Vec3 direction = Vec3::UnitZ();
+  long evaluations = 0;  ///< distance evaluations (each of one part at one point)
+  long cells = 0;        ///< boxes bounded
+};
+
+/// The thickness T = 2h of a ∩ b, decided against `threshold` (the tolerance).
+/// `upper_hint` is a known upper bound of T (the hulls' penetration depth: T is a
+/// lower bound of the parts' depth, which the hulls' bounds from above).
+ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b, double threshold,
+                                  double upper_hint = INFINITY, const ThicknessLimits& limits = {});
+
+}  // namespace pd

@@ -1,0 +1,39 @@
+// max_min_affine against the exact LP optimum found by enumerating vertices.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "lp_reference.h"
+#include "solve/max_min_affine.h"
+
+namespace pd {
+namespace {
+
+TEST(MaxMinAffine, EqualsTheExactOptimumOnRandomProblems) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int m = 1 + trial % 6;
+    std::vector<Affine> f(m);
+    for (Affine& g : f) {
+      g.value = 3 * u(rng);
+      g.slope = Vec3(u(rng), u(rng), u(rng)) * (trial % 3 == 0 ? 10.0 : 1.0);
+    }
+    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+    const double exact = max_min_affine_reference(f, lo, hi);
+    const double bound = max_min_affine(f, lo, hi);
+    EXPECT_GE(bound, exact - 1e-12) << "trial " << trial;                         // sound
+    EXPECT_LE(bound, exact + 1e-9 * (1 + std::abs(exact))) << "trial " << trial;  // tight
+  }
+}
+
+TEST(MaxMinAffine, TwoOpposedPlanesGiveHalfTheirGapWhateverTheBox) {
+  // s1 = x (inside above x = 0), s2 = 0.3 − x: min ≤ 0.15 everywhere.
+  const std::vector<Affine> f{{0.0, Vec3(1, 0, 0)}, {0.3, Vec3(-1, 0, 0)}};
+  EXPECT_NEAR(max_min_affine(f, Vec3(-50, -50, -50), Vec3(50, 50, 50)), 0.15, 1e-12);
+  EXPECT_NEAR(max_min_affine(f, Vec3(0.2, 0, 0), Vec3(5, 1, 1)), 0.1, 1e-12);
+}
+
+}  // namespace
+}  // namespace pd
