@@ -287,6 +287,11 @@ TEST(Contacts, TouchingRotatedBoxOnABoardIsSettledInOneCertificate) {
   expect_same_depth(c, "seated pair 13");
   const DepthSolution m = solve(c, Method::kMlsl);
   EXPECT_EQ(m.stats.local_solves, 1);
-  EXPECT_LE(m.stats.alpha_evaluations, 2000);
+  // Since a contact stop verifies its gap with the certificate instead of
+  // stopping at the first cap within kTouch (the touching-pair fix of issue
+  // 25), the certificate costs 1,565 evaluations with GCC's rounding and
+  // 3,001 with clang's (the ASan build): still one certificate, no Ipopt, and
+  // far from the 5,365 of the failure this guards against.
+  EXPECT_LE(m.stats.alpha_evaluations, 3500);
   EXPECT_EQ(m.stats.ipopt_calls, 0);
 }
