@@ -12,6 +12,7 @@
 
 #include "box_points.h"
 #include "geometry/hull.h"
+#include "page_data.h"
 #include "report/html_geometry.h"
 #include "report/write_html.h"
 #include "shell_run.h"
@@ -37,15 +38,6 @@ bool inside(const HullFacets& f, const Vec3& x, double eps) {
   for (size_t k = 0; k < f.normals.size(); ++k)
     if (f.normals[k].dot(x) + f.offsets[k] > eps) return false;
   return true;
-}
-
-// The JSON data the page carries (between its data script tags).
-nlohmann::json page_data(const std::string& page) {
-  const std::string open = "<script id=\"pdcheck-data\" type=\"application/json\">";
-  const size_t at = page.find(open);
-  if (at == std::string::npos) return nullptr;
-  const size_t end = page.find("</script>", at);
-  return nlohmann::json::parse(page.substr(at + open.size(), end - at - open.size()));
 }
 
 std::string unbase64(const std::string& in) {

@@ -193,3 +193,35 @@ TEST(OverlapThickness, AnOpenShellHasNoThickness) {
 
 }  // namespace
 }  // namespace pd
+
+namespace pd {
+namespace {
+
+TEST(SurfaceDepth, NeverBelowTheDeepestVertexWhateverTheBudget) {
+  namespace sh = shapes;
+  const std::pair<Mesh, Mesh> cases[] = {
+      {sh::box(Vec3(5, 5, 7), Vec3(15, 5.05, 13)), sh::box(Vec3(0, 0, 0), Vec3(20, 20, 10))},
+      {sh::cylinder({0, 0}, 5.3, -4, 10, 32), sh::plate_with_hole(40, 6, 5, 32)},
+      {sh::box(Vec3(3, 3, 3), Vec3(20, 12, 9.5)),
+       sh::hollow_box(Vec3(0, 0, 0), Vec3(30, 20, 10), 1.5)}};
+  for (const auto& [a, b] : cases) {
+    const SolidDistance sa(a), sb(b);
+    const MeshDepthBound vertex = deepest_vertex_depth(sa.mesh(), sb.mesh());
+    ASSERT_GT(vertex.depth, 0.0);
+    for (long budget : {0L, 100L, 20000L}) {
+      const double surface = std::max(surface_depth(sa.mesh(), sb, budget).depth,
+                                      surface_depth(sb.mesh(), sa, budget).depth);
+      EXPECT_GE(surface, vertex.depth - 1e-12) << budget;
+    }
+  }
+  // A rod through a wall whose corners all lie outside it: only the samples
+  // inside the wall's faces see it.
+  const Mesh wall = sh::box(Vec3(0, 0, 0), Vec3(40, 40, 1));
+  const Mesh rod = sh::cylinder({20, 20}, 1.0, -10, 10, 16);
+  const SolidDistance s_wall(wall), s_rod(rod);
+  EXPECT_EQ(deepest_vertex_depth(s_wall.mesh(), s_rod.mesh()).depth, 0.0);
+  EXPECT_GT(surface_depth(s_wall.mesh(), s_rod).depth, 0.5);
+}
+
+}  // namespace
+}  // namespace pd

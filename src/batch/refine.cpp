@@ -168,11 +168,14 @@ Mesh surface_mesh(const Part& p) {
   return m;
 }
 
-MeshVerdict mesh_verdict(const PreparedMesh* a, const PreparedMesh* b) {
+// The surfaces' verdict. The thickness path samples the surfaces itself
+// (surface_depth, every vertex included), so only the pieces path asks for
+// the deepest-vertex bound here.
+MeshVerdict mesh_verdict(const PreparedMesh* a, const PreparedMesh* b, bool vertex_bound) {
   MeshVerdict v;
   if (!a || !b) return v;  // no surface to test: may meet, the pieces decide
   v.intersect = meshes_intersect(*a, *b);
-  if (v.intersect) {
+  if (v.intersect && vertex_bound) {
     const MeshDepthBound bound = deepest_vertex_depth(*a, *b);
     v.vertex_depth = bound.depth;
     v.vertex_direction = bound.direction;
@@ -294,13 +297,21 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     }
   });
   const auto mesh_of = [&](int p) { return solids[p] ? &solids[p]->mesh() : nullptr; };
+  // A clearance check, a part in pieces `decompose` or one without a surface
+  // keeps the convex pieces of a whole-part decomposition (steps 3 and 4);
+  // every other pair whose surfaces meet gets the overlap thickness (step 2).
+  const auto needs_pieces = [&](size_t n) {
+    const auto [a, b] = pairs[flagged[n]];
+    return checks(a, b).clearance.has_value() || parts[a].mode == Pieces::kDecompose ||
+           parts[b].mode == Pieces::kDecompose || !solids[a] || !solids[b];
+  };
   std::vector<MeshVerdict> verdicts(flagged.size());
   {
     Progress progress(flagged.size(), options.quiet, "mesh tests");
     parallel_for(flagged.size(), options.jobs, [&](size_t n) {
       const auto [a, b] = pairs[flagged[n]];
       try {
-        verdicts[n] = mesh_verdict(mesh_of(a), mesh_of(b));
+        verdicts[n] = mesh_verdict(mesh_of(a), mesh_of(b), needs_pieces(n));
       } catch (const std::exception&) {
         verdicts[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
       }
@@ -310,15 +321,11 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   }
 
   // 2. Pairs whose surfaces meet: the overlap thickness where the parts meet.
-  // A clearance check, a part in pieces `decompose` or one without a surface
-  // keeps the convex pieces of a whole-part decomposition (below).
   std::vector<size_t> solve, thick;  // indices into flagged
   for (size_t n = 0; n < flagged.size(); ++n) {
     const auto [a, b] = pairs[flagged[n]];
-    const bool clearance = checks(a, b).clearance.has_value();
-    if (!verdicts[n].intersect && !clearance) continue;
-    const bool pieces = clearance || parts[a].mode == Pieces::kDecompose ||
-                        parts[b].mode == Pieces::kDecompose || !solids[a] || !solids[b];
+    const bool pieces = needs_pieces(n);
+    if (!verdicts[n].intersect && !checks(a, b).clearance) continue;
     (pieces ? solve : thick).push_back(n);
   }
   std::vector<std::optional<ThicknessResult>> thickness(flagged.size());
@@ -334,10 +341,8 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
       const SurfaceDepth ab = surface_depth(solids[a]->mesh(), *solids[b]);
       const SurfaceDepth ba = surface_depth(solids[b]->mesh(), *solids[a]);
       MeshVerdict& v = verdicts[n];
-      if (std::max(ab.depth, ba.depth) > v.vertex_depth) {
-        v.vertex_depth = std::max(ab.depth, ba.depth);
-        v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
-      }
+      v.vertex_depth = std::max(ab.depth, ba.depth);
+      v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
       thickness[n] =
           overlap_thickness(*solids[a], *solids[b], options.tolerance, results[flagged[n]].depth);
       results[flagged[n]].time_ms +=

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 
 #include "geometry/convexity.h"
@@ -173,14 +174,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   std::vector<int> faces;
   const Eigen::AlignedBox3d& box = b.box();
   a.faces_in_box(box.min(), box.max(), faces);
-  // Faces are split in four until a piece is within a quarter of b's thinnest
-  // extent (a rod through a large wall face is sampled across its section);
-  // pieces outside b's box are dropped, so the work follows the overlap.
-  const double spacing = std::max(box.sizes().minCoeff() / 4, 1e-300);
-  long samples = 0;
   const auto sample = [&](const Vec3& p) {
-    if (!box.contains(p)) return;
-    ++samples;
     const DistanceBounds d = b.at(p);
     if (!(d.lower > best.depth)) return;
     best.depth = d.lower;
@@ -188,6 +182,19 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
     const Vec3 dir = (p - d.nearest).normalized();
     if (dir.allFinite()) best.direction = dir;
   };
+  // Every corner in b's box, once (so the bound is never below the deepest
+  // vertex's, whatever the budget), then points inside the faces.
+  std::set<std::array<double, 3>> corners;
+  for (int f : faces)
+    for (const Vec3& p : a.face(f))
+      if (box.contains(p) && corners.insert({p.x(), p.y(), p.z()}).second) sample(p);
+  // Faces are split in four until a piece is within a quarter of b's thinnest
+  // extent (a rod through a large wall face is sampled across its section);
+  // pieces outside b's box are dropped, so the work follows the overlap. Each
+  // piece is sampled at its centroid and, when split, at its edge midpoints
+  // (its children's new corners; shared edges' midpoints come twice).
+  const double spacing = std::max(box.sizes().minCoeff() / 4, 1e-300);
+  long samples = 0;
   std::vector<std::pair<std::array<Vec3, 3>, int>> stack;
   for (int f : faces) stack.push_back({a.face(f), 0});
   while (!stack.empty() && samples < max_samples) {
@@ -196,14 +203,14 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
     Eigen::AlignedBox3d tb(t[0]);
     tb.extend(t[1]).extend(t[2]);
     if (!tb.intersects(box)) continue;
+    const Vec3 centroid = (t[0] + t[1] + t[2]) / 3;
+    if (box.contains(centroid)) ++samples, sample(centroid);
     const double longest =
         std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
-    if (longest <= spacing || level >= 16) {
-      for (const Vec3& p : t) sample(p);
-      sample((t[0] + t[1] + t[2]) / 3);
-      continue;
-    }
+    if (longest <= spacing || level >= 16) continue;
     const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+    for (const Vec3& m : {m01, m12, m20})
+      if (box.contains(m)) ++samples, sample(m);
     for (const std::array<Vec3, 3>& q :
          {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
           std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})

@@ -104,8 +104,8 @@ class SolidDistance {
 /// needs no inside of that part (open meshes, thin sheets): a point p of a's
 /// surface strictly inside closed b must leave b, so any separating translation
 /// is at least sd_b(p) long. The largest sd_b over points sampled on a's faces
-/// within b's box (every corner there included, so it is never below the
-/// deepest vertex), at most `max_samples` points.
+/// within b's box: every vertex there, then at most `max_samples` points inside
+/// the faces (so it is never below the deepest vertex's bound).
 struct SurfaceDepth {
   double depth = 0.0;      ///< 0 when no sample lies strictly inside b
   Vec3 at = Vec3::Zero();  ///< the sample realising it

@@ -32,8 +32,13 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
   if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance) {
     t += ": distance " + short_number(*r.distance) + " " + units + " < required clearance " +
          short_number(*r.clearance_min) + " " + units + "; separating normal " + dir;
-  } else if (r.status == Status::kSeparated) {
+  } else if (r.status == Status::kSeparated && r.depth_source == "hull") {
     t += "; separating normal " + dir;
+  } else if (r.status == Status::kSeparated && r.depth_source == "mesh-test") {
+    t += ": the hulls overlap, the parts' surfaces do not meet";
+  } else if (r.status == Status::kSeparated) {  // a refined pair that only touches
+    t += ": touching, " + depth_meaning(r.depth_source) + " at most " +
+         short_number(r.depth_bounds ? (*r.depth_bounds)[1] : r.depth) + " " + units;
   } else if (r.status == Status::kUndecided) {
     const auto [lower, upper] = r.depth_bounds.value_or(std::array<double, 2>{r.depth, r.depth});
     t += ": depth between " + short_number(lower) + " and " + short_number(upper) + " " + units +

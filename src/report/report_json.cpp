@@ -175,8 +175,11 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
               {"tolerance", ctx.tolerance},
               {"method", method},
               {"direction_convention",
-               "moving part b by depth * direction separates the pair; for separated pairs "
-               "direction is a separating-plane normal pointing from a to b"},
+               "depth_source hull: moving part b by depth * direction separates the pair, and "
+               "for separated pairs direction is a separating-plane normal pointing from a to b; "
+               "thickness: moving b along direction thins the overlap at `at` (no separating "
+               "move); surface, vertex: moving b by depth * direction lifts the deepest point "
+               "out"},
               {"simulated", r.simulated},
               {"summary", summary_json(summarize(r))},
               {"seconds", r.seconds},

@@ -12,9 +12,11 @@
 #include <map>
 #include <sstream>
 
+#include "report/finding_text.h"
 #include "report/html_assets.h"  // generated from src/report/html/ (CMakeLists.txt)
 #include "report/html_geometry.h"
 #include "report/markup_escape.h"
+#include "report/pair_from_json.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -126,6 +128,20 @@ int status_rank(const std::string& s) {
   return 4;  // false_positive
 }
 
+// The sentence stderr, JUnit and SARIF give the pair (report/finding_text.h),
+// from its report entry, so the page cannot say otherwise; baseline state and
+// suppression are shown beside it. Empty for an entry that does not read back.
+std::string pair_sentence(const json& p, const std::string& units, double tolerance) {
+  try {
+    std::vector<Part> two(2);
+    two[0].id = p.at("a").get<std::string>();
+    two[1].id = p.at("b").get<std::string>();
+    return finding_text(pair_from_json(p, 0, 1), two, PairReview{}, units, tolerance);
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
 double depth_of(const json& p) {
   return p.contains("depth") ? p["depth"].get<double>() : 0.0;
 }
@@ -214,6 +230,7 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
                             "depth_bounds", "distance", "clearance", "motion", "at", "reason"})
       if (p.contains(key)) row[key] = p[key];
     if (row.contains("motion")) row["motion"].erase("series");
+    row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));
     if (budget == 0) {
       ++skipped;
       row["view"] = nullptr;

@@ -199,20 +199,12 @@
     add('status', f.status.replace(/_/g, ' ') + (f.confirmed === false ? ' (unconfirmed: an upper bound)' : ''));
     if (f.status === 'error') add('error', f.error || '');
     else {
-      const source = f.depth_source || 'hull';
-      const meaning = { hull: 'depth', thickness: 'overlap thickness', vertex: 'deepest vertex',
-        surface: 'deepest surface point', pieces: 'piece depth', 'mesh-test': 'depth' }[source] || 'depth';
-      if (f.status === 'undecided' && f.depth_bounds)
-        add('depth', 'between ' + f.depth_bounds.map(len).join(' and ') + ' (tolerance ' + len(data.tolerance) + ')', COLORS.arrow);
-      else
-        add(meaning, len(f.depth) + ' (tolerance ' + len(data.tolerance) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
-      if (f.reason) add('why undecided', f.reason);
-      // Only a convex pair's depth is a move that separates it.
-      if (f.direction && source === 'hull') add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') +
-        '): moving B by depth × direction separates the pair');
-      else if (f.direction && source === 'thickness') add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') +
-        '): moving B this way thins the overlap where it is thickest (not a separating move)');
-      add('depth source', source);
+      // The sentence is pdcheck's own (the one stderr, JUnit and SARIF give):
+      // the page only adds the numbers beside it, never a claim of its own.
+      if (f.text) add('finding', f.text);
+      add('depth', len(f.depth) + ' (tolerance ' + len(data.tolerance) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
+      if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') + ')');
+      add('depth source', f.depth_source || 'hull');
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
       if (f.at) add('at', '(' + f.at.map((x) => num(x, 7)).join(', ') + ')');
     }
