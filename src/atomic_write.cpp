@@ -11,7 +11,7 @@
 #include <random>
 #include <string>
 
-#include "report/output_error.h"
+#include "output_error.h"
 #include "termination.h"
 
 namespace pd {

@@ -15,8 +15,8 @@
 #include <deque>
 #include <stdexcept>
 
-#include "worker_limit.h"
 #include "termination.h"
+#include "worker_limit.h"
 
 namespace pd {
 
@@ -142,8 +142,13 @@ int poll_timeout_ms(double seconds_left) {
 }
 
 void run_work_queue(const std::vector<size_t>& order, const QueueOptions& options,
-                    const TaskFn& task, const DoneFn& done) {
+                    const TaskFn& given_task, const DoneFn& done) {
   if (order.empty()) return;
+  const TaskFn task = options.before_task ? TaskFn([&](size_t index) {
+    options.before_task(index);
+    return given_task(index);
+  })
+                                          : given_task;
   // A worker that dies must not kill the parent with SIGPIPE on the next write.
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;

@@ -16,6 +16,10 @@ struct QueueOptions {
   double task_timeout = 0.0;  ///< seconds; 0 = none. A worker past it is killed.
   /// Told when the queue runs fewer workers than `jobs` (open-file or process limits).
   std::function<void(const std::string&)> warn;
+  /// Tests only (fault injection): runs in the worker before task `index`, to
+  /// make it crash or stall as a solver or a mesh reader could. The product
+  /// never sets it.
+  std::function<void(size_t index)> before_task = {};
 };
 
 /// Runs in a worker: computes task `index` and returns its encoded result.

@@ -54,7 +54,7 @@ inline CliResult pdcheck(const std::string& args, const std::string& stdin_text 
                          const std::string& env = "") {
   const std::string tag = std::to_string(getpid());  // ctest runs tests in parallel processes
   const std::string err_file = testing::TempDir() + "pdcheck_err_" + tag + ".txt";
-  std::string cmd = env + " exec " + std::string(PDCHECK_BINARY) + " " + args;
+  std::string cmd = env + " exec " + pd_test::pdcheck_binary_for(env) + " " + args;
   if (!stdin_text.empty()) {
     const std::string in_file = testing::TempDir() + "pdcheck_in_" + tag + ".txt";
     std::ofstream(in_file) << stdin_text;

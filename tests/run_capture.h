@@ -10,6 +10,13 @@
 
 namespace pd_test {
 
+/// The pdcheck executable for a run under the shell assignments `env`: the
+/// fault-injecting one (tests/pdcheck_faults.cpp) when they set a
+/// PDCHECK_TEST_* variable, else the product's.
+inline std::string pdcheck_binary_for(const std::string& env) {
+  return env.find("PDCHECK_TEST_") != std::string::npos ? PDCHECK_FAULTS_BINARY : PDCHECK_BINARY;
+}
+
 struct Captured {
   int status = -1;  ///< as from pclose (use WIFEXITED / WEXITSTATUS / WIFSIGNALED)
   std::string out, err;

@@ -41,10 +41,12 @@ inline std::string read_text(const std::string& path) {
 }
 
 /// Runs `script` with /bin/sh in `dir`; "$PDCHECK" and "$DEMO" name the binary
-/// and the demo scene. Stdin is /dev/null unless the script redirects it.
+/// and the demo scene, "$PDCHECK_FAULTS" the fault-injecting binary
+/// (tests/pdcheck_faults.cpp). Stdin is /dev/null unless the script redirects it.
 inline ShellRun shell(const std::string& dir, const std::string& script) {
   const std::string err_file = dir + "/.stderr";
-  const std::string cmd = "cd '" + dir + "' && PDCHECK='" + kPdcheck + "' DEMO='" + kDemo +
+  const std::string cmd = "cd '" + dir + "' && PDCHECK='" + kPdcheck + "' PDCHECK_FAULTS='" +
+                          pdcheck_binary_for("PDCHECK_TEST_") + "' DEMO='" + kDemo +
                           "' /bin/sh -c '" + script + "' </dev/null";
   Captured c = run_capture(cmd, err_file);
   ShellRun r;

@@ -106,6 +106,16 @@ TEST(Cli, JobsDoNotChangeALargerReport) {
     EXPECT_GT(a["summary"][k].get<int>(), 0) << k << " " << a["summary"];
 }
 
+TEST(Cli, TheProductReadsNoFaultInjection) {
+  // Faults are injected by the tests' own executable (tests/pdcheck_faults.cpp)
+  // only: the variable that crashes a pair there changes nothing here.
+  const pd::test::CliResult r =
+      pd::test::shell("PDCHECK_TEST_CRASH_PAIR=base:cover " + std::string(PDCHECK_BINARY) + " " +
+                      kDemo + " -q --jobs 2");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(statuses(json::parse(r.out)).at("base:cover"), "false_positive");
+}
+
 TEST(Cli, CrashedWorkerCostsOnlyItsPair) {
   const CliRun r = pdcheck(kDemo + " -q --jobs 2", "", "PDCHECK_TEST_CRASH_PAIR=base:cover");
   EXPECT_EQ(r.code, 3) << r.err;

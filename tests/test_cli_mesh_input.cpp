@@ -32,7 +32,7 @@ struct CliRun {
 CliRun pdcheck(const std::string& args, const std::string& env = "") {
   const std::string err_file =
       testing::TempDir() + "pdcheck_mesh_err_" + std::to_string(getpid()) + ".txt";
-  const std::string cmd = env + " " + PDCHECK_BINARY + " " + args + " </dev/null";
+  const std::string cmd = env + " " + pd_test::pdcheck_binary_for(env) + " " + args + " </dev/null";
   CliRun r;
   const auto t0 = std::chrono::steady_clock::now();
   pd_test::Captured c = pd_test::run_capture(cmd, err_file);

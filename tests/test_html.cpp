@@ -62,8 +62,8 @@ size_t count(const std::string& text, const std::string& what) {
 }  // namespace
 
 TEST(HtmlGeometry, OverlapOfTwoBoxesIsTheirIntersection) {
-  const auto m =
-      convex_overlap(box_points({0, 0, 0}, {2, 2, 2}), box_points({1, 0.5, -1}, {3, 1.5, 1}), 4000);
+  const auto m = overlap_web_mesh(box_points({0, 0, 0}, {2, 2, 2}),
+                                  box_points({1, 0.5, -1}, {3, 1.5, 1}), 4000);
   ASSERT_TRUE(m);
   const Points p = mesh_points(*m);
   EXPECT_EQ(p.cols(), 8);
@@ -88,7 +88,7 @@ TEST(HtmlGeometry, OverlapOfRandomPolytopesHoldsExactlyThePointsInBoth) {
     HullFacets fa, fb;
     ASSERT_TRUE(hull_facets(convex_hull(a).vertices, fa));
     ASSERT_TRUE(hull_facets(convex_hull(b).vertices, fb));
-    const auto m = convex_overlap(a, b, 4000);
+    const auto m = overlap_web_mesh(a, b, 4000);
     if (!m) continue;
     ++overlapping;
     const Points p = mesh_points(*m);
@@ -113,9 +113,9 @@ TEST(HtmlGeometry, OverlapOfRandomPolytopesHoldsExactlyThePointsInBoth) {
 
 TEST(HtmlGeometry, ApartOrTouchingHullsHaveNoOverlap) {
   EXPECT_FALSE(
-      convex_overlap(box_points({0, 0, 0}, {1, 1, 1}), box_points({2, 0, 0}, {3, 1, 1}), 100));
+      overlap_web_mesh(box_points({0, 0, 0}, {1, 1, 1}), box_points({2, 0, 0}, {3, 1, 1}), 100));
   EXPECT_FALSE(
-      convex_overlap(box_points({0, 0, 0}, {1, 1, 1}), box_points({1, 0, 0}, {2, 1, 1}), 100));
+      overlap_web_mesh(box_points({0, 0, 0}, {1, 1, 1}), box_points({1, 0, 0}, {2, 1, 1}), 100));
 }
 
 TEST(HtmlGeometry, LargeHullsAreCappedAndSayHow) {

@@ -48,10 +48,9 @@ std::vector<fs::path> entries(const fs::path& dir, const std::string& ext) {
 }
 
 // A loader that crashes on the box file: a part that reads it fails.
-struct CrashOnBox {
-  CrashOnBox() { setenv("PDCHECK_TEST_CRASH_MESH", "box.obj", 1); }
-  ~CrashOnBox() { unsetenv("PDCHECK_TEST_CRASH_MESH"); }
-};
+void crash_on_box(const std::string& path) {
+  if (path.size() >= 7 && path.compare(path.size() - 7, 7, "box.obj") == 0) std::abort();
+}
 
 }  // namespace
 
@@ -88,11 +87,12 @@ TEST(HullCache, ARerunTakesTheHullsFromTheCache) {
   ASSERT_EQ(entries(dir, ".pdh").size(), 1u) << "one entry per file, not per instance";
 
   {
-    const CrashOnBox crash;
     // Without the cache the file must be read, and the crash shows.
-    EXPECT_TRUE(build_parts(s, 1)[0].error);
+    EXPECT_TRUE(
+        build_parts(s, 1, {}, kDefaultLoadTimeout, {}, kAutoLoadMemory, crash_on_box)[0].error);
     // With it, pieces "hull" reads nothing: same parts.
-    const auto warm = build_parts(s, 1, {}, kDefaultLoadTimeout, cache);
+    const auto warm =
+        build_parts(s, 1, {}, kDefaultLoadTimeout, cache, kAutoLoadMemory, crash_on_box);
     ASSERT_EQ(warm.size(), 2u);
     for (size_t k = 0; k < 2; ++k) {
       ASSERT_FALSE(warm[k].error) << *warm[k].error;
@@ -101,7 +101,8 @@ TEST(HullCache, ARerunTakesTheHullsFromTheCache) {
       EXPECT_EQ(warm[k].box.lo, cold[k].box.lo);
     }
     // Pieces "auto" keeps the file's surface for the refinement: it reads the file.
-    const auto with_surface = build_parts(box_scene("auto"), 1, {}, kDefaultLoadTimeout, cache);
+    const auto with_surface = build_parts(box_scene("auto"), 1, {}, kDefaultLoadTimeout, cache,
+                                          kAutoLoadMemory, crash_on_box);
     EXPECT_TRUE(with_surface[0].error);
   }
 

@@ -70,10 +70,11 @@ pid_t start(const std::string& dir, const std::vector<std::string>& args,
     const int err = open((dir + "/err.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(out, 1);
     dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(kPdcheck.c_str())};
+    const std::string binary = pdcheck_binary_for(env_name);
+    std::vector<char*> argv{const_cast<char*>(binary.c_str())};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    execv(kPdcheck.c_str(), argv.data());
+    execv(binary.c_str(), argv.data());
     _exit(127);
   }
   return pid;
@@ -169,9 +170,10 @@ TEST(BrokenPipe, JsonLinesStopAtTheFirstFailedWrite) {
   const std::string dir = scratch_dir("broken_pipe");
   const std::string scene = overlapping_cubes(dir, 8);
   const auto t0 = std::chrono::steady_clock::now();
-  const ShellRun r = shell(dir,
-                           "{ PDCHECK_TEST_PAIR_SLEEP_MS=1000 \"$PDCHECK\" cubes.json -q --jobs 2 "
-                           "--format jsonl; echo $? > code; } | head -c 100 > head.txt");
+  const ShellRun r =
+      shell(dir,
+            "{ PDCHECK_TEST_PAIR_SLEEP_MS=1000 \"$PDCHECK_FAULTS\" cubes.json -q --jobs 2 "
+            "--format jsonl; echo $? > code; } | head -c 100 > head.txt");
   const double seconds = since(t0);
   EXPECT_EQ(read_text(dir + "/code"), "2\n") << r.err;
   EXPECT_NE(r.err.find("standard output: Broken pipe"), std::string::npos) << r.err;

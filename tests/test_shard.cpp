@@ -18,7 +18,6 @@ using namespace pd::test;
 
 namespace {
 
-const std::string kBin = PDCHECK_BINARY;
 // The environment of a run that is no CI or Slurm job, whatever runs the tests.
 const std::string kNoShardEnv =
     "env -u CI_NODE_INDEX -u CI_NODE_TOTAL -u SLURM_ARRAY_TASK_ID -u SLURM_ARRAY_TASK_MIN "
@@ -83,7 +82,7 @@ std::string clean_scene(const std::string& name) {
 const std::string kCrash = "PDCHECK_TEST_CRASH_PAIR=g7a:g7b ";
 
 CliResult run(const std::string& args, const std::string& env = kCrash) {
-  return shell(kNoShardEnv + env + kBin + " " + args);
+  return shell(kNoShardEnv + env + pd_test::pdcheck_binary_for(env) + " " + args);
 }
 
 json read_json(const std::string& path) {
@@ -457,9 +456,9 @@ TEST(Shard, GnuParallelRunsTheShards) {
   const CliResult f = run(s + " -q --jobs 1 -o " + full);
   const std::string prefix = tmp("par_");
   // The recipe of docs/scale-out.md.
-  const CliResult p =
-      shell(kNoShardEnv + kCrash + "parallel --will-cite --halt now,fail=1 -j 2 " + kBin + " " + s +
-            " --jobs 1 -q --shard {}/4 -o " + prefix + "{}.json ::: 1 2 3 4");
+  const CliResult p = shell(kNoShardEnv + kCrash + "parallel --will-cite --halt now,fail=1 -j 2 " +
+                            pd_test::pdcheck_binary_for(kCrash) + " " + s +
+                            " --jobs 1 -q --shard {}/4 -o " + prefix + "{}.json ::: 1 2 3 4");
   ASSERT_EQ(p.code, 0) << p.err;
   const CliResult m =
       run("merge" +

@@ -64,6 +64,23 @@ TEST(WorkQueue, CrashesCostOnlyTheTasksThatCrash) {
   }
 }
 
+TEST(WorkQueue, TheTestHookRunsInTheWorkerBeforeEachTask) {
+  // Fault injection (QueueOptions::before_task): a crash there costs only its
+  // task, and the hook runs in the worker, not in the parent.
+  const pid_t parent = getpid();
+  QueueOptions options{2, 0.0, {}};
+  options.before_task = [parent](size_t k) {
+    if (getpid() == parent || k == 3) std::abort();
+  };
+  std::map<size_t, std::string> payload, reason;
+  run_work_queue({0, 1, 2, 3, 4, 5}, options, square,
+                 [&](size_t k, bool ok, const std::string& s) { (ok ? payload : reason)[k] = s; });
+  ASSERT_EQ(reason.size(), 1u);
+  EXPECT_NE(reason[3].find("worker crashed"), std::string::npos) << reason[3];
+  EXPECT_EQ(payload.size(), 5u);
+  for (const auto& [k, s] : payload) EXPECT_EQ(s, square(k));
+}
+
 TEST(WorkQueue, TimeoutKillsOnlyTheSlowTask) {
   for (int jobs : {1, 2}) {
     const Ended e = run(12, jobs, 0.3, [](size_t k) {

@@ -1,5 +1,6 @@
 // pdcheck: batch interference checking with penetration depths.
-// The CLI only parses options, calls the library and sets the exit code.
+// The CLI only parses options, calls the library and sets the exit code
+// (apps/pdcheck/cli.h; main() is in pdcheck.cpp).
 #include <signal.h>
 #include <unistd.h>
 
@@ -13,12 +14,13 @@
 #include <optional>
 #include <sstream>
 
+#include "batch/fingerprint.h"
 #include "batch/run.h"
 #include "batch/shard.h"
 #include "cache_file.h"
+#include "cli.h"
 #include "printable.h"
 #include "report/extra_outputs.h"
-#include "report/fingerprint.h"
 #include "report/html_from_report.h"
 #include "report/merge.h"
 #include "report/output_file.h"
@@ -64,6 +66,14 @@ const char* kExamples = R"(Examples:
                                           (docs/ci.md)
 )";
 
+// A saved report's scene, read again for its page's 3D views.
+pd::ScenePartsLoader scene_parts_loader(int jobs, double load_timeout) {
+  return [jobs, load_timeout](const std::string& scene, const std::optional<std::string>& units,
+                              std::optional<double> tolerance) {
+    return pd::load_scene_parts(scene, units, tolerance, jobs, load_timeout);
+  };
+}
+
 // `pdcheck html REPORT.json -o PAGE.html`: 0 written, 3 written but a part's
 // geometry could not be read (named on stderr and on the page), 2 otherwise.
 int html_command(const std::string& report, const std::string& page, int jobs, double load_timeout,
@@ -71,7 +81,8 @@ int html_command(const std::string& report, const std::string& page, int jobs, d
   try {
     const pd::OutputFile out = pd::check_output_file("-o", page);
     pd::check_html_assets();
-    const pd::SavedReportPage made = pd::html_from_report(report, jobs, load_timeout);
+    const pd::SavedReportPage made =
+        pd::html_from_report(report, scene_parts_loader(jobs, load_timeout));
     for (const auto& p : made.problems) say("warning", p);
     pd::write_output_file(out, made.html);
     if (!quiet) std::cerr << "pdcheck: wrote " << pd::printable(page) << "\n";
@@ -160,7 +171,8 @@ int run_merge(const std::vector<std::string>& inputs, const std::string& output,
     std::vector<std::string> page_problems;
     pd::write_extra_outputs(extra, report, [&] {
       const pd::SavedReportPage page = pd::html_from_report_document(
-          nlohmann::json::parse(text), to_file ? output : inputs.front(), jobs, load_timeout);
+          nlohmann::json::parse(text), to_file ? output : inputs.front(),
+          scene_parts_loader(jobs, load_timeout));
       page_problems = page.problems;
       return page.html;
     });
@@ -188,7 +200,7 @@ int run_merge(const std::vector<std::string>& inputs, const std::string& output,
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
   CLI::App app{
       "pdcheck: convex interference checking with penetration depths (Abramson, Kent "
       "& Smith's MLSL + Ipopt), separating tessellation false positives from genuine "
@@ -432,6 +444,7 @@ int main(int argc, char** argv) {
   opt.quiet = quiet;
   opt.shard = shard;
   opt.reuse = prior ? &*prior : nullptr;
+  opt.faults = faults;
   if (!quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
   if (!no_cache) opt.cache_dir = cache_dir.empty() ? pd::default_cache_dir() : cache_dir;
   const bool jsonl = format == "jsonl";

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "batch/motion_sweep.h"
+
 namespace pd {
 
 bool boxes_touch(const Aabb& a, const Aabb& b, double margin) {
@@ -16,14 +18,7 @@ std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxe
   std::vector<std::pair<int, int>> out;
   if (n < 2) return out;
   // Sweep along the axis where the box centres spread most: fewest false candidates.
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  for (const auto& b : boxes) {
-    const Vec3 c = 0.5 * (b.lo + b.hi);
-    lo = lo.cwiseMin(c);
-    hi = hi.cwiseMax(c);
-  }
-  int axis = 0;
-  (hi - lo).maxCoeff(&axis);
+  const int axis = widest_spread_axis(boxes);
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -44,6 +39,32 @@ std::vector<std::pair<int, int>> overlapping_boxes(const std::vector<Aabb>& boxe
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+double broad_phase_reach(const Checks& checks) {
+  double reach = 0.0;
+  if (checks.clearance) {
+    reach = checks.clearance->min;
+    for (const auto& e : checks.clearance->pairs) reach = std::max(reach, e.min);
+  }
+  return reach;
+}
+
+Aabb culling_box(const Part& part, const Checks& checks) {
+  return checks.motion ? swept_box(part, checks.motion->grid) : part.box;
+}
+
+int widest_spread_axis(const std::vector<Aabb>& boxes) {
+  if (boxes.empty()) return 0;
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const auto& b : boxes) {
+    const Vec3 c = 0.5 * (b.lo + b.hi);
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  return axis;
 }
 
 }  // namespace pd

@@ -1,6 +1,6 @@
 #include "batch/reuse.h"
 
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 
 namespace pd {
 

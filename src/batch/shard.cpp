@@ -53,7 +53,8 @@ std::optional<Aabb> plan_box(const Points& placed, const PartSpec& spec,
 
 // Boxes and vertex counts of every part. Mesh files are read in batches so a
 // large scene never holds all its meshes at once.
-void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, ScenePlan& plan) {
+void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, ScenePlan& plan,
+                const MeshLoadHook& before_load) {
   const size_t n = scene.parts.size();
   plan.boxes.assign(n, std::nullopt);
   plan.vertices.assign(n, 0);
@@ -77,7 +78,8 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
     const size_t f1 = std::min(files.size(), f0 + batch);
     std::vector<MeshRequest> requests;
     for (size_t f = f0; f < f1; ++f) requests.push_back(files[f].first);
-    const std::vector<LoadedMeshes> read = load_meshes_isolated(requests, threads, load_timeout);
+    const std::vector<LoadedMeshes> read =
+        load_meshes_isolated(requests, threads, load_timeout, kAutoLoadMemory, before_load);
     for (size_t f = f0; f < f1; ++f) {
       const LoadedMeshes& m = read[f - f0];
       if (m.error) continue;  // the part's own load reports why
@@ -164,20 +166,12 @@ ShardSpec shard_from_environment(const std::function<const char*(const char*)>& 
       "shard would check the same pairs. Give --shard K/N");
 }
 
-double broad_phase_reach(const Checks& checks) {
-  double reach = 0.0;
-  if (checks.clearance) {
-    reach = checks.clearance->min;
-    for (const auto& e : checks.clearance->pairs) reach = std::max(reach, e.min);
-  }
-  return reach;
-}
-
-ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout) {
+ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout,
+                     const MeshLoadHook& before_load) {
   ScenePlan plan;
   plan.shards = shards;
   plan.listed = scene.pairs.has_value();
-  plan_boxes(scene, threads, load_timeout, plan);
+  plan_boxes(scene, threads, load_timeout, plan, before_load);
   const int n = static_cast<int>(scene.parts.size());
   for (long v : plan.vertices) plan.vertices_total += v;
 
@@ -204,14 +198,10 @@ ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double loa
 
   // Pairs along the axis where the parts spread most, cut into runs of equal
   // expected cost: neighbouring pairs share parts, so a shard's parts are few.
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  std::vector<Aabb> present;
   for (const auto& b : plan.boxes)
-    if (b) {
-      lo = lo.cwiseMin(0.5 * (b->lo + b->hi));
-      hi = hi.cwiseMax(0.5 * (b->lo + b->hi));
-    }
-  int axis = 0;
-  if ((hi.array() >= lo.array()).all()) (hi - lo).maxCoeff(&axis);
+    if (b) present.push_back(*b);
+  const int axis = widest_spread_axis(present);
   auto centre = [&](int k) {
     return plan.boxes[k] ? plan.boxes[k]->lo[axis] + plan.boxes[k]->hi[axis] : 0.0;
   };

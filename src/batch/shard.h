@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "batch/run_result.h"
 #include "geometry/aabb.h"
 #include "scene/scene.h"
 
@@ -28,11 +29,6 @@ namespace pd {
 class ShardError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
-};
-
-struct ShardSpec {
-  int index = 1;  ///< K, 1-based
-  int total = 1;  ///< N
 };
 
 /// "K/N" with 1 <= K <= N (throws ShardError naming the problem).
@@ -46,9 +42,6 @@ ShardSpec parse_shard(const std::string& text);
 ShardSpec shard_from_environment(const std::function<const char*(const char*)>& env,
                                  std::optional<int> total, std::optional<int> base);
 
-/// How far apart boxes may be and still need a check: the largest clearance asked.
-double broad_phase_reach(const Checks& checks);
-
 struct ScenePlan {
   int shards = 1;
   bool listed = false;  ///< the scene lists its pairs: every listed pair, no broad phase
@@ -61,8 +54,10 @@ struct ScenePlan {
 };
 
 /// The plan every shard computes alike (independent of `threads`). Reads every
-/// mesh file once (loader processes, `load_timeout` each) for its box; hulls nothing.
-ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout);
+/// mesh file once (loader processes, `load_timeout` each) for its box; hulls
+/// nothing. `before_load`: fault injection for tests (scene/mesh_loader.h).
+ScenePlan plan_scene(const SceneSpec& scene, int shards, int threads, double load_timeout,
+                     const MeshLoadHook& before_load = {});
 
 /// The parts shard `shard` (0-based) loads: those of its pairs and those it owns,
 /// sorted scene indices.

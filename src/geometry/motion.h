@@ -36,11 +36,14 @@ struct TimeGrid {
   /// At most kMaxTimeSteps (scenes are checked when read): a larger count is
   /// refused, never cast out of range (that wrapped and skipped the check).
   long steps() const {
-    const double n = std::floor((t1 - t0) / dt + 1e-9) + 1;
+    const double n = step_count();
     if (!(n >= 1 && n <= kMaxTimeSteps))
       throw std::domain_error("the time grid has no or more than 1,000,000 steps");
     return static_cast<long>(n);
   }
+  /// The number of grid times in double precision, unchecked: a cast of more
+  /// than 2^63 steps to an integer would be undefined (scene_json.cpp checks this).
+  double step_count() const { return std::floor((t1 - t0) / dt + 1e-9) + 1; }
   double time(long k) const { return t0 + dt * static_cast<double>(k); }
 };
 

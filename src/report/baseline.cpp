@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "batch/fingerprint.h"
 #include "report/fail_on.h"
-#include "report/fingerprint.h"
 #include "report/json_input.h"
 #include "tolerances.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/run.h"
+#include "batch/run_result.h"
 #include "report/input_error.h"
 
 namespace pd {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "batch/run.h"
+#include "batch/run_result.h"
 #include "report/review.h"
 
 namespace pd {

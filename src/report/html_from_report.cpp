@@ -6,8 +6,6 @@
 
 #include "report/json_input.h"
 #include "report/write_html.h"
-#include "scene/parts.h"
-#include "scene/scene.h"
 
 namespace pd {
 
@@ -25,8 +23,8 @@ std::string find_scene(const std::string& scene, const std::string& report_path)
   return fs::exists(beside, ec) ? beside.string() : scene;
 }
 
-SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_path, int threads,
-                        double load_timeout) {
+SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_path,
+                        const ScenePartsLoader& load) {
   const JsonAt root{raw, report_path, "$"};
   root.object();
   if (!root.has("pairs") || !root.has("scene"))
@@ -40,9 +38,9 @@ SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_pat
   std::optional<std::string> units;
   if (root.has("units")) units = root["units"].string();
   const std::string scene_path = find_scene(scene_name, report_path);
-  SceneSpec scene = load_scene_file(scene_path, units, threads);
-  if (root.has("tolerance")) scene.tolerance = root["tolerance"].number();
-  const std::vector<Part> parts = build_parts(scene, threads, {}, load_timeout);
+  std::optional<double> tolerance;
+  if (root.has("tolerance")) tolerance = root["tolerance"].number();
+  const std::vector<Part> parts = load(scene_path, units, tolerance);
 
   SavedReportPage page;
   std::map<std::string, const Part*> by_id;
@@ -67,15 +65,15 @@ SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_pat
 
 }  // namespace
 
-SavedReportPage html_from_report(const std::string& report_path, int threads, double load_timeout) {
+SavedReportPage html_from_report(const std::string& report_path, const ScenePartsLoader& load) {
   return html_from_report_document(parse_json_input(read_input_file(report_path), report_path),
-                                   report_path, threads, load_timeout);
+                                   report_path, load);
 }
 
 SavedReportPage html_from_report_document(const nlohmann::json& raw, const std::string& report_path,
-                                          int threads, double load_timeout) {
+                                          const ScenePartsLoader& load) {
   try {
-    return page_of(raw, report_path, threads, load_timeout);
+    return page_of(raw, report_path, load);
   } catch (const nlohmann::json::exception& e) {  // a value of the wrong type
     throw ReportInputError(report_path + ": not a pdcheck JSON report: " + e.what());
   }

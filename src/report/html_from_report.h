@@ -2,11 +2,13 @@
 // its geometry read again from the report's scene.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "scene/mesh_loader.h"
+#include "scene/parts.h"
 
 namespace pd {
 
@@ -17,20 +19,27 @@ struct SavedReportPage {
   std::vector<std::string> problems;
 };
 
-/// Reads the JSON report at `report_path` and its scene (the report's "scene":
+/// Reads a report's scene again and builds its parts: `scene_path` as found,
+/// `units` and `tolerance` the report's when it has them (scene/parts.h,
+/// load_scene_parts, bound to the run's threads and load timeout). The page
+/// renders what it is given: loading stays with the caller.
+using ScenePartsLoader = std::function<std::vector<Part>(const std::string& scene_path,
+                                                         const std::optional<std::string>& units,
+                                                         std::optional<double> tolerance)>;
+
+/// Reads the JSON report at `report_path`, finds its scene (the report's "scene":
 /// as written, i.e. relative to the working directory of the run, else relative
-/// to the report's own directory), loads and hulls the scene's parts (`threads`,
-/// `load_timeout` as for a run) and renders the page. Throws ReportInputError
+/// to the report's own directory), has `load` build the scene's parts and renders
+/// the page. Throws ReportInputError
 /// (the report unreadable or not a pdcheck JSON report), SceneError (the scene
 /// unreadable), HtmlAssetError (three.js missing). A part that cannot be read
 /// costs only its own 3D view: it is listed in `problems` and on the page.
-SavedReportPage html_from_report(const std::string& report_path, int threads = 1,
-                                 double load_timeout = kDefaultLoadTimeout);
+SavedReportPage html_from_report(const std::string& report_path, const ScenePartsLoader& load);
 
 /// The same for a report held in memory (pdcheck merge --html): `report_path`
 /// stands for where it is saved, in messages and to find the scene beside it.
 SavedReportPage html_from_report_document(const nlohmann::json& report,
-                                          const std::string& report_path, int threads = 1,
-                                          double load_timeout = kDefaultLoadTimeout);
+                                          const std::string& report_path,
+                                          const ScenePartsLoader& load);
 
 }  // namespace pd

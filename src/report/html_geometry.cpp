@@ -3,10 +3,10 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
-#include <set>
-#include <tuple>
+
+#include "geometry/cluster_vertices.h"
+#include "geometry/convex_overlap.h"
 
 namespace pd {
 
@@ -202,95 +202,12 @@ const Hull* realising_piece(const Part& part, int index) {
   return pieces[static_cast<size_t>(index)];
 }
 
-std::optional<WebMesh> convex_overlap(const Points& a, const Points& b, size_t max_triangles) {
-  if (a.cols() < 4 || b.cols() < 4) return std::nullopt;
-  const Hull ha = convex_hull(a), hb = convex_hull(b);
-  if (ha.dimension < 3 || hb.dimension < 3) return std::nullopt;
-  HullFacets fa, fb;
-  if (!hull_facets(ha.vertices, fa) || !hull_facets(hb.vertices, fb)) return std::nullopt;
-  const double scale =
-      std::max((ha.vertices.rowwise().maxCoeff() - ha.vertices.rowwise().minCoeff()).norm(),
-               (hb.vertices.rowwise().maxCoeff() - hb.vertices.rowwise().minCoeff()).norm());
-  const double eps = 1e-12 * std::max(1.0, scale);
-  std::vector<Vec3> found;
-  // Each edge of one hull, clipped to the other (Cyrus–Beck): what is left of it
-  // lies in both; its ends are the intersection's vertices.
-  auto clip_edges = [&](const Points& p, const HullFacets& own, const HullFacets& other) {
-    std::set<std::pair<int, int>> edges;
-    for (const auto& t : own.triangles)
-      for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
-    for (const auto& [i, j] : edges) {
-      const Vec3 p0 = p.col(i), p1 = p.col(j);
-      double t0 = 0.0, t1 = 1.0;
-      bool inside = true;
-      for (size_t f = 0; f < other.normals.size() && inside; ++f) {
-        const double d0 = other.normals[f].dot(p0) + other.offsets[f];
-        const double d1 = other.normals[f].dot(p1) + other.offsets[f];
-        if (d0 > eps && d1 > eps)
-          inside = false;
-        else if (d0 > eps)
-          t0 = std::max(t0, d0 / (d0 - d1));
-        else if (d1 > eps)
-          t1 = std::min(t1, d0 / (d0 - d1));
-        if (t0 > t1) inside = false;
-      }
-      if (!inside) continue;
-      found.push_back(p0 + t0 * (p1 - p0));
-      found.push_back(p0 + t1 * (p1 - p0));
-    }
-  };
-  clip_edges(ha.vertices, fa, fb);
-  clip_edges(hb.vertices, fb, fa);
-  if (found.size() < 4) return std::nullopt;
-  Points pts(3, static_cast<long>(found.size()));
-  for (size_t k = 0; k < found.size(); ++k) pts.col(static_cast<long>(k)) = found[k];
-  const Hull overlap = convex_hull(pts);
-  if (overlap.dimension < 3) return std::nullopt;
-  WebMesh m = hull_web_mesh(overlap.vertices, max_triangles);
+std::optional<WebMesh> overlap_web_mesh(const Points& a, const Points& b, size_t max_triangles) {
+  const std::optional<Hull> overlap = convex_overlap(a, b);
+  if (!overlap) return std::nullopt;
+  WebMesh m = hull_web_mesh(overlap->vertices, max_triangles);
   if (m.triangles.empty()) return std::nullopt;
   return m;
-}
-
-Mesh cluster_vertices(const Mesh& mesh, int cells) {
-  const long n = mesh.vertices.cols();
-  if (n == 0) return mesh;
-  const Vec3 lo = mesh.vertices.rowwise().minCoeff(), hi = mesh.vertices.rowwise().maxCoeff();
-  const double size = std::max((hi - lo).maxCoeff(), 1e-300) / cells;
-  std::map<std::tuple<long, long, long>, int> cell_of;
-  std::vector<int> new_id(static_cast<size_t>(n));
-  std::vector<Vec3> sum;
-  std::vector<int> count;
-  for (long k = 0; k < n; ++k) {
-    const Vec3 q = ((mesh.vertices.col(k) - lo) / size).array().floor();
-    const auto key =
-        std::make_tuple(static_cast<long>(q[0]), static_cast<long>(q[1]), static_cast<long>(q[2]));
-    auto [it, added] = cell_of.emplace(key, static_cast<int>(sum.size()));
-    if (added) {
-      sum.push_back(Vec3::Zero());
-      count.push_back(0);
-    }
-    sum[static_cast<size_t>(it->second)] += mesh.vertices.col(k);
-    ++count[static_cast<size_t>(it->second)];
-    new_id[static_cast<size_t>(k)] = it->second;
-  }
-  std::set<std::array<int, 3>> seen;
-  std::vector<std::array<int, 3>> kept;
-  for (long t = 0; t < mesh.triangles.cols(); ++t) {
-    std::array<int, 3> tri{};
-    for (int c = 0; c < 3; ++c) tri[c] = new_id[static_cast<size_t>(mesh.triangles(c, t))];
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-    std::array<int, 3> key = tri;
-    std::sort(key.begin(), key.end());
-    if (seen.insert(key).second) kept.push_back(tri);
-  }
-  Mesh out;
-  out.vertices.resize(3, static_cast<long>(sum.size()));
-  for (size_t k = 0; k < sum.size(); ++k)
-    out.vertices.col(static_cast<long>(k)) = sum[k] / count[k];
-  out.triangles.resize(3, static_cast<long>(kept.size()));
-  for (size_t t = 0; t < kept.size(); ++t)
-    for (int c = 0; c < 3; ++c) out.triangles(c, static_cast<long>(t)) = kept[t][c];
-  return out;
 }
 
 std::string base64(const void* data, size_t bytes) {

@@ -43,18 +43,12 @@ const Hull* realising_piece(const Part& part, int index);
 /// How many pieces realising_piece() chooses from.
 size_t piece_count(const Part& part);
 
-/// A ∩ B of two convex point sets' hulls, as a hull; nullopt when they do not
-/// overlap in a solid (touching, or apart). Exact up to rounding: every vertex of
-/// the intersection is an end of one hull's edge clipped to the other hull.
-std::optional<WebMesh> convex_overlap(const Points& a, const Points& b, size_t max_triangles);
+/// The overlap of two convex point sets' hulls (geometry/convex_overlap.h) as a
+/// web mesh of at most `max_triangles`; nullopt when they do not overlap in a solid.
+std::optional<WebMesh> overlap_web_mesh(const Points& a, const Points& b, size_t max_triangles);
 
 /// Every vertex of a part (all pieces), placed.
 Points part_vertices(const Part& part);
-
-/// Vertex clustering: vertices snapped to a grid of `cells` cells along the
-/// longest box side, merged per cell (their mean), collapsed and repeated
-/// triangles dropped. Keeps the shape's outline at the grid's resolution.
-Mesh cluster_vertices(const Mesh& mesh, int cells);
 
 /// Standard base64 of raw bytes (the page decodes typed arrays from it).
 std::string base64(const void* data, size_t bytes);

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <map>
 
-#include "report/fingerprint.h"
+#include "batch/broad_phase.h"
+#include "batch/fingerprint.h"
 #include "report/json_input.h"
 #include "report/pair_from_json.h"
 #include "report/report_json.h"
@@ -184,7 +185,7 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   const bool listed = first["shard"].value("listed", false);
   if (!listed) {
     const long usable = n - s.part_errors;
-    const long usable_pairs = usable * (usable - 1) / 2;
+    const long usable_pairs = pair_count(usable);
     s.unchecked = s.all_pairs - usable_pairs;
     s.culled = usable_pairs - s.candidates;
   }

@@ -20,7 +20,7 @@
 
 #include <string>
 
-#include "report/output_error.h"
+#include "output_error.h"
 
 namespace pd {
 

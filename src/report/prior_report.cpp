@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 #include "report/json_input.h"
 #include "report/pair_from_json.h"
 

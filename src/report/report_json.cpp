@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 
 namespace pd {
 

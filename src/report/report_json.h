@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "batch/run.h"
+#include "batch/run_result.h"
 
 namespace pd {
 

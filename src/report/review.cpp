@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 
 namespace pd {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/run.h"
+#include "batch/run_result.h"
 #include "report/baseline.h"
 #include "report/fail_on.h"
 #include "report/suppressions.h"

@@ -5,7 +5,7 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 #include "report/json_input.h"
 
 namespace pd {

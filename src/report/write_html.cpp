@@ -255,9 +255,9 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
           view["piece_b"] = add_mesh("piece", hull_web_mesh(hb->vertices, tol::kHtmlPartTriangles));
       }
       const bool on_pieces = ha && hb;
-      const auto overlap = convex_overlap(on_pieces ? ha->vertices : part_vertices(*pa->second),
-                                          on_pieces ? hb->vertices : part_vertices(*pb->second),
-                                          tol::kHtmlPartTriangles);
+      const auto overlap = overlap_web_mesh(on_pieces ? ha->vertices : part_vertices(*pa->second),
+                                            on_pieces ? hb->vertices : part_vertices(*pb->second),
+                                            tol::kHtmlPartTriangles);
       if (overlap) {
         view["overlap"] = add_mesh("overlap", *overlap);
         view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";

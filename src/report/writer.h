@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/run.h"
+#include "batch/run_result.h"
 #include "report/report_json.h"
 #include "report/review.h"
 

@@ -13,6 +13,7 @@
 namespace pd {
 
 Points place_points(const Points& p, const PartSpec& spec) {
+  // Units first (the mesh's own unit to the scene's), then the part transform.
   const Points scaled = p * spec.to_scene_units;
   return (spec.transform.topLeftCorner<3, 3>() * scaled).colwise() +
          Vec3(spec.transform.topRightCorner<3, 1>());

@@ -1,6 +1,7 @@
 // Mesh files through assimp (STL, OBJ, PLY, glTF, …).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -62,6 +63,10 @@ struct LoadedMeshes {
   std::vector<std::string> warnings;  ///< load_meshes' warnings
 };
 
+/// Tests only (fault injection): runs in a loader process before it reads the
+/// file at `path`, to make the reader crash or hang. The product never sets it.
+using MeshLoadHook = std::function<void(const std::string& path)>;
+
 /// load_meshes on each file in up to `jobs` loader processes: a file whose
 /// reader crashes, runs longer than `timeout` seconds (0 = no limit), or
 /// allocates more than `memory_mb` MB (kAutoLoadMemory: a share of the
@@ -69,7 +74,8 @@ struct LoadedMeshes {
 /// it from a process with one thread (see mesh_loader_processes.cpp).
 std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
                                                double timeout = kDefaultLoadTimeout,
-                                               double memory_mb = kAutoLoadMemory);
+                                               double memory_mb = kAutoLoadMemory,
+                                               const MeshLoadHook& before_load = {});
 
 /// The vertices of load_meshes, without triangles.
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances);

@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <new>
 
@@ -116,11 +115,6 @@ LoadedMeshes decode(const std::string& payload) {
   return out;
 }
 
-bool ends_with(const std::string& s, const char* tail) {
-  const size_t n = std::strlen(tail);
-  return n > 0 && s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
-}
-
 std::string megabytes(double mb) {
   char b[32];
   std::snprintf(b, sizeof b, "%.0f", mb);
@@ -137,12 +131,6 @@ std::string load_one(const MeshRequest& f, double memory_mb) {
   static const bool tuned =
       mallopt(M_MMAP_THRESHOLD, 32 << 20) && mallopt(M_TRIM_THRESHOLD, 256 << 20);
   (void)tuned;
-  // Fault injection for the isolation tests: a loader that crashes or hangs
-  // on the file whose path ends with the given name.
-  if (const char* crash = std::getenv("PDCHECK_TEST_CRASH_MESH"); crash && ends_with(f.path, crash))
-    std::abort();
-  if (const char* hang = std::getenv("PDCHECK_TEST_HANG_MESH"); hang && ends_with(f.path, hang))
-    for (;;) pause();
   try {
     std::vector<std::string> warnings;
     std::vector<Mesh> meshes = load_meshes(f.path, f.split_instances, &warnings);
@@ -168,7 +156,8 @@ std::string seconds(double s) {
 }  // namespace
 
 std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
-                                               double timeout, double memory_mb) {
+                                               double timeout, double memory_mb,
+                                               const MeshLoadHook& before_load) {
   std::vector<LoadedMeshes> out(files.size());
   const int loaders = std::max(1, jobs);
   if (memory_mb < 0) memory_mb = memory_share_mb(available_memory_mb(), loaders);
@@ -201,10 +190,12 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
     try {
       out[k] = decode(payload);
     } catch (const std::exception& e) {
-      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what()};
+      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what(), {}};
     }
   };
-  run_work_queue(order, {loaders, timeout, {}}, task, done);
+  QueueOptions queue{loaders, timeout, {}, {}};
+  if (before_load) queue.before_task = [&](size_t k) { before_load(files[k].path); };
+  run_work_queue(order, queue, task, done);
   return out;
 }
 

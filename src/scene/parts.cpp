@@ -29,13 +29,6 @@ long Part::hull_vertex_count() const {
 
 namespace {
 
-Points place(const Points& p, const PartSpec& spec) {
-  // Units first (the mesh's own unit to the scene's), then the part transform.
-  const Points scaled = p * spec.to_scene_units;
-  return (spec.transform.topLeftCorner<3, 3>() * scaled).colwise() +
-         Vec3(spec.transform.topRightCorner<3, 1>());
-}
-
 std::string instance_key(const PartSpec& s) {
   std::ostringstream k;
   k.precision(17);
@@ -171,7 +164,7 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
   s.closed = f.closed;
   if (!convex || spec.pieces == Pieces::kDecompose) {  // only what a refinement can use
     Mesh placed;
-    placed.vertices = place(f.mesh->vertices, spec);
+    placed.vertices = place_points(f.mesh->vertices, spec);
     placed.triangles = f.mesh->triangles;
     s.mesh = std::make_shared<const Mesh>(std::move(placed));
   }
@@ -182,11 +175,11 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
 // hulled the same list under the same placement (large parts only).
 Hull inline_hull(const PartSpec& spec, const PartsCache& cache) {
   if (cache.dir.empty() || spec.vertices->cols() < tol::kInlineHullCacheVertices)
-    return convex_hull(place(*spec.vertices, spec));
+    return convex_hull(place_points(*spec.vertices, spec));
   const std::string key =
       inline_hull_key(vertex_digest(*spec.vertices), spec.to_scene_units, spec.transform);
   if (auto hit = read_cached_hull(cache.dir, key)) return std::move(*hit);
-  Hull h = convex_hull(place(*spec.vertices, spec));
+  Hull h = convex_hull(place_points(*spec.vertices, spec));
   write_cached_hull(cache.dir, key, h);
   return h;
 }
@@ -216,7 +209,7 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
   try {
     for (size_t k = 0; k < sets.size(); ++k) {
       part.vertex_count += file ? file->counts[k] : sets[k]->cols();
-      Hull h = file ? convex_hull(place(*sets[k], spec)) : inline_hull(spec, cache);
+      Hull h = file ? convex_hull(place_points(*sets[k], spec)) : inline_hull(spec, cache);
       for (auto& w : h.warnings)
         part.warnings.push_back(sets.size() > 1 ? "piece " + std::to_string(k) + ": " + w : w);
       const Aabb b = Aabb::of(h.vertices);
@@ -239,7 +232,8 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
 
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
                               const std::function<void(size_t)>& on_built, double load_timeout,
-                              const PartsCache& cache, double load_memory_mb) {
+                              const PartsCache& cache, double load_memory_mb,
+                              const MeshLoadHook& before_load) {
   // Distinct geometry first: the same mesh file under the same units,
   // transform and pieces is hulled once, and read once under any transform.
   // Inline parts are distinct.
@@ -297,7 +291,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     }
   if (!requests.empty()) {
     std::vector<LoadedMeshes> read =
-        load_meshes_isolated(requests, threads, load_timeout, load_memory_mb);
+        load_meshes_isolated(requests, threads, load_timeout, load_memory_mb, before_load);
     for (size_t r = 0; r < read.size(); ++r) mesh_files[requested[r]].read = std::move(read[r]);
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
@@ -315,6 +309,14 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     parts.push_back(std::move(p));
   }
   return parts;
+}
+
+std::vector<Part> load_scene_parts(const std::string& path, const std::optional<std::string>& units,
+                                   std::optional<double> tolerance, int threads,
+                                   double load_timeout) {
+  SceneSpec scene = load_scene_file(path, units, threads);
+  if (tolerance) scene.tolerance = *tolerance;
+  return build_parts(scene, threads, {}, load_timeout);
 }
 
 }  // namespace pd

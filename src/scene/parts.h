@@ -79,11 +79,20 @@ struct PartsCache {
 /// limit) and `load_memory_mb` (load_meshes_isolated): a reader that hangs,
 /// crashes or allocates without end costs only its file's parts. Forks: call
 /// it from a process with one thread.
-/// `cache`: where measured convexities are cached (PartsCache).
+/// `cache`: where measured convexities are cached (PartsCache). `before_load`:
+/// fault injection for tests (mesh_loader.h).
 std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
                               const std::function<void(size_t)>& on_built = {},
                               double load_timeout = kDefaultLoadTimeout,
-                              const PartsCache& cache = {},
-                              double load_memory_mb = kAutoLoadMemory);
+                              const PartsCache& cache = {}, double load_memory_mb = kAutoLoadMemory,
+                              const MeshLoadHook& before_load = {});
+
+/// The parts of the scene file at `path` as build_parts makes them (no cache),
+/// read in `units` when given and with `tolerance` in place of the file's when
+/// given: the geometry of a saved report (report/html_from_report.h). Throws
+/// SceneError when the scene cannot be read.
+std::vector<Part> load_scene_parts(const std::string& path, const std::optional<std::string>& units,
+                                   std::optional<double> tolerance, int threads,
+                                   double load_timeout);
 
 }  // namespace pd

@@ -185,7 +185,7 @@ double positive(const Ctx& c, const json& j, const std::string& at) {
 void time_grid_limits(const Ctx& c, const TimeGrid& g, const std::string& at) {
   const double span = g.t1 - g.t0;
   if (!std::isfinite(span)) c.fail(at + ".t1", "t1 - t0 is beyond the double range");
-  const double steps = std::floor(span / g.dt + 1e-9) + 1;
+  const double steps = g.step_count();
   if (!(steps <= kMaxTimeSteps)) {
     std::ostringstream n;
     n << std::setprecision(3) << steps;

@@ -1,4 +1,4 @@
-#include "report/fingerprint.h"
+#include "batch/fingerprint.h"
 
 #include "hash.h"
 

@@ -1,0 +1,56 @@
+// What a run found: the parts, each pair's result and how the run went. The
+// report layer reads this without the pipeline that made it (batch/run.h).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "batch/pair_result.h"
+#include "scene/parts.h"
+
+namespace pd {
+
+/// Shard K of N (batch/shard.h).
+struct ShardSpec {
+  int index = 1;  ///< K, 1-based
+  int total = 1;  ///< N
+};
+
+/// Wall time of each stage of run_scene, in seconds.
+struct StageTimes {
+  double parts = 0.0;        ///< meshes loaded, transformed and hulled
+  double broad_phase = 0.0;  ///< candidate pairs found
+  double solve = 0.0;        ///< every pair solved (the work queue)
+  double refine = 0.0;       ///< nonconvex pairs: mesh tests, decompositions, piece pairs
+};
+
+/// What a shard's report says about it (docs/report-format.md, "shard").
+struct ShardManifest {
+  ShardSpec shard;
+  long parts_total = 0;         ///< parts of the scene
+  long pairs_total = 0;         ///< the scene's n(n − 1)/2, or its listed pairs
+  long pairs_planned = 0;       ///< planned pairs of this shard (a superset of its candidates)
+  long pairs_checked = 0;       ///< its candidate pairs (the planned ones whose hull boxes touch)
+  bool listed = false;          ///< the scene lists its pairs (no broad phase)
+  std::vector<int> part_index;  ///< scene index of each of RunResult::parts
+  std::vector<int> owned;       ///< scene indices of the parts this shard reports
+  long vertices_loaded = 0, vertices_total = 0;
+};
+
+struct RunResult {
+  std::vector<Part> parts;
+  std::vector<PairResult> pairs;  ///< in (a, b) order: deterministic whatever the jobs
+  long all_pairs = 0;             ///< n(n − 1)/2, or the listed pairs
+  long culled = 0;                ///< removed by the broad phase
+  long unchecked = 0;             ///< never formed: a part of theirs is unusable
+  double seconds = 0.0;
+  StageTimes stages;
+  std::vector<std::string> simulated;    ///< "interference", then "clearance", "motion" if asked
+  std::vector<std::string> part_hashes;  ///< per part: content hash (batch/content_hashes.h)
+  std::string scene_hash, settings_hash;
+  long reused = 0;                     ///< pairs taken from --reuse
+  std::optional<ShardManifest> shard;  ///< set by a --shard run
+};
+
+}  // namespace pd
