@@ -31,8 +31,9 @@
 //    (the only ones that carry geometry), data included.
 //
 // 3. A header line it does not know is skipped (not an error), but one among
-//    an element's properties ends that element's property list there. The
-//    rewrite leaves such lines out (and the check warns about each).
+//    an element's properties ends that element's property list there. Such a
+//    line before the first element (free text, as Blender 2.4 wrote) is left
+//    out of the rewrite with a warning; after it, it is refused.
 //
 // Whatever assimp returns is then compared with the vertices read here
 // (check_ply_read), so a misreading not worked around is an error, not
@@ -338,6 +339,13 @@ PlyFile check_ply(std::string_view bytes) {
       // check, with a warning. The line is left out of what assimp gets: among
       // an element's properties it would end assimp's property list there.
       if (!text_line(line)) fail(at + "unknown line " + quoted(line) + " is not text");
+      // Only before the first element, where exporters put their free text.
+      // Among elements the rewrite would hand assimp a header it was never
+      // fuzzed on, and fuzzing found assimp 5.2.5 corrupting its heap on
+      // such rewritten headers (duplicate elements after the skipped line).
+      if (!elements.empty())
+        fail(at + "unknown keyword " + quoted(w[0]) +
+             " after the first element (only before it is a free-text line skipped)");
       out.warnings.push_back("PLY " + at + "unknown line " + quoted(line) +
                              " skipped (neither comment, element nor property)");
       skipped = true;
