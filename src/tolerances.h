@@ -139,6 +139,17 @@ inline constexpr int kLocalPlanesMaxFaces = 512;
 inline constexpr int kLocalPlanesMaxPlanes = 16;
 inline constexpr int kLocalPlanesMaxChoices = 32;
 inline constexpr double kLocalPlanesMaxKappa = 2.0;
+/// The faces a plane model looks at first lie within kLocalPlanesFirstKappa·(d
+/// + r + noise) + r of the box's centre (enough for the feet of a hole whose
+/// normals spread up to 37 degrees); only where those leave faces unexplained
+/// is the largest reach (kLocalPlanesMaxKappa) tried. A smaller reach sees fewer
+/// facets of a bore, so a larger box gets a model.
+inline constexpr double kLocalPlanesFirstKappa = 1.25;
+/// Wedges (LocalPlanes::wedges) kept per part and box, and pairs of face planes
+/// tried for them, nearest to the box first: each kept wedge doubles the plane
+/// bound's alternatives, and two already pin a shoulder's corner down.
+inline constexpr int kLocalPlanesMaxWedges = 2;
+inline constexpr int kLocalPlanesWedgeTries = 8;
 
 /// HTML report (report/write_html.h): the most triangles one part, piece or
 /// overlap is shown with (larger ones decimated: report/html_geometry.h), and

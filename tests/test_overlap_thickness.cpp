@@ -106,6 +106,70 @@ TEST(OverlapThickness, PinHalfAStepTurnedInItsBoreIsThinAndBracketed) {
   }
 }
 
+TEST(OverlapThickness, ShoulderedPinSeatedOnItsBoreIsThinAndBracketed) {
+  // A pin whose head (r 5) rests on the plate around its bore (r 3): at the
+  // shoulder the pin's complement is a union of wedges (a shank facet's outer
+  // side below the head), which no convex-hole model covers; the slivers run
+  // up into that corner. Turned half a step, far from the origin, float32.
+  const int n = 48;
+  const Vec3 far(21000, -4000, 1500);
+  const Mesh plate = sh::float32(sh::translated(sh::plate_with_hole(40, 6, 3, n), far));
+  Mesh pin = sh::stepped_shaft(3, 5, -4, 6, 8, n);
+  pin.vertices = Eigen::AngleAxisd(M_PI / n, Vec3::UnitZ()).toRotationMatrix() * pin.vertices;
+  pin = sh::float32(sh::translated(pin, far));
+  const SolidDistance a(pin), b(plate);
+  ASSERT_TRUE(a.exact());
+  const double exact = half_step_pin_thickness(3, n), noise = 4 * std::max(a.noise(), b.noise());
+  const ThicknessResult r = overlap_thickness(a, b, 0.05);
+  EXPECT_EQ(r.outcome, Outcome::kBelow);
+  EXPECT_TRUE(brackets(r, exact, noise)) << r.lower << " " << exact << " " << r.upper;
+  // The shoulder's circle is certified by wedges at a coarse scale, not cell by
+  // cell at the tolerance's (a count, not a time: 3,362 with wedges, 40,604
+  // without).
+  EXPECT_LT(r.evaluations, 12000);
+}
+
+TEST(LocalPlanes, EveryBoundHoldsAtAShoulder) {
+  // Boxes about a stepped shaft's shoulder: every point of the box inside the
+  // solid keeps its distance below each plane, hole and wedge bound.
+  // Near the origin in double and far from it in float32 (rounding crossings
+  // become slack).
+  const int n = 32;
+  const Vec3 far(28000, 3000, -900);
+  const SolidDistance near_origin(sh::stepped_shaft(3, 5, 0, 10, 12, n)),
+      far_away(sh::float32(sh::translated(sh::stepped_shaft(3, 5, 0, 10, 12, n), far)));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  int wedges = 0, checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const SolidDistance& s = trial % 2 ? far_away : near_origin;
+    const Vec3 origin = trial % 2 ? far : Vec3::Zero();
+    const double angle = 2 * M_PI * u(rng), rad = 2.6 + 0.8 * u(rng), h = 0.02 + 0.4 * u(rng);
+    const Vec3 c = origin + Vec3(rad * std::cos(angle), rad * std::sin(angle), 9.6 + 0.8 * u(rng));
+    const Vec3 half = Vec3::Constant(h);
+    const LocalPlanes m = s.local_planes(c, std::abs(s.at(c).lower), half.norm());
+    wedges += !m.wedges.empty();
+    for (int k = 0; k < 40; ++k) {
+      const Vec3 x = c + Vec3(2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1).cwiseProduct(half);
+      const double sd = s.at(x).lower;
+      if (sd <= 0) continue;
+      ++checked;
+      const double eps = 1e-12 * (1 + x.norm());  // the planes' own rounding
+      for (const FacePlane& q : m.supporting) EXPECT_LE(sd, q.at(x) + m.slack + eps);
+      double hole = -INFINITY;
+      for (const FacePlane& q : m.hole) hole = std::max(hole, q.at(x));
+      if (!m.hole.empty()) {
+        EXPECT_LE(sd, m.kappa * (hole + m.slack) + eps);
+      }
+      for (const LocalPlanes::Wedge& w : m.wedges)
+        EXPECT_LE(sd, w.kappa * (std::max(w.p.at(x), w.q.at(x)) + w.slack) + eps)
+            << "trial " << trial;
+    }
+  }
+  EXPECT_GT(wedges, 40);  // the shoulder is modelled, not only bounded by Lipschitz
+  EXPECT_GT(checked, 2000);
+}
+
 TEST(OverlapThickness, ExactFitPinTouchesOnly) {
   const Mesh plate = sh::plate_with_hole(40, 6, 5, 32);
   const Mesh pin = sh::cylinder({0, 0}, 5, -4, 10, 32);  // the bore's own polygon

@@ -12,7 +12,7 @@ namespace {
 
 // 2: the "solved" flag moved into the checked body (cache_file.h).
 // 3: nonconvex pairs decided by the overlap thickness (at, reason, undecided).
-constexpr CacheKind kKind{"pdcheck-refinement-3", ".pdr"};
+constexpr CacheKind kKind{"pdcheck-refinement-4", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -91,6 +91,8 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
         tol::kThicknessBracket, static_cast<double>(tol::kLocalPlanesMaxFaces),
         static_cast<double>(tol::kLocalPlanesMaxPlanes),
         static_cast<double>(tol::kLocalPlanesMaxChoices), tol::kLocalPlanesMaxKappa,
+        tol::kLocalPlanesFirstKappa, static_cast<double>(tol::kLocalPlanesMaxWedges),
+        static_cast<double>(tol::kLocalPlanesWedgeTries),
         static_cast<double>(tol::kDecomposeMaxWork), static_cast<double>(tol::kDecomposeSamples)})
     h.add(x);
   return h.hex();

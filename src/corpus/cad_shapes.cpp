@@ -125,6 +125,44 @@ Mesh cylinder(const Vec2& centre, double radius, double z0, double z1, int segme
   return prism(circle(centre, radius, segments), z0, z1);
 }
 
+Mesh stepped_shaft(double shank_radius, double head_radius, double z0, double z1, double z2,
+                   int segments) {
+  // Rings: shank bottom, shank top, head bottom (same z), head top; and the
+  // two cap centres. Every quad between consecutive rings runs
+  // counter-clockwise seen from outside.
+  const int n = segments;
+  const std::vector<std::pair<double, double>> rings{
+      {shank_radius, z0}, {shank_radius, z1}, {head_radius, z1}, {head_radius, z2}};
+  Mesh m;
+  m.vertices.resize(3, 4 * n + 2);
+  for (int r = 0; r < 4; ++r)
+    for (int i = 0; i < n; ++i) {
+      const double a = 2.0 * M_PI * i / n;
+      m.vertices.col(r * n + i) =
+          Vec3(rings[r].first * std::cos(a), rings[r].first * std::sin(a), rings[r].second);
+    }
+  const int bottom = 4 * n, top = 4 * n + 1;
+  m.vertices.col(bottom) = Vec3(0, 0, z0);
+  m.vertices.col(top) = Vec3(0, 0, z2);
+  std::vector<Eigen::Vector3i> tris;
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    tris.push_back({bottom, j, i});
+    tris.push_back({top, 3 * n + i, 3 * n + j});
+    // Shank side and head side run upwards (outward normal); the shoulder's
+    // annulus (rings 1 to 2) faces down.
+    for (int r : {0, 2}) {
+      tris.push_back({r * n + i, r * n + j, (r + 1) * n + j});
+      tris.push_back({r * n + i, (r + 1) * n + j, (r + 1) * n + i});
+    }
+    tris.push_back({n + i, n + j, 2 * n + j});
+    tris.push_back({n + i, 2 * n + j, 2 * n + i});
+  }
+  m.triangles.resize(3, static_cast<long>(tris.size()));
+  for (size_t t = 0; t < tris.size(); ++t) m.triangles.col(static_cast<long>(t)) = tris[t];
+  return m;
+}
+
 namespace {
 
 // The square [-h, h]² sampled where the rays at angles 2πi/n meet it (n a

@@ -46,6 +46,12 @@ Mesh l_bracket(double a, double t, double width);
 /// oriented inward (two shells, one solid with a void).
 Mesh hollow_box(const Vec3& lo, const Vec3& hi, double wall);
 
+/// A stepped shaft along z as one closed shell: a shank of `shank_radius`
+/// from z0 to z1 under a head of `head_radius` from z1 to z2, both the regular
+/// polygon of `segments` (phase 0); the shoulder at z1 is a concave edge.
+Mesh stepped_shaft(double shank_radius, double head_radius, double z0, double z1, double z2,
+                   int segments);
+
 /// Every vertex moved by `offset`.
 Mesh translated(Mesh m, const Vec3& offset);
 

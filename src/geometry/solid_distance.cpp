@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -221,9 +222,122 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
 
 namespace {
 
-// The plane model of one oriented closed mesh about a box (SolidDistance::local_planes).
-LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r) {
+// How deep a convex polygon reaches into the wedge {s_p < 0} ∩ {s_q < 0}: the
+// largest min(−s_p, −s_q) over it. That function is concave, so its largest is
+// at a corner or where the ridge s_p = s_q crosses an edge.
+double wedge_crossing(const std::vector<Vec3>& face, const FacePlane& p, const FacePlane& q) {
+  double m = -INFINITY;
+  for (size_t k = 0; k < face.size(); ++k) {
+    const Vec3 &x = face[k], &y = face[(k + 1) % face.size()];
+    const double px = p.at(x), qx = q.at(x), py = p.at(y), qy = q.at(y);
+    m = std::max(m, std::min(-px, -qx));
+    const double dx = px - qx, dy = py - qy;
+    if ((dx < 0) != (dy < 0)) {
+      const double u = dx / (dx - dy);
+      m = std::max(m, -(px + u * (py - px)));
+    }
+  }
+  return m;
+}
+
+// The faces near a ball, grouped by plane (a quad's two triangles, a flat
+// face's fan: one plane, their rounding measured as slack).
+struct PlaneGroup {
+  FacePlane plane;
+  std::vector<std::vector<Vec3>> faces;  ///< each face clipped to the reach's box
+  bool supporting = true;
+};
+
+// The wedge of groups g and h (LocalPlanes::Wedge), if it is complement about
+// c: no face reaches more than `cap` into it, every foot point of its bound
+// stays within the reach, and a point of it (c's foot point, a little
+// further) is outside the solid (`outside`, exact). W less its measured crossing is convex
+// and holds no surface, so that one point decides all of it.
+template <class Outside>
+std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup& h,
+                                           const std::vector<PlaneGroup>& groups, double cap,
+                                           const Vec3& c, double r, double reach,
+                                           const Outside& outside) {
+  const Vec3 mean = (g.plane.normal + h.plane.normal).normalized();
+  const double cos_spread = g.plane.normal.dot(mean);
+  if (!mean.allFinite() || !(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return std::nullopt;
+  LocalPlanes::Wedge w{g.plane, h.plane, 1.0 / cos_spread, 0.0};
+  for (const PlaneGroup& f : groups)
+    for (const auto& t : f.faces) {
+      const double x = wedge_crossing(t, g.plane, h.plane);
+      if (x > cap) return std::nullopt;
+      w.slack = std::max(w.slack, x);
+    }
+  const double sigma = std::max(g.plane.at(c), h.plane.at(c));
+  if (r + w.kappa * (sigma + r + w.slack) > reach) return std::nullopt;
+  // The witness: c's own foot point, a little further in.
+  const double margin = 0.5 * r + 1e-3 * cap;
+  const Vec3 z = c + w.kappa * std::max(sigma + w.slack + margin, margin) * mean;
+  if (!(g.plane.at(z) < -w.slack && h.plane.at(z) < -w.slack && (z - c).norm() < reach))
+    return std::nullopt;
+  return outside(z) ? std::optional<LocalPlanes::Wedge>(w) : std::nullopt;
+}
+
+// A convex hole among the non-supporting groups (LocalPlanes::hole): each of
+// its faces on the outer side of the others' planes, every other face on the
+// inner side of one of them, normals within the largest spread and every foot
+// point within the reach. Sets out's hole, kappa and slack when it is one.
+bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
+                 double cap, const Vec3& c, double r, double reach, LocalPlanes& out) {
+  using Group = PlaneGroup;
+  const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
+    double m = INFINITY;
+    for (const Vec3& p : face) m = std::min(m, sign * q.at(p));
+    return m;
+  };
+  double hole_slack = out.slack;
+  for (const Group* g : hole) {
+    for (const auto& t : g->faces) hole_slack = std::max(hole_slack, -least(t, g->plane, 1.0));
+    for (const Group* h : hole) {
+      if (g == h) continue;
+      for (const auto& t : g->faces) {
+        const double m = least(t, h->plane, -1.0);
+        if (m < -cap) return false;
+        hole_slack = std::max(hole_slack, -m);
+      }
+    }
+  }
+  for (const Group& g : groups) {
+    if (!g.supporting) continue;
+    for (const auto& t : g.faces) {
+      double best = -INFINITY;
+      for (const Group* h : hole) best = std::max(best, least(t, h->plane, 1.0));
+      if (best < -cap) return false;
+      hole_slack = std::max(hole_slack, -best);
+    }
+  }
+  Vec3 mean = Vec3::Zero();
+  for (const Group* g : hole) mean += g->plane.normal;
+  mean.normalize();
+  double cos_spread = 1.0, sigma = -INFINITY;
+  for (const Group* g : hole) {
+    cos_spread = std::min(cos_spread, g->plane.normal.dot(mean));
+    sigma = std::max(sigma, g->plane.at(c));
+  }
+  if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return false;
+  const double kappa = 1.0 / cos_spread;
+  if (r + kappa * (sigma + r + hole_slack) > reach) return false;  // a foot could leave the ball
+  out.kappa = kappa;
+  out.slack = hole_slack;
+  for (const Group* g : hole) out.hole.push_back(g->plane);
+  return true;
+}
+
+// The plane model of one oriented closed mesh about a box
+// (SolidDistance::local_planes); `outside(p)`: p strictly outside the solid.
+// Faces within reach = reach_kappa·(d + r + noise) + r count; `complete` tells
+// whether every face there was explained (no hole, or a convex one), so that
+// a larger reach could not do better.
+template <class Outside>
+LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r,
+                        double reach_kappa, const Outside& outside, bool& complete) {
   LocalPlanes out;
+  complete = false;
   if (!mesh.oriented() || mesh.has_segments()) return out;
   // A face may cross a plane it should not by at most `cap` (the coordinates'
   // rounding) and still count as on its side; the crossings actually measured
@@ -232,17 +346,12 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
   // Every foot point a bound below uses lies within `reach` of c: a supporting
   // plane's within r + s_k(x) ≤ 2r + s_k(c) (planes farther are not used), a
   // hole's within r + kappa·(σ_c + r + slack) (checked once kappa is known).
-  const double reach = tol::kLocalPlanesMaxKappa * (d + r + cap) + r;
+  const double reach = reach_kappa * (d + r + cap) + r;
   std::vector<int> near;
   mesh.faces_in_box(c.array() - reach, c.array() + reach, near);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
-  // The faces meeting the ball, grouped by plane (a quad's two triangles, a
-  // flat face's fan: one plane, their rounding measured as slack below).
-  struct Group {
-    FacePlane plane;
-    std::vector<std::vector<Vec3>> faces;  ///< each face clipped to the reach's box
-    bool supporting = true;
-  };
+  // The faces meeting the ball, grouped by plane.
+  using Group = PlaneGroup;
   const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
   std::vector<Group> groups;
   for (int f : near) {
@@ -272,13 +381,16 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
     return m;
   };
   // Supporting: every face in the ball on the plane's inner side.
-  std::vector<double> crossing(groups.size(), 0.0);
-  for (size_t k = 0; k < groups.size(); ++k)
-    for (const Group& h : groups)
-      for (const auto& t : h.faces) {
+  // crosses[k·n + h]: a face of group h lies beyond plane k by more than cap.
+  const size_t n = groups.size();
+  std::vector<double> crossing(n, 0.0);
+  std::vector<char> crosses(n * n, 0);
+  for (size_t k = 0; k < n; ++k)
+    for (size_t h = 0; h < n; ++h)
+      for (const auto& t : groups[h].faces) {
         const double m = least(t, groups[k].plane, 1.0);
         crossing[k] = std::max(crossing[k], -m);
-        groups[k].supporting = groups[k].supporting && m >= -cap;
+        if (m < -cap) crosses[k * n + h] = 1, groups[k].supporting = false;
       }
   std::vector<const Group*> hole;
   std::vector<std::pair<double, size_t>> nearest;  // supporting planes by s(c)
@@ -302,51 +414,50 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
     out.supporting.clear();
     return out;
   }
-  if (hole.empty()) return out;
-  // A convex hole: each of its faces on the outer side of the others' planes,
-  // every other face on the inner side of one of them.
-  double hole_slack = slack;
-  for (const Group* g : hole) {
-    for (const auto& t : g->faces) hole_slack = std::max(hole_slack, -least(t, g->plane, 1.0));
-    for (const Group* h : hole) {
-      if (g == h) continue;
-      for (const auto& t : g->faces) {
-        const double m = least(t, h->plane, -1.0);
-        if (m < -cap) return out;
-        hole_slack = std::max(hole_slack, -m);
-      }
+  complete = hole.empty() || convex_hole(groups, hole, cap, c, r, reach, out);
+  if (complete) return out;
+  // No convex hole: pairs of its planes whose wedge is complement, the pairs
+  // with the smallest bound at c first.
+  // Only planes whose faces cross each other's outer side can make one (a
+  // concave edge's two sides; a cylinder's facets never cross each other).
+  std::vector<std::pair<double, std::pair<const Group*, const Group*>>> pairs;
+  const auto index = [&](const Group* g) { return static_cast<size_t>(g - groups.data()); };
+  for (size_t i = 0; i < hole.size(); ++i)
+    for (size_t j = i + 1; j < hole.size(); ++j) {
+      const size_t gi = index(hole[i]), gj = index(hole[j]);
+      if (!crosses[gi * n + gj] && !crosses[gj * n + gi]) continue;
+      const Vec3 mean = (hole[i]->plane.normal + hole[j]->plane.normal).normalized();
+      const double cos_spread = hole[i]->plane.normal.dot(mean);
+      if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) continue;
+      const double at_c = std::max(hole[i]->plane.at(c), hole[j]->plane.at(c)) / cos_spread;
+      pairs.push_back({at_c, {hole[i], hole[j]}});
     }
+  std::sort(pairs.begin(), pairs.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  int tries = 0;
+  for (const auto& [at_c, gh] : pairs) {
+    if (tries++ >= tol::kLocalPlanesWedgeTries ||
+        out.wedges.size() >= static_cast<size_t>(tol::kLocalPlanesMaxWedges))
+      break;
+    if (auto w = wedge_of(*gh.first, *gh.second, groups, cap, c, r, reach, outside))
+      out.wedges.push_back(*w);
   }
-  for (const Group& g : groups) {
-    if (!g.supporting) continue;
-    for (const auto& t : g.faces) {
-      double best = -INFINITY;
-      for (const Group* h : hole) best = std::max(best, least(t, h->plane, 1.0));
-      if (best < -cap) return out;
-      hole_slack = std::max(hole_slack, -best);
-    }
-  }
-  Vec3 mean = Vec3::Zero();
-  for (const Group* g : hole) mean += g->plane.normal;
-  mean.normalize();
-  double cos_spread = 1.0, sigma = -INFINITY;
-  for (const Group* g : hole) {
-    cos_spread = std::min(cos_spread, g->plane.normal.dot(mean));
-    sigma = std::max(sigma, g->plane.at(c));
-  }
-  if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return out;
-  const double kappa = 1.0 / cos_spread;
-  if (r + kappa * (sigma + r + hole_slack) > reach) return out;  // a foot could leave the ball
-  out.kappa = kappa;
-  out.slack = hole_slack;
-  for (const Group* g : hole) out.hole.push_back(g->plane);
   return out;
 }
 
 }  // namespace
 
 LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const {
-  if (exact_) return planes_near(whole_, noise_, c, d, r);
+  // The faces near the box first (fewer planes, a smaller spread), then, where
+  // they leave something unexplained, those within the largest reach.
+  bool complete = false;
+  if (exact_) {
+    const auto outside = [&](const Vec3& p) { return whole_.outside(p); };
+    LocalPlanes near =
+        planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesFirstKappa, outside, complete);
+    if (complete) return near;
+    return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, outside, complete);
+  }
   // A union: where one shell alone has faces near the box and the centre lies
   // outside every other shell, the union is that shell there.
   const double reach = tol::kLocalPlanesMaxKappa * (d + r + noise_) + r;
@@ -362,7 +473,13 @@ LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const
   if (alone < 0) return {};
   for (size_t i = 0; i < shells_.size(); ++i)
     if (static_cast<int>(i) != alone && !shells_[i].outside(c)) return {};
-  return planes_near(shells_[alone], noise_, c, d, r);
+  return planes_near(
+      shells_[alone], noise_, c, d, r, tol::kLocalPlanesMaxKappa,
+      [&](const Vec3& p) {
+        return std::all_of(shells_.begin(), shells_.end(),
+                           [&](const PreparedMesh& s) { return s.outside(p); });
+      },
+      complete);
 }
 
 }  // namespace pd

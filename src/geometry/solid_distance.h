@@ -45,16 +45,28 @@ struct FacePlane {
 ///   complement then holds the intersection of their outer sides, and
 ///   sd(x) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread), since
 ///   moving x along m by that much leaves every outer side's boundary behind.
-/// Both empty: nothing could be certified (degenerate faces, no orientation,
+/// - wedges, where the other faces bound no convex hole (a pin's shank meeting
+///   its head's underside: the complement is the union of one wedge per shank
+///   facet): two planes whose outer sides' intersection W holds no face within
+///   the reach and a point outside the solid (an exact ray test), so W is
+///   complement there and sd(x) ≤ kappa · (max(s_p(x), s_q(x)) + slack) for
+///   each wedge, kappa = 1 / cos(half the angle between their normals).
+/// All empty: nothing could be certified (degenerate faces, no orientation,
 /// too many faces); the Lipschitz bound still holds.
 struct LocalPlanes {
+  struct Wedge {
+    FacePlane p, q;
+    double kappa = 1.0;
+    double slack = 0.0;  ///< as `slack` below, measured for this wedge
+  };
   std::vector<FacePlane> supporting;
   std::vector<FacePlane> hole;
+  std::vector<Wedge> wedges;
   double kappa = 1.0;
   /// How far faces were measured to cross the planes they should lie behind (the
   /// coordinates' rounding; accepted up to noise()): added to the bound, so it holds exactly.
   double slack = 0.0;
-  bool empty() const { return supporting.empty() && hole.empty(); }
+  bool empty() const { return supporting.empty() && hole.empty() && wedges.empty(); }
 };
 
 /// A closed triangle mesh as a solid. Vertices with equal coordinates are one

@@ -38,13 +38,32 @@ std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& 
                                               const Vec3& hi) {
   std::vector<Affine> base;
   for (const FacePlane& q : m.supporting) base.push_back({q.offset + m.slack, -q.normal});
-  if (m.hole.empty()) return {base};
   const Vec3 c = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  // sd ≤ kappa · (s_q + slack) for the plane q that is the largest; one that
+  // is negative throughout the cell is never the largest > 0.
+  const auto can_lead = [&](const FacePlane& q, double slack) {
+    return q.at(c) + half.dot(q.normal.cwiseAbs()) + slack >= 0;
+  };
+  const auto bound = [](const FacePlane& q, double kappa, double slack) {
+    return Affine{kappa * (q.offset + slack), -kappa * q.normal};
+  };
   std::vector<std::vector<Affine>> alts;
+  if (m.hole.empty()) alts.push_back(base);
   for (const FacePlane& q : m.hole) {
-    if (q.at(c) + half.dot(q.normal.cwiseAbs()) + m.slack < 0) continue;  // never the largest > 0
+    if (!can_lead(q, m.slack)) continue;
     alts.push_back(base);
-    alts.back().push_back({m.kappa * (q.offset + m.slack), -m.kappa * q.normal});
+    alts.back().push_back(bound(q, m.kappa, m.slack));
+  }
+  // Each wedge holds on its own: every alternative so far meets one of its two.
+  for (const LocalPlanes::Wedge& w : m.wedges) {
+    std::vector<std::vector<Affine>> next;
+    for (const auto& alt : alts)
+      for (const FacePlane* q : {&w.p, &w.q}) {
+        if (!can_lead(*q, w.slack)) continue;
+        next.push_back(alt);
+        next.back().push_back(bound(*q, w.kappa, w.slack));
+      }
+    alts.swap(next);
   }
   return alts;
 }
