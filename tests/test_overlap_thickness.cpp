@@ -170,6 +170,35 @@ TEST(LocalPlanes, EveryBoundHoldsAtAShoulder) {
   EXPECT_GT(checked, 2000);
 }
 
+TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {
+  // A unit cube whose top face has a vertex in the middle of its front edge,
+  // closed by a needle (a collinear triangle, as float32 exports make them)
+  // against the front face's edge: the needle lies on that edge, so the cube's
+  // planes still model it.
+  Mesh cube;
+  cube.vertices.resize(3, 9);
+  cube.vertices << 0, 1, 1, 0, 0, 1, 1, 0, 0.5,  //
+      0, 0, 1, 1, 0, 0, 1, 1, 0,                 //
+      0, 0, 0, 0, 1, 1, 1, 1, 1;
+  const std::vector<Eigen::Vector3i> tris{{0, 2, 1}, {0, 3, 2}, {4, 8, 7}, {8, 5, 6}, {8, 6, 7},
+                                          {5, 8, 4}, {0, 1, 5}, {0, 5, 4}, {3, 7, 6}, {3, 6, 2},
+                                          {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  cube.triangles.resize(3, static_cast<long>(tris.size()));
+  for (size_t t = 0; t < tris.size(); ++t) cube.triangles.col(static_cast<long>(t)) = tris[t];
+  const SolidDistance s(cube);
+  ASSERT_TRUE(s.closed());
+  ASSERT_TRUE(s.mesh().has_segments());
+  const Vec3 c(0.5, 0.1, 0.9);
+  const LocalPlanes m = s.local_planes(c, s.at(c).lower, 0.05);
+  ASSERT_FALSE(m.supporting.empty());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 x = c + Vec3(u(rng), u(rng), u(rng));
+    for (const FacePlane& q : m.supporting) EXPECT_LE(s.at(x).lower, q.at(x) + m.slack + 1e-12);
+  }
+}
+
 TEST(OverlapThickness, ExactFitPinTouchesOnly) {
   const Mesh plate = sh::plate_with_hole(40, 6, 5, 32);
   const Mesh pin = sh::cylinder({0, 0}, 5, -4, 10, 32);  // the bore's own polygon

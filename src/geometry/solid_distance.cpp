@@ -282,8 +282,12 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
 // its faces on the outer side of the others' planes, every other face on the
 // inner side of one of them, normals within the largest spread and every foot
 // point within the reach. Sets out's hole, kappa and slack when it is one.
+// With `witness` (a union of shells, where just outside one shell's face may
+// be inside another), the hole's own foot point from c must also be outside.
+template <class Outside>
 bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
-                 double cap, const Vec3& c, double r, double reach, LocalPlanes& out) {
+                 double cap, const Vec3& c, double r, double reach, bool witness,
+                 const Outside& outside, LocalPlanes& out) {
   using Group = PlaneGroup;
   const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
     double m = INFINITY;
@@ -322,6 +326,13 @@ bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const 
   if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return false;
   const double kappa = 1.0 / cos_spread;
   if (r + kappa * (sigma + r + hole_slack) > reach) return false;  // a foot could leave the ball
+  if (witness) {
+    const double margin = 0.5 * r + 1e-3 * cap;
+    const Vec3 z = c + kappa * std::max(sigma + hole_slack + margin, margin) * mean;
+    if ((z - c).norm() >= reach || !outside(z)) return false;
+    for (const Group* g : hole)
+      if (!(g->plane.at(z) < -hole_slack)) return false;
+  }
   out.kappa = kappa;
   out.slack = hole_slack;
   for (const Group* g : hole) out.hole.push_back(g->plane);
@@ -335,10 +346,13 @@ bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const 
 // a larger reach could not do better.
 template <class Outside>
 LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r,
-                        double reach_kappa, const Outside& outside, bool& complete) {
+                        double reach_kappa, bool witness, const Outside& outside, bool& complete) {
   LocalPlanes out;
   complete = false;
-  if (!mesh.oriented() || mesh.has_segments()) return out;
+  // Needles (collinear triangles, segments in PreparedMesh) are not checked:
+  // in a closed mesh each lies on the edge of the face across its longest
+  // side, so that face's checks cover its points.
+  if (!mesh.oriented()) return out;
   // A face may cross a plane it should not by at most `cap` (the coordinates'
   // rounding) and still count as on its side; the crossings actually measured
   // become the bound's slack, so the certificate holds exactly.
@@ -406,6 +420,11 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
   if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
     nearest.resize(tol::kLocalPlanesMaxPlanes);
   for (const auto& [s_c, k] : nearest) {
+    if (witness) {  // a point beyond the plane's crossings, within the reach, outside
+      const double step = std::max(s_c, 0.0) + crossing[k] + 0.5 * r + 1e-3 * cap;
+      const Vec3 z = c + step * groups[k].plane.normal;
+      if (step >= reach || !outside(z)) continue;
+    }
     out.supporting.push_back(groups[k].plane);
     slack = std::max(slack, crossing[k]);
   }
@@ -414,7 +433,7 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
     out.supporting.clear();
     return out;
   }
-  complete = hole.empty() || convex_hole(groups, hole, cap, c, r, reach, out);
+  complete = hole.empty() || convex_hole(groups, hole, cap, c, r, reach, witness, outside, out);
   if (complete) return out;
   // No convex hole: pairs of its planes whose wedge is complement, the pairs
   // with the smallest bound at c first.
@@ -454,32 +473,42 @@ LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const
   if (exact_) {
     const auto outside = [&](const Vec3& p) { return whole_.outside(p); };
     LocalPlanes near =
-        planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesFirstKappa, outside, complete);
+        planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesFirstKappa, false, outside, complete);
     if (complete) return near;
-    return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, outside, complete);
+    return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, false, outside,
+                       complete);
   }
   // A union: where one shell alone has faces near the box and the centre lies
-  // outside every other shell, the union is that shell there.
+  // outside every other shell, the union is that shell there. Elsewhere every
+  // shell's faces count, and each plane, hole and wedge must show a point of
+  // its outer side that is outside every shell (exact ray tests): just outside
+  // one shell's face may be inside another.
+  const auto outside_all = [&](const Vec3& p) {
+    return std::all_of(shells_.begin(), shells_.end(),
+                       [&](const PreparedMesh& s) { return s.outside(p); });
+  };
   const double reach = tol::kLocalPlanesMaxKappa * (d + r + noise_) + r;
   int alone = -1;
+  bool several = false;
   std::vector<int> near;
-  for (size_t i = 0; i < shells_.size(); ++i) {
+  for (size_t i = 0; i < shells_.size() && !several; ++i) {
     near.clear();
     shells_[i].faces_in_box(c.array() - reach, c.array() + reach, near);
     if (near.empty()) continue;
-    if (alone >= 0) return {};
+    several = alone >= 0;
     alone = static_cast<int>(i);
   }
   if (alone < 0) return {};
-  for (size_t i = 0; i < shells_.size(); ++i)
-    if (static_cast<int>(i) != alone && !shells_[i].outside(c)) return {};
-  return planes_near(
-      shells_[alone], noise_, c, d, r, tol::kLocalPlanesMaxKappa,
-      [&](const Vec3& p) {
-        return std::all_of(shells_.begin(), shells_.end(),
-                           [&](const PreparedMesh& s) { return s.outside(p); });
-      },
-      complete);
+  if (!several) {
+    bool others_outside = true;
+    for (size_t i = 0; i < shells_.size() && others_outside; ++i)
+      others_outside = static_cast<int>(i) == alone || shells_[i].outside(c);
+    if (others_outside)
+      return planes_near(shells_[alone], noise_, c, d, r, tol::kLocalPlanesMaxKappa, false,
+                         outside_all, complete);
+  }
+  return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, true, outside_all,
+                     complete);
 }
 
 }  // namespace pd
