@@ -145,6 +145,12 @@ inline constexpr double kLocalPlanesMaxKappa = 2.0;
 /// is the largest reach (kLocalPlanesMaxKappa) tried. A smaller reach sees fewer
 /// facets of a bore, so a larger box gets a model.
 inline constexpr double kLocalPlanesFirstKappa = 1.25;
+/// Where a hole's normals spread wider than kLocalPlanesMaxKappa allows (a
+/// small hole wholly within the reach), its feet move along the mean of the
+/// normals within 45 degrees (cos 0.7) of the plane the box's centre lies
+/// deepest behind; the planes outside the spread must then stay behind every
+/// foot (checked).
+inline constexpr double kLocalPlanesFacingCos = 0.7;
 /// Wedges (LocalPlanes::wedges) kept per part and box, and pairs of face planes
 /// tried for them, nearest to the box first: each kept wedge doubles the plane
 /// bound's alternatives, and two already pin a shoulder's corner down.

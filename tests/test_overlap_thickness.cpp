@@ -129,45 +129,88 @@ TEST(OverlapThickness, ShoulderedPinSeatedOnItsBoreIsThinAndBracketed) {
   EXPECT_LT(r.evaluations, 12000);
 }
 
-TEST(LocalPlanes, EveryBoundHoldsAtAShoulder) {
-  // Boxes about a stepped shaft's shoulder: every point of the box inside the
-  // solid keeps its distance below each plane, hole and wedge bound.
-  // Near the origin in double and far from it in float32 (rounding crossings
-  // become slack).
-  const int n = 32;
-  const Vec3 far(28000, 3000, -900);
-  const SolidDistance near_origin(sh::stepped_shaft(3, 5, 0, 10, 12, n)),
-      far_away(sh::float32(sh::translated(sh::stepped_shaft(3, 5, 0, 10, 12, n), far)));
-  std::mt19937 rng(5);
+// Checks every plane, hole and wedge bound of s's models about boxes centred
+// by `centre(rng)` (half-size up to 0.4 of `scale`) against the exact distance
+// at points of the box inside the solid; counts the models with holes and
+// wedges and the points checked.
+struct ModelCounts {
+  int holes = 0, wedges = 0, checked = 0;
+};
+template <class Centre>
+ModelCounts check_local_planes(const SolidDistance& s, double scale, Centre centre,
+                               std::mt19937& rng, int trials) {
   std::uniform_real_distribution<double> u(0, 1);
-  int wedges = 0, checked = 0;
-  for (int trial = 0; trial < 400; ++trial) {
-    const SolidDistance& s = trial % 2 ? far_away : near_origin;
-    const Vec3 origin = trial % 2 ? far : Vec3::Zero();
-    const double angle = 2 * M_PI * u(rng), rad = 2.6 + 0.8 * u(rng), h = 0.02 + 0.4 * u(rng);
-    const Vec3 c = origin + Vec3(rad * std::cos(angle), rad * std::sin(angle), 9.6 + 0.8 * u(rng));
-    const Vec3 half = Vec3::Constant(h);
+  ModelCounts n;
+  for (int trial = 0; trial < trials; ++trial) {
+    const Vec3 c = centre(rng);
+    const Vec3 half = Vec3::Constant(scale * (0.02 + 0.4 * u(rng)));
     const LocalPlanes m = s.local_planes(c, std::abs(s.at(c).lower), half.norm());
-    wedges += !m.wedges.empty();
+    n.holes += !m.hole.empty();
+    n.wedges += !m.wedges.empty();
     for (int k = 0; k < 40; ++k) {
       const Vec3 x = c + Vec3(2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1).cwiseProduct(half);
       const double sd = s.at(x).lower;
       if (sd <= 0) continue;
-      ++checked;
+      ++n.checked;
       const double eps = 1e-12 * (1 + x.norm());  // the planes' own rounding
       for (const FacePlane& q : m.supporting) EXPECT_LE(sd, q.at(x) + m.slack + eps);
       double hole = -INFINITY;
       for (const FacePlane& q : m.hole) hole = std::max(hole, q.at(x));
       if (!m.hole.empty()) {
-        EXPECT_LE(sd, m.kappa * (hole + m.slack) + eps);
+        EXPECT_LE(sd, m.kappa * (hole + m.slack) + eps) << "trial " << trial;
       }
       for (const LocalPlanes::Wedge& w : m.wedges)
         EXPECT_LE(sd, w.kappa * (std::max(w.p.at(x), w.q.at(x)) + w.slack) + eps)
             << "trial " << trial;
     }
   }
-  EXPECT_GT(wedges, 40);  // the shoulder is modelled, not only bounded by Lipschitz
-  EXPECT_GT(checked, 2000);
+  return n;
+}
+
+TEST(LocalPlanes, EveryBoundHoldsAtAShoulder) {
+  // Boxes about a stepped shaft's shoulder, near the origin in double and far
+  // from it in float32 (rounding crossings become slack).
+  const int n = 32;
+  const Vec3 far(28000, 3000, -900);
+  for (const bool far_away : {false, true}) {
+    const Vec3 origin = far_away ? far : Vec3::Zero();
+    const Mesh shaft = sh::stepped_shaft(3, 5, 0, 10, 12, n);
+    const SolidDistance s(far_away ? sh::float32(sh::translated(shaft, far)) : shaft);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    const ModelCounts counts = check_local_planes(
+        s, 1.0,
+        [&](std::mt19937& g) {
+          const double angle = 2 * M_PI * u(g), rad = 2.6 + 0.8 * u(g);
+          return Vec3(origin +
+                      Vec3(rad * std::cos(angle), rad * std::sin(angle), 9.6 + 0.8 * u(g)));
+        },
+        rng, 200);
+    EXPECT_GT(counts.wedges, 20);  // the shoulder is modelled, not only bounded by Lipschitz
+    EXPECT_GT(counts.checked, 1000);
+  }
+}
+
+TEST(LocalPlanes, EveryBoundHoldsAboutSmallAndLargeHoles) {
+  // A board's 0.5 mm hole fits wholly within a box's reach (their normals
+  // spread all round: only the facets facing the box enter its bound); a
+  // plate's 5 mm bore spans many boxes.
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (const double radius : {0.5, 5.0}) {
+    const Mesh mesh = radius < 1 ? sh::plate_with_hole(2.54, 1.6, radius, 32)
+                                 : sh::plate_with_hole(40, 6, radius, 64);
+    const SolidDistance s(mesh);
+    const ModelCounts counts = check_local_planes(
+        s, radius,
+        [&](std::mt19937& g) {
+          const double angle = 2 * M_PI * u(g), rad = radius * (1 + 0.3 * u(g));
+          return Vec3(rad * std::cos(angle), rad * std::sin(angle), 1.6 * u(g));
+        },
+        rng, 200);
+    EXPECT_GT(counts.holes, 40) << "hole radius " << radius;
+    EXPECT_GT(counts.checked, 1000) << "hole radius " << radius;
+  }
 }
 
 TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {

@@ -280,8 +280,9 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
 
 // A convex hole among the non-supporting groups (LocalPlanes::hole): each of
 // its faces on the outer side of the others' planes, every other face on the
-// inner side of one of them, normals within the largest spread and every foot
-// point within the reach. Sets out's hole, kappa and slack when it is one.
+// inner side of one of them, every foot point within the reach, and the
+// planes the feet do not move against ("far") behind every foot. Sets out's
+// hole (the near planes), kappa and slack when it is one.
 // With `witness` (a union of shells, where just outside one shell's face may
 // be inside another), the hole's own foot point from c must also be outside.
 template <class Outside>
@@ -315,17 +316,44 @@ bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const 
       hole_slack = std::max(hole_slack, -best);
     }
   }
+  // The feet move along m: the mean of every hole normal when they lie within
+  // the largest spread of it, else (a small hole wholly within the reach, a
+  // wide arc of a bore) the mean of those facing c, the ones c lies deepest
+  // behind. The planes within the spread of m ("near") enter the bound; every
+  // other ("far") must stay behind every foot point the box can have.
   Vec3 mean = Vec3::Zero();
   for (const Group* g : hole) mean += g->plane.normal;
   mean.normalize();
+  const auto spread = [&](const Vec3& m) {
+    double cos_spread = 1.0;
+    for (const Group* g : hole) cos_spread = std::min(cos_spread, g->plane.normal.dot(m));
+    return cos_spread;
+  };
+  if (!(spread(mean) * tol::kLocalPlanesMaxKappa >= 1.0)) {
+    const Group* facing = *std::max_element(hole.begin(), hole.end(), [&](auto* x, auto* y) {
+      return x->plane.at(c) < y->plane.at(c);
+    });
+    mean = Vec3::Zero();
+    for (const Group* g : hole)
+      if (g->plane.normal.dot(facing->plane.normal) >= tol::kLocalPlanesFacingCos)
+        mean += g->plane.normal;
+    mean.normalize();
+  }
+  std::vector<const Group*> near, far;
+  for (const Group* g : hole)
+    (g->plane.normal.dot(mean) * tol::kLocalPlanesMaxKappa >= 1.0 ? near : far).push_back(g);
+  if (near.empty() || !mean.allFinite()) return false;
   double cos_spread = 1.0, sigma = -INFINITY;
-  for (const Group* g : hole) {
+  for (const Group* g : near) {
     cos_spread = std::min(cos_spread, g->plane.normal.dot(mean));
     sigma = std::max(sigma, g->plane.at(c));
   }
-  if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return false;
   const double kappa = 1.0 / cos_spread;
-  if (r + kappa * (sigma + r + hole_slack) > reach) return false;  // a foot could leave the ball
+  const double longest = kappa * std::max(sigma + r + hole_slack, 0.0);  // the farthest foot step
+  if (r + longest > reach) return false;  // a foot could leave the ball
+  for (const Group* g : far)
+    if (g->plane.at(c) + r + longest * std::max(0.0, -g->plane.normal.dot(mean)) > -hole_slack)
+      return false;
   if (witness) {
     const double margin = 0.5 * r + 1e-3 * cap;
     const Vec3 z = c + kappa * std::max(sigma + hole_slack + margin, margin) * mean;
@@ -335,7 +363,7 @@ bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const 
   }
   out.kappa = kappa;
   out.slack = hole_slack;
-  for (const Group* g : hole) out.hole.push_back(g->plane);
+  for (const Group* g : near) out.hole.push_back(g->plane);
   return true;
 }
 
@@ -429,10 +457,9 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
     slack = std::max(slack, crossing[k]);
   }
   out.slack = slack;
-  if (hole.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes)) {
-    out.supporting.clear();
-    return out;
-  }
+  // Too many other planes (a whole small hole within the reach): the
+  // supporting planes hold on their own.
+  if (hole.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes)) return out;
   complete = hole.empty() || convex_hole(groups, hole, cap, c, r, reach, witness, outside, out);
   if (complete) return out;
   // No convex hole: pairs of its planes whose wedge is complement, the pairs
