@@ -71,7 +71,10 @@ std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& 
 class Search {
  public:
   Search(const SolidDistance& a, const SolidDistance& b, double threshold)
-      : a_(a), b_(b), min_step_(std::max({1e-4 * threshold, 4 * a.noise(), 4 * b.noise()})) {}
+      : a_(a),
+        b_(b),
+        min_step_(std::max({1e-4 * threshold, 4 * a.noise(), 4 * b.noise()})),
+        settled_(0.5 * threshold) {}
 
   Probe probe(const Vec3& x) {
     evaluations += 2;
@@ -92,12 +95,28 @@ class Search {
     if (p.a.upper < -r || p.b.upper < -r) return -INFINITY;  // wholly outside a part
     double upper = p.upper() + r;                            // φ is 1-Lipschitz
     if (!planes || !(upper > best)) return upper;
-    const LocalPlanes la = a_.local_planes(c, std::abs(p.a.lower), r);
-    const LocalPlanes lb = b_.local_planes(c, std::abs(p.b.lower), r);
-    if (la.empty() && lb.empty()) return upper;
     std::vector<Affine> common;
     if (std::isfinite(p.a.upper)) common.push_back({p.a.upper + r, Vec3::Zero()});
     if (std::isfinite(p.b.upper)) common.push_back({p.b.upper + r, Vec3::Zero()});
+    // One part's model often settles the box alone (below the best point found,
+    // or below half the threshold, where it is never split): the other's is
+    // then not built.
+    const LocalPlanes la = a_.local_planes(c, std::abs(p.a.lower), r);
+    if (!la.empty()) {
+      upper = planes_bound(la, LocalPlanes{}, common, cell, upper);
+      if (upper <= std::max(best, settled_)) return upper;
+    }
+    const LocalPlanes lb = b_.local_planes(c, std::abs(p.b.lower), r);
+    if (lb.empty()) return upper;
+    return planes_bound(la, lb, common, cell, upper);
+  }
+
+  // The plane models' bound over the cell (docs/solver.md): the largest, over
+  // each choice of the holes' and wedges' active planes, of max over the cell
+  // of the smallest constraint; `upper` (a bound already known) when that is
+  // no better or there are too many choices.
+  double planes_bound(const LocalPlanes& la, const LocalPlanes& lb,
+                      const std::vector<Affine>& common, const Cell& cell, double upper) const {
     const auto alts_a = alternatives(la, cell.lo, cell.hi),
                alts_b = alternatives(lb, cell.lo, cell.hi);
     if (alts_a.empty() || alts_b.empty()) return -INFINITY;  // outside a part throughout
@@ -150,6 +169,7 @@ class Search {
 
   const SolidDistance &a_, &b_;
   double min_step_;
+  double settled_;  ///< a box whose φ bound is below this never decides the pair
 };
 
 // Halves every axis at least half as long as the longest (2, 4 or 8 children),
