@@ -301,13 +301,32 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   return side < 0 ? d : -d;
 }
 
+namespace {
+
+// The tree's traversal listing the faces whose boxes meet a box: box overlaps
+// only (the exact triangle-box test of all_intersected_primitives is most of a
+// query's cost on CAD meshes' long thin triangles, and every caller filters
+// the faces itself).
+struct BoxOverlapListing {
+  TriIter first;
+  std::vector<int>* out;
+  bool go_further() const { return true; }
+  void intersection(const CGAL::Bbox_3& query, const Primitive& p) {
+    if (CGAL::do_overlap(query, p.datum().bbox())) out->push_back(static_cast<int>(p.id() - first));
+  }
+  template <class Node>
+  bool do_intersect(const CGAL::Bbox_3& query, const Node& node) const {
+    return CGAL::do_overlap(query, node.bbox());
+  }
+};
+
+}  // namespace
+
 void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const {
   const Impl& m = *impl_;
   if (m.faces.empty()) return;
-  std::vector<TriIter> hits;
-  m.tree.all_intersected_primitives(CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()),
-                                    std::back_inserter(hits));
-  for (TriIter t : hits) out.push_back(static_cast<int>(t - m.faces.cbegin()));
+  BoxOverlapListing listing{m.faces.cbegin(), &out};
+  m.tree.traversal(CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()), listing);
 }
 
 std::array<Vec3, 3> PreparedMesh::face(int i) const {
