@@ -1,5 +1,6 @@
 #include "batch/refine_cache.h"
 
+#include "batch/content_hashes.h"
 #include "cache_file.h"
 #include "hash.h"
 #include "results/codec.h"
@@ -13,7 +14,9 @@ namespace {
 // 3: nonconvex pairs decided by the overlap thickness (at, reason, undecided).
 // 4: wedge models at concave edges decide more pairs by the thickness.
 // 5: the result as results/codec.h's complete encoding alone.
-constexpr CacheKind kKind{"pdcheck-refinement-5", ".pdr"};
+// 6: the settings keyed as the settings hash keys them (the seed as an integer,
+//    not a double that merged seeds differing above 2^53).
+constexpr CacheKind kKind{"pdcheck-refinement-6", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -42,13 +45,7 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
   h.add(status_name(hull.status)).add(hull.depth);
   for (int k = 0; k < 3; ++k) h.add(hull.direction[k]);
   h.add(options.tolerance).add(options.pair_timeout);
-  const SolverSettings& s = options.solver;
-  h.add(method_name(s.method)).add(static_cast<double>(s.seed));
-  for (double x :
-       {double(s.samples), s.reduced, s.sigma, s.tau, double(s.min_iterations), s.link_scale,
-        double(s.max_iterations), double(s.max_local_solves), s.max_seconds, double(s.paper_n),
-        double(s.paper_m), double(s.grid), double(s.gs_local)})
-    h.add(x);
+  add_solver_settings(h, options.solver);
   h.add(checks.clearance ? *checks.clearance : -1.0);
   for (double x :
        {tol::kConcavityFraction, tol::kDecomposeSeconds,

@@ -1,6 +1,7 @@
 #include "report/report_json.h"
 
 #include <cstdio>
+#include <type_traits>
 
 #include "results/codec.h"
 
@@ -80,17 +81,14 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
   json pairs = json::array();
   for (const PairResult& p : r.pairs) pairs.push_back(pair_json(p, r.parts));
   const SolverSettings& s = ctx.solver;
-  json method = {{"name", method_name(s.method)}, {"seed", s.seed}};
-  if (s.method == Method::kMlsl)
-    method.update({{"samples", s.samples},
-                   {"reduced", s.reduced},
-                   {"sigma", s.sigma},
-                   {"tau", s.tau},
-                   {"link_scale", s.link_scale}});
-  if (s.method == Method::kMlslPaper)
-    method.update({{"N", s.paper_n}, {"M", s.paper_m}, {"sigma", s.sigma}, {"tau", s.tau}});
-  if (s.method == Method::kGrid) method["grid"] = s.grid;
-  if (s.method == Method::kGsLocal) method["gs_local"] = s.gs_local;
+  json method = json::object();
+  for_each_setting(s, [&](const Setting& setting, const auto& value) {
+    if (!setting.reported_for(s.method)) return;
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Method>)
+      method[setting.report_key] = method_name(value);
+    else
+      method[setting.report_key] = value;
+  });
   json doc = {{"tool", {{"name", "pdcheck"}, {"version", PDCHECK_VERSION}}},
               {"report_version", 1},
               {"scene", ctx.scene_path},
