@@ -4,10 +4,12 @@ back up them (README, "Layout"; the build enforces the same order with one
 library and one include view per layer, CMakeLists.txt).
 
     utilities -> geometry -> solve -> scene -> batch -> report -> apps/pdcheck
+                             solve -> results -> batch
 
 A file may include headers of its own layer and of the layers below it, except
 that src/geometry and src/solve see only each other (solve above geometry) and
-src/tolerances.h, and src/corpus (test and benchmark fixtures) only geometry,
+src/tolerances.h, src/results (what a run found, between batch and report) sees
+the utilities, geometry and solve but not src/scene, and src/corpus (test and benchmark fixtures) only geometry,
 solve and src/tolerances.h. Nothing in the product includes src/corpus.
 
 Usage: scripts/check_layers.py [SOURCE_ROOT] [--quiet]
@@ -19,20 +21,21 @@ import os
 import re
 import sys
 
-ORDER = ["utilities", "geometry", "solve", "scene", "batch", "report", "app"]
-RANK = {name: k for k, name in enumerate(ORDER)}
+ORDER = ["utilities", "geometry", "solve", "results", "scene", "batch", "report", "app"]
 # The layers whose headers each layer may include, besides its own.
 ALLOWED = {
-    "utilities": set(),
+    "utilities": {"tolerances"},
     "geometry": {"tolerances"},
     "solve": {"tolerances", "geometry"},
+    "results": {"tolerances", "utilities", "geometry", "solve"},
+    "scene": {"tolerances", "utilities", "geometry", "solve"},
     "corpus": {"tolerances", "geometry", "solve"},
     "bench": set(ORDER) | {"tolerances", "corpus"},
 }
-for name in ["scene", "batch", "report", "app"]:
-    ALLOWED[name] = {n for n in ORDER if RANK[n] < RANK[name]} | {"tolerances"}
-ALLOWED["utilities"] = {"tolerances"}
-SUBDIRS = {"geometry", "solve", "scene", "batch", "report", "corpus"}
+ALLOWED["batch"] = ALLOWED["scene"] | {"results", "scene"}
+ALLOWED["report"] = ALLOWED["batch"] | {"batch"}
+ALLOWED["app"] = ALLOWED["report"] | {"report"}
+SUBDIRS = {"geometry", "solve", "results", "scene", "batch", "report", "corpus"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 

@@ -1,8 +1,8 @@
 // Pair fingerprints and content hashes: stable, symmetric, injective on id pairs.
 #include <gtest/gtest.h>
 
-#include "batch/fingerprint.h"
 #include "hash.h"
+#include "results/fingerprint.h"
 #include "scene/mesh_loader.h"
 
 namespace pd {

@@ -3,8 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "batch/fingerprint.h"
 #include "cli_support.h"
+#include "results/fingerprint.h"
 
 using nlohmann::json;
 using namespace pd::test;

@@ -2,11 +2,11 @@
 // functions on hand-built runs (the CLI tests run them end to end).
 #include <gtest/gtest.h>
 
-#include "batch/fingerprint.h"
 #include "report/baseline.h"
 #include "report/input_error.h"
 #include "report/review.h"
 #include "report/suppressions.h"
+#include "results/fingerprint.h"
 #include "tolerances.h"
 
 namespace pd {

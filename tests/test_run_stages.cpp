@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "batch/broad_phase.h"
-#include "batch/fingerprint.h"
 #include "batch/run_stages.h"
+#include "results/fingerprint.h"
 
 using namespace pd;
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "batch/fingerprint.h"
 #include "geometry/hull.h"
+#include "results/fingerprint.h"
 #include "scene/json_split.h"
 #include "scene/mesh_loader.h"
 #include "scene/parts.h"

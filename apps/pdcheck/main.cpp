@@ -14,7 +14,6 @@
 #include <optional>
 #include <sstream>
 
-#include "batch/fingerprint.h"
 #include "batch/run.h"
 #include "batch/shard.h"
 #include "cache_file.h"
@@ -31,16 +30,18 @@
 #include "report/review_text.h"
 #include "report/write_html.h"
 #include "report/writer.h"
+#include "results/exit_code.h"
+#include "results/fingerprint.h"
 #include "scene/scene.h"
 #include "scene/units.h"
 #include "termination.h"
 
 namespace {
 
-constexpr int kExitUsage = 2;
+using pd::kExitBadInput;
 // The report could not be delivered (path, full disk, closed pipe): like bad
 // usage, the run's findings are not known to the caller.
-constexpr int kExitOutput = 2;
+constexpr pd::ExitCode kExitOutput = pd::kExitBadInput;
 
 // --jobs as given, else every core.
 int jobs_or_all_cores(int jobs) {
@@ -86,7 +87,7 @@ int html_command(const std::string& report, const std::string& page, int jobs, d
     for (const auto& p : made.problems) say("warning", p);
     pd::write_output_file(out, made.html);
     if (!quiet) std::cerr << "pdcheck: wrote " << pd::printable(page) << "\n";
-    return made.problems.empty() ? 0 : 3;
+    return made.problems.empty() ? pd::kExitClean : pd::kExitIncomplete;
   } catch (const pd::ReportInputError& e) {
     say("error", e.what());
   } catch (const pd::SceneError& e) {
@@ -96,7 +97,7 @@ int html_command(const std::string& report, const std::string& page, int jobs, d
   } catch (const pd::OutputError& e) {
     say("error", e.what());
   }
-  return kExitUsage;
+  return kExitBadInput;
 }
 
 // The CI options of a run and of a merge (docs/ci.md).
@@ -181,7 +182,7 @@ int run_merge(const std::vector<std::string>& inputs, const std::string& output,
       say_review(report);
       std::cerr << m.summary_line << "\n";
     }
-    return page_problems.empty() ? m.review.exit_code : 3;
+    return page_problems.empty() ? m.review.exit_code : pd::kExitIncomplete;
   } catch (const pd::MergeError& e) {
     say("error", std::string("merge: ") + e.what());
   } catch (const pd::ReportInputError& e) {
@@ -195,7 +196,7 @@ int run_merge(const std::vector<std::string>& inputs, const std::string& output,
   } catch (const pd::HtmlAssetError& e) {
     say("error", e.what());
   }
-  return kExitUsage;
+  return kExitBadInput;
 }
 
 }  // namespace
@@ -300,7 +301,7 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
-    return code == 0 ? 0 : kExitUsage;
+    return code == 0 ? pd::kExitClean : kExitBadInput;
   }
   // Write errors are reported as errors (EPIPE), not a silent death; a
   // terminated run takes its workers and temporary files with it.
@@ -314,7 +315,7 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
                      load_timeout, merge_quiet || quiet);
   if (scene_arg.empty()) {
     say("error", "a scene is required (a scene JSON file, or - for standard input); see --help");
-    return kExitUsage;
+    return kExitBadInput;
   }
   std::optional<pd::ShardSpec> shard;
   try {
@@ -337,11 +338,11 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
     }
   } catch (const pd::ShardError& e) {
     say("error", e.what());
-    return kExitUsage;
+    return kExitBadInput;
   }
   if (!std::isfinite(pair_timeout)) {
     say("error", "--pair-timeout: must be a finite number of seconds (0 = none)");
-    return kExitUsage;
+    return kExitBadInput;
   }
   // Every output path is checked before the run: a bad one fails now, not
   // after hours of solving.
@@ -360,11 +361,11 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
 
   if (!(load_timeout >= 0 && load_timeout <= 1e6)) {
     say("error", "--load-timeout: must be a number of seconds from 0 to 1e6");
-    return kExitUsage;
+    return kExitBadInput;
   }
   if (app.count("--load-memory") && !(load_memory >= 0 && load_memory <= 1e9)) {
     say("error", "--load-memory: must be a number of MB from 0 to 1e9");
-    return kExitUsage;
+    return kExitBadInput;
   }
   jobs = jobs_or_all_cores(jobs);
   pd::SceneSpec scene;
@@ -410,7 +411,7 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
     }
   } catch (const pd::SceneError& e) {
     say("error", e.what());
-    return kExitUsage;
+    return kExitBadInput;
   }
 
   // The CI inputs are read before the run: a malformed file costs no solve.
@@ -422,10 +423,10 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
     pd::load_review_inputs(ci.review, *scene.tolerance, review_in);
   } catch (const pd::ReportInputError& e) {
     say("error", e.what());
-    return kExitUsage;
+    return kExitBadInput;
   } catch (const pd::ReviewArgsError& e) {
     say("error", e.what());
-    return kExitUsage;
+    return kExitBadInput;
   }
   if (scene.pairs) {
     review_opt.listed.emplace();
@@ -465,13 +466,13 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
     return kExitOutput;
   } catch (const pd::SceneError& e) {  // a shard's scene file changed under it
     say("error", e.what());
-    return kExitUsage;
+    return kExitBadInput;
   }
   const pd::Summary summary = pd::summarize(result);
   pd::ReportContext ctx{scene.path, scene.units.value_or("mm"), *scene.tolerance, solver,
                         load_seconds};
 
-  const pd::Review review = pd::review_run(result, review_opt, summary.exit_code() == 3);
+  const pd::Review review = pd::review_run(result, review_opt, summary.incomplete());
   const pd::ReportInput report{ctx, result, review, review_opt};
 
   // Streamed lines are out already; a file gets the same lines in report order.
@@ -502,6 +503,6 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
       std::cerr << "pdcheck: " << result.reused << " pair(s) reused from " << reuse_path << "\n";
   }
   // A shard's verdict is the merge's: its exit code says its report is written.
-  if (shard) return 0;
+  if (shard) return pd::kExitClean;
   return review.exit_code;
 }

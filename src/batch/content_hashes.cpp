@@ -1,9 +1,11 @@
 #include "batch/content_hashes.h"
 
+#include <cstdint>
 #include <map>
 
 #include "file_hash.h"
 #include "hash.h"
+#include "solve/settings.h"
 
 namespace pd {
 
@@ -71,14 +73,27 @@ std::string scene_content_hash(const SceneSpec& scene,
   return h.hex();
 }
 
+namespace {
+
+struct AddSetting {
+  Hasher& h;
+  void operator()(const Setting&, Method m) const { h.add(method_name(m)); }
+  void operator()(const Setting&, std::uint64_t v) const { h.add(std::to_string(v)); }
+  void operator()(const Setting&, int v) const { h.add(std::to_string(v)); }
+  void operator()(const Setting&, double v) const { h.add(v); }
+};
+
+}  // namespace
+
+void add_solver_settings(Hasher& h, const SolverSettings& s) {
+  for_each_setting(s, AddSetting{h});
+}
+
 std::string settings_hash(const SolverSettings& s, double tolerance, const Checks& checks) {
   Hasher h;
-  h.add("pdcheck-settings-v1").add(method_name(s.method));
-  h.add(std::to_string(s.seed));
-  for (int v : {s.samples, s.min_iterations, s.max_iterations, s.max_local_solves, s.paper_n,
-                s.paper_m, s.grid, s.gs_local})
-    h.add(std::to_string(v));
-  for (double v : {s.reduced, s.sigma, s.tau, s.link_scale, s.max_seconds, tolerance}) h.add(v);
+  h.add("pdcheck-settings-v1");
+  add_solver_settings(h, s);
+  h.add(tolerance);
   if (checks.clearance) {
     h.add("clearance").add(checks.clearance->min);
     for (const auto& e : checks.clearance->pairs) h.add(e.a).add(e.b).add(e.min);

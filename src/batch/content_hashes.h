@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "hash.h"
 #include "scene/scene.h"
 #include "solve/settings.h"
 
@@ -27,6 +28,11 @@ std::map<std::string, std::string> mesh_file_hashes(const SceneSpec& scene);
 
 /// The scene: its unit, the parts (ids and content hashes, in order) and any pair list.
 std::string scene_content_hash(const SceneSpec& scene, const std::vector<std::string>& part_hashes);
+
+/// Adds every solver setting (solve/settings.h's for_each_setting): the method
+/// by name, integers (the seed included) exactly as decimal text, doubles by
+/// their bits. For every hash of the settings.
+void add_solver_settings(Hasher& h, const SolverSettings& s);
 
 /// Everything besides geometry that changes a pair's result: the solver settings,
 /// the tolerance and the checks (clearance, motion).

@@ -2,8 +2,8 @@
 // time grid, each step warm-started from the previous step's direction.
 #pragma once
 
-#include "batch/pair_result.h"
 #include "geometry/aabb.h"
+#include "results/pair_result.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "solve/ipopt_local.h"

@@ -15,30 +15,6 @@
 
 namespace pd {
 
-const char* status_name(Status s) {
-  switch (s) {
-    case Status::kSeparated:
-      return "separated";
-    case Status::kFalsePositive:
-      return "false_positive";
-    case Status::kInterference:
-      return "interference";
-    case Status::kError:
-      return "error";
-    case Status::kClearanceViolation:
-      return "clearance_violation";
-    case Status::kUndecided:
-      return "undecided";
-  }
-  return "error";
-}
-
-Status classify(double depth, double tolerance, double pair_size) {
-  if (depth <= tol::kTouch * pair_size) return Status::kSeparated;
-  if (depth <= tolerance + tol::kClassifyBand * pair_size) return Status::kFalsePositive;
-  return Status::kInterference;
-}
-
 namespace {
 
 std::vector<Aabb> piece_boxes(const Part& p) {

@@ -1,7 +1,7 @@
 // Solving one pair of parts: every piece pair, the deepest one counts.
 #pragma once
 
-#include "batch/pair_result.h"
+#include "results/pair_result.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "solve/ipopt_local.h"

@@ -16,9 +16,9 @@
 #include <functional>
 #include <vector>
 
-#include "batch/pair_result.h"
 #include "batch/pair_solve.h"
 #include "batch/run.h"
+#include "results/pair_result.h"
 #include "scene/parts.h"
 #include "solve/overlap_thickness.h"
 

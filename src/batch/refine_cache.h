@@ -9,9 +9,9 @@
 #include <optional>
 #include <string>
 
-#include "batch/pair_result.h"
 #include "batch/pair_solve.h"
 #include "batch/run.h"
+#include "results/pair_result.h"
 #include "scene/parts.h"
 
 namespace pd {

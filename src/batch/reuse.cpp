@@ -1,6 +1,6 @@
 #include "batch/reuse.h"
 
-#include "batch/fingerprint.h"
+#include "results/fingerprint.h"
 
 namespace pd {
 

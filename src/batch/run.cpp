@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "batch/content_hashes.h"
@@ -13,80 +11,6 @@
 #include "batch/run_stages.h"
 
 namespace pd {
-
-using nlohmann::json;
-
-std::string encode_pair_result(const PairResult& r) {
-  json j = {{"a", r.a},
-            {"b", r.b},
-            {"s", int(r.status)},
-            {"d", r.depth},
-            {"v", {r.direction.x(), r.direction.y(), r.direction.z()}},
-            {"g", r.margin},
-            {"m", r.method},
-            {"t", r.time_ms},
-            {"f", r.fallback},
-            {"e", r.error},
-            {"st",
-             {r.stats.alpha_evaluations, r.stats.local_solves, r.stats.distinct_optima,
-              r.stats.ipopt_iterations, r.stats.ipopt_calls, r.stats.ipopt_failures,
-              r.stats.mlsl_iterations, int(r.stats.stop_reason)}}};
-  if (r.distance) j["x"] = *r.distance;
-  if (r.clearance_min) j["c"] = *r.clearance_min;
-  if (!r.warnings.empty()) j["w"] = r.warnings;
-  if (r.pieces) j["pc"] = *r.pieces;
-  if (r.motion) {
-    const MotionTrace& m = *r.motion;
-    j["mo"] = {{"n", m.steps},
-               {"d", m.max_depth},
-               {"td", m.t_max_depth},
-               {"tc", m.t_min_distance},
-               {"s", m.series}};
-    if (m.min_distance) j["mo"]["c"] = *m.min_distance;
-  }
-  // MessagePack, not JSON text: it keeps every double's bits (NaN, ±Inf, −0
-  // included), where dump() would write NaN and Inf as null.
-  const std::vector<std::uint8_t> bytes = json::to_msgpack(j);
-  return std::string(bytes.begin(), bytes.end());
-}
-
-PairResult decode_pair_result(const std::string& s) {
-  // Not const: a missing key reads as null and throws on conversion (const
-  // operator[] would be undefined behaviour).
-  json j = json::from_msgpack(s);
-  PairResult r;
-  r.a = j["a"];
-  r.b = j["b"];
-  const int status = j["s"];
-  if (status < int(Status::kSeparated) || status > int(Status::kUndecided))
-    throw std::runtime_error("unknown status " + std::to_string(status));
-  r.status = static_cast<Status>(status);
-  r.depth = j["d"];
-  r.direction = Vec3(j["v"][0], j["v"][1], j["v"][2]);
-  r.margin = j["g"];
-  r.method = j["m"];
-  r.time_ms = j["t"];
-  r.fallback = j["f"];
-  r.error = j["e"];
-  const auto& st = j["st"];
-  r.stats = {st[0], st[1], st[2], st[3], st[4], st[5], st[6], StopReason(st[7].get<int>())};
-  if (j.contains("x")) r.distance = j["x"].get<double>();
-  if (j.contains("c")) r.clearance_min = j["c"].get<double>();
-  if (j.contains("w")) r.warnings = j["w"].get<std::vector<std::string>>();
-  if (j.contains("pc")) r.pieces = j["pc"].get<std::array<int, 2>>();
-  if (j.contains("mo")) {
-    const auto& mo = j["mo"];
-    MotionTrace m;
-    m.steps = mo["n"];
-    m.max_depth = mo["d"];
-    m.t_max_depth = mo["td"];
-    m.t_min_distance = mo["tc"];
-    m.series = mo["s"].get<std::vector<std::pair<double, double>>>();
-    if (mo.contains("c")) m.min_distance = mo["c"].get<double>();
-    r.motion = m;
-  }
-  return r;
-}
 
 PairResult pair_result_from_worker(bool ok, const std::string& payload, int a, int b,
                                    const std::string& method) {

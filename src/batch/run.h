@@ -9,6 +9,7 @@
 #include "batch/reuse.h"
 #include "batch/run_result.h"
 #include "batch/shard.h"
+#include "results/codec.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "solve/settings.h"
@@ -49,11 +50,8 @@ struct RunOptions {
 
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options);
 
-/// Encoding of a PairResult between worker and parent (lossless for doubles).
-std::string encode_pair_result(const PairResult& r);
-PairResult decode_pair_result(const std::string& s);
-
-/// The parent's view of a worker's answer for pair (a, b): the decoded result,
+/// The parent's view of a worker's answer for pair (a, b) (results/codec.h's
+/// complete encoding): the decoded result,
 /// or an error result when the worker failed (`ok` false, `payload` its reason)
 /// or its payload cannot be decoded. Never throws on a bad payload.
 PairResult pair_result_from_worker(bool ok, const std::string& payload, int a, int b,

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/pair_result.h"
+#include "results/pair_result.h"
 #include "scene/parts.h"
 
 namespace pd {

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "batch/fingerprint.h"
 #include "report/fail_on.h"
 #include "report/json_input.h"
+#include "results/fingerprint.h"
 #include "tolerances.h"
 
 namespace pd {

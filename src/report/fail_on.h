@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "batch/pair_result.h"
+#include "results/pair_result.h"
 
 namespace pd {
 

@@ -4,12 +4,12 @@
 #include <map>
 
 #include "batch/broad_phase.h"
-#include "batch/fingerprint.h"
 #include "report/json_input.h"
-#include "report/pair_from_json.h"
 #include "report/report_json.h"
 #include "report/review.h"
 #include "report/review_json.h"
+#include "results/codec.h"
+#include "results/fingerprint.h"
 
 namespace pd {
 
@@ -173,7 +173,7 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   for (const Entry& e : entries) {
     PairResult r;
     try {
-      r = pair_from_json(*e.pair, e.a, e.b);
+      r = pair_from_report(*e.pair, e.a, e.b);
     } catch (const std::exception& ex) {
       throw MergeError(*e.path + ": pair " + e.pair->at("a").dump() + ", " +
                        e.pair->at("b").dump() + ": " + ex.what());
@@ -198,7 +198,7 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
     for (const Entry& e : entries)
       out.review_options.listed->insert(pair_fingerprint(run.parts[e.a].id, run.parts[e.b].id));
   }
-  out.review = review_run(run, out.review_options, s.exit_code() == 3);
+  out.review = review_run(run, out.review_options, s.incomplete());
 
   out.doc = first;
   out.doc.erase("shard");

@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "batch/fingerprint.h"
 #include "report/json_input.h"
-#include "report/pair_from_json.h"
+#include "results/codec.h"
+#include "results/fingerprint.h"
 
 namespace pd {
 
@@ -37,7 +37,7 @@ PriorResults load_prior_report(const std::string& path) {
       const auto& p = pairs[k];
       const std::string a = p.at("a").get<std::string>(), b = p.at("b").get<std::string>();
       try {
-        prior.pairs[pair_fingerprint(a, b)] = pair_from_json(p, -1, -1);
+        prior.pairs[pair_fingerprint(a, b)] = pair_from_report(p, -1, -1);
       } catch (const std::exception& e) {
         throw ReportInputError(path + ": $.pairs[" + std::to_string(k) + "]: " + e.what());
       }

@@ -1,17 +1,13 @@
 #include "report/report_json.h"
 
 #include <cstdio>
+#include <type_traits>
 
-#include "batch/fingerprint.h"
+#include "results/codec.h"
 
 namespace pd {
 
 using json = nlohmann::ordered_json;
-
-int Summary::exit_code() const {
-  if (error > 0 || undecided > 0 || part_errors > 0 || unchecked > 0) return 3;
-  return interference > 0 || clearance_violation > 0 ? 1 : 0;
-}
 
 Summary summarize(const RunResult& r) {
   Summary s;
@@ -22,84 +18,12 @@ Summary summarize(const RunResult& r) {
   s.unchecked = r.unchecked;
   s.candidates = static_cast<long>(r.pairs.size());
   for (const auto& what : r.simulated) s.clearance_checked |= what == "clearance";
-  for (const PairResult& p : r.pairs) {
-    switch (p.status) {
-      case Status::kSeparated:
-        ++s.separated;
-        break;
-      case Status::kFalsePositive:
-        ++s.false_positive;
-        break;
-      case Status::kInterference:
-        ++s.interference;
-        break;
-      case Status::kError:
-        ++s.error;
-        break;
-      case Status::kClearanceViolation:
-        ++s.clearance_violation;
-        break;
-      case Status::kUndecided:
-        ++s.undecided;
-        break;
-    }
-  }
+  for (const PairResult& p : r.pairs) s.add(p.status);
   return s;
 }
 
 json pair_json(const PairResult& r, const std::vector<Part>& parts) {
-  json j = {{"a", parts[r.a].id},
-            {"b", parts[r.b].id},
-            {"fingerprint", pair_fingerprint(parts[r.a].id, parts[r.b].id)},
-            {"status", status_name(r.status)}};
-  if (r.status == Status::kError) {
-    j["error"] = r.error;
-  } else {
-    j["depth"] = r.depth;
-    j["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0,
-                      r.direction.z() + 0.0};  // no -0
-    j["margin"] = r.margin;
-    if (r.distance) j["distance"] = *r.distance;
-    j["depth_source"] = r.depth_source;
-    if (r.hull_depth) j["hull_depth"] = *r.hull_depth;
-    if (r.depth_bounds) j["depth_bounds"] = *r.depth_bounds;
-    if (r.confirmed) j["confirmed"] = *r.confirmed;
-    if (r.pieces) j["pieces"] = *r.pieces;
-    if (r.at) j["at"] = {r.at->x() + 0.0, r.at->y() + 0.0, r.at->z() + 0.0};
-    if (!r.reason.empty()) j["reason"] = r.reason;
-  }
-  if (r.clearance_min && r.status != Status::kError) {
-    json c = {{"min", *r.clearance_min}};
-    if (r.distance) c["distance"] = *r.distance;
-    j["clearance"] = c;
-  }
-  if (r.motion && r.status != Status::kError) {
-    const MotionTrace& m = *r.motion;
-    json mo = {{"steps", m.steps}, {"max_depth", m.max_depth}, {"t_max_depth", m.t_max_depth}};
-    if (m.min_distance) {
-      mo["min_distance"] = *m.min_distance;
-      mo["t_min_distance"] = m.t_min_distance;
-    }
-    if (!m.series.empty()) {
-      json ser = json::array();
-      for (const auto& [t, v] : m.series) ser.push_back({t, v});
-      mo["series"] = ser;
-    }
-    j["motion"] = mo;
-  }
-  j["method"] = r.method;
-  if (!r.fallback.empty()) j["fallback"] = r.fallback;
-  if (!r.warnings.empty()) j["warnings"] = r.warnings;
-  j["stats"] = {{"local_solves", r.stats.local_solves},
-                {"distinct_optima", r.stats.distinct_optima},
-                {"alpha_evaluations", r.stats.alpha_evaluations},
-                {"ipopt_calls", r.stats.ipopt_calls},
-                {"ipopt_iterations", r.stats.ipopt_iterations},
-                {"ipopt_failures", r.stats.ipopt_failures},
-                {"stop_reason", stop_reason_name(r.stats.stop_reason)}};
-  j["time_ms"] = r.time_ms;
-  if (r.reused) j["reused"] = true;
-  return j;
+  return pair_to_report(r, parts[r.a].id, parts[r.b].id);
 }
 
 json shard_json(const ShardManifest& m) {
@@ -157,17 +81,14 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
   json pairs = json::array();
   for (const PairResult& p : r.pairs) pairs.push_back(pair_json(p, r.parts));
   const SolverSettings& s = ctx.solver;
-  json method = {{"name", method_name(s.method)}, {"seed", s.seed}};
-  if (s.method == Method::kMlsl)
-    method.update({{"samples", s.samples},
-                   {"reduced", s.reduced},
-                   {"sigma", s.sigma},
-                   {"tau", s.tau},
-                   {"link_scale", s.link_scale}});
-  if (s.method == Method::kMlslPaper)
-    method.update({{"N", s.paper_n}, {"M", s.paper_m}, {"sigma", s.sigma}, {"tau", s.tau}});
-  if (s.method == Method::kGrid) method["grid"] = s.grid;
-  if (s.method == Method::kGsLocal) method["gs_local"] = s.gs_local;
+  json method = json::object();
+  for_each_setting(s, [&](const Setting& setting, const auto& value) {
+    if (!setting.reported_for(s.method)) return;
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Method>)
+      method[setting.report_key] = method_name(value);
+    else
+      method[setting.report_key] = value;
+  });
   json doc = {{"tool", {{"name", "pdcheck"}, {"version", PDCHECK_VERSION}}},
               {"report_version", 1},
               {"scene", ctx.scene_path},

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "batch/run_result.h"
+#include "results/summary.h"
 
 namespace pd {
 
@@ -16,18 +17,7 @@ struct ReportContext {
   double load_seconds = 0.0;  ///< reading and parsing the scene (before run_scene)
 };
 
-/// Counts per status, parts that failed, and the exit code they imply.
-struct Summary {
-  long parts = 0, part_errors = 0, all_pairs = 0, culled = 0, candidates = 0;
-  long unchecked = 0;  ///< pairs of an unusable part, never formed
-  long separated = 0, false_positive = 0, interference = 0, error = 0;
-  long clearance_violation = 0;
-  long undecided = 0;  ///< pairs whose depth bracket straddles the tolerance
-  bool clearance_checked = false;
-  /// 3 if anything was unchecked or undecided, else 1 on interference or clearance violation, else
-  /// 0
-  int exit_code() const;
-};
+/// The run's counts (results/summary.h).
 Summary summarize(const RunResult& r);
 
 nlohmann::ordered_json pair_json(const PairResult& r, const std::vector<Part>& parts);

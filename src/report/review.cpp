@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "batch/fingerprint.h"
+#include "results/fingerprint.h"
 
 namespace pd {
 
@@ -114,7 +114,7 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
   }
   const bool stale = std::any_of(rv.suppression_issues.begin(), rv.suppression_issues.end(),
                                  [](const SuppressionIssue& i) { return i.fails; });
-  rv.exit_code = incomplete ? 3 : (rv.failing > 0 || stale) ? 1 : 0;
+  rv.exit_code = run_exit_code(incomplete, rv.failing > 0 || stale);
   return rv;
 }
 

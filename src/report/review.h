@@ -11,6 +11,7 @@
 #include "report/baseline.h"
 #include "report/fail_on.h"
 #include "report/suppressions.h"
+#include "results/exit_code.h"
 
 namespace pd {
 
@@ -50,7 +51,8 @@ struct Review {
   std::vector<SuppressionIssue> suppression_issues;
   long state_count[5] = {0, 0, 0, 0, 0};  ///< by BaselineState, gone ones included
   long suppressed = 0, failing = 0;
-  int exit_code = 0;  ///< 3 incomplete, else 1 if a finding fails or a suppression is stale, else 0
+  /// Incomplete wins, else a finding that fails or a stale suppression (run_exit_code).
+  ExitCode exit_code = kExitClean;
 };
 
 /// One pair alone (also for pairs streamed as they finish).

@@ -5,8 +5,8 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
-#include "batch/fingerprint.h"
 #include "report/json_input.h"
+#include "results/fingerprint.h"
 
 namespace pd {
 

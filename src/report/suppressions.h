@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/pair_result.h"
+#include "results/pair_result.h"
 
 namespace pd {
 

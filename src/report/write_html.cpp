@@ -16,7 +16,7 @@
 #include "report/html_assets.h"  // generated from src/report/html/ (CMakeLists.txt)
 #include "report/html_geometry.h"
 #include "report/markup_escape.h"
-#include "report/pair_from_json.h"
+#include "results/codec.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -136,7 +136,7 @@ std::string pair_sentence(const json& p, const std::string& units, double tolera
     std::vector<Part> two(2);
     two[0].id = p.at("a").get<std::string>();
     two[1].id = p.at("b").get<std::string>();
-    return finding_text(pair_from_json(p, 0, 1), two, PairReview{}, units, tolerance);
+    return finding_text(pair_from_report(p, 0, 1), two, PairReview{}, units, tolerance);
   } catch (const std::exception&) {
     return "";
   }

@@ -182,7 +182,8 @@ std::string render_sarif(const ReportInput& in) {
          {"message",
           {{"text", in.review_options.suppressions->path + " " + i.entry->where + " (" +
                         i.entry->a + " / " + i.entry->b + "): " + i.kind + ": " + i.detail}}}});
-  json invocation = {{"executionSuccessful", rv.exit_code != 3}, {"exitCode", rv.exit_code}};
+  json invocation = {{"executionSuccessful", rv.exit_code != kExitIncomplete},
+                     {"exitCode", rv.exit_code}};
   if (!notes.empty()) invocation["toolExecutionNotifications"] = notes;
 
   json driver = {{"name", "pdcheck"},

@@ -1,4 +1,6 @@
-// The outcome of checking one pair of parts.
+// The outcome of checking one pair of parts: made by the batch layer, written
+// and read back by the report layer. Its fields are described once, in
+// results/pair_fields.h, and serialised by one codec (results/codec.h).
 #pragma once
 
 #include <array>
@@ -23,7 +25,10 @@ enum class Status {
   kClearanceViolation,
   kUndecided
 };
+/// The report's name of a status ("false_positive", ...).
 const char* status_name(Status s);
+/// The status of a report name (throws std::invalid_argument for an unknown one).
+Status status_from_name(const std::string& name);
 /// Not decided against the tolerance: an error, or an undecided bracket.
 inline bool not_decided(Status s) {
   return s == Status::kError || s == Status::kUndecided;
@@ -39,6 +44,9 @@ struct MotionTrace {
   std::vector<std::pair<double, double>> series;  ///< (t, s(t)), when the scene asks
 };
 
+/// Adding a field: declare it here and describe it once in for_each_field
+/// (results/pair_fields.h); the worker messages, the refinement cache, the
+/// report and its reader (merge, --reuse) all follow (tests/test_results_codec.cpp).
 struct PairResult {
   int a = -1, b = -1;  ///< part indices
   Status status = Status::kError;

@@ -1,4 +1,4 @@
-#include "batch/fingerprint.h"
+#include "results/fingerprint.h"
 
 #include "hash.h"
 
