@@ -54,7 +54,7 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
         static_cast<double>(tol::kLocalPlanesMaxPlanes),
         static_cast<double>(tol::kLocalPlanesMaxChoices), tol::kLocalPlanesMaxKappa,
         tol::kLocalPlanesFirstKappa, static_cast<double>(tol::kLocalPlanesMaxWedges),
-        static_cast<double>(tol::kLocalPlanesWedgeTries),
+        static_cast<double>(tol::kLocalPlanesWedgeTries), tol::kLocalPlanesFacingCos,
         static_cast<double>(tol::kDecomposeMaxWork), static_cast<double>(tol::kDecomposeSamples)})
     h.add(x);
   return h.hex();
