@@ -3,11 +3,13 @@
 
 #include <stdexcept>
 
+#include "user_error.h"
+
 namespace pd {
 
 /// The message names the output (option and path, or standard output) and the reason.
-struct OutputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct OutputError : UserError {
+  using UserError::UserError;
 };
 
 }  // namespace pd

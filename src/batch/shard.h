@@ -22,13 +22,14 @@
 #include "batch/run_result.h"
 #include "geometry/aabb.h"
 #include "scene/scene.h"
+#include "user_error.h"
 
 namespace pd {
 
 /// Bad --shard / --shard auto input (exit 2).
-class ShardError : public std::runtime_error {
+class ShardError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 /// "K/N" with 1 <= K <= N (throws ShardError naming the problem).

@@ -4,11 +4,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "user_error.h"
+
 namespace pd {
 
 /// The message names the file and the JSON path: "s.json: $.suppressions[2].reason: …".
-struct ReportInputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct ReportInputError : UserError {
+  using UserError::UserError;
 };
 
 }  // namespace pd

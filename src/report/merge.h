@@ -11,14 +11,15 @@
 #include "batch/run_result.h"
 #include "report/report_json.h"
 #include "report/review.h"
+#include "user_error.h"
 
 namespace pd {
 
 /// Missing, duplicated or mismatched shards, or a file that is no shard report:
 /// exit 2, the message names the files and what differs.
-class MergeError : public std::runtime_error {
+class MergeError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 struct ShardReport {

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "batch/run_result.h"
+#include "exit_code.h"
 #include "report/baseline.h"
 #include "report/fail_on.h"
 #include "report/suppressions.h"
-#include "results/exit_code.h"
 
 namespace pd {
 

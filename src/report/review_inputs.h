@@ -10,6 +10,7 @@
 #include "report/baseline.h"
 #include "report/review.h"
 #include "report/suppressions.h"
+#include "user_error.h"
 
 namespace pd {
 
@@ -20,8 +21,8 @@ struct ReviewArgs {
 };
 
 /// A combination that cannot be honoured (--fail-on new without --baseline): exit 2.
-struct ReviewArgsError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct ReviewArgsError : UserError {
+  using UserError::UserError;
 };
 
 /// The files read and the options that point into them. Not copyable: `options`

@@ -10,12 +10,13 @@
 
 #include "report/writer.h"
 #include "scene/parts.h"
+#include "user_error.h"
 
 namespace pd {
 
 /// The page cannot be made (its inlined library is missing or unreadable).
-struct HtmlAssetError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct HtmlAssetError : UserError {
+  using UserError::UserError;
 };
 
 /// Reads the inlined scripts (three.js and its orbit controls, from Debian's

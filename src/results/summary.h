@@ -1,7 +1,7 @@
 // A run's counts and the exit code they imply (docs/report-format.md, "summary").
 #pragma once
 
-#include "results/exit_code.h"
+#include "exit_code.h"
 #include "results/pair_result.h"
 
 namespace pd {

@@ -14,14 +14,15 @@
 #include "geometry/motion.h"
 #include "geometry/types.h"
 #include "solve/settings.h"
+#include "user_error.h"
 
 namespace pd {
 
 /// An unusable scene or bad usage (exit code 2). The message names the file and
 /// the JSON path of the offending field.
-class SceneError : public std::runtime_error {
+class SceneError : public UserError {
  public:
-  using std::runtime_error::runtime_error;
+  using UserError::UserError;
 };
 
 /// How a part is cut into convex pieces (docs/scene-format.md, docs/solver.md):

@@ -1,4 +1,5 @@
-// pdcheck's exit codes (README, docs/ci.md) and the one rule that orders them.
+// pdcheck's exit codes (README, docs/ci.md) and the one rule that orders them:
+// below every layer, as every layer's user errors carry one (user_error.h).
 #pragma once
 
 namespace pd {

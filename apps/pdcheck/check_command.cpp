@@ -1,0 +1,158 @@
+#include "check_command.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+
+#include "report/report_json.h"
+#include "report/review_json.h"
+#include "report/write_html.h"
+#include "report/writer.h"
+#include "say.h"
+
+namespace {
+
+// A number option within [lo, hi] (NaN is not), else `message` (CLI11 puts the
+// option's name before it). `shown`: the --help text after the type.
+CLI::Validator in_range(double lo, double hi, const std::string& message,
+                        const std::string& shown = "") {
+  return CLI::Validator(
+      [=](std::string& text) {
+        double x = 0.0;
+        const bool number = CLI::detail::lexical_cast(text, x);
+        return number && x >= lo && x <= hi ? std::string() : message;
+      },
+      shown);
+}
+
+}  // namespace
+
+CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
+  pd::CheckArgs& a = args_;
+  a.jobs = 0;
+  app.add_option("scene", a.scene,
+                 "scene JSON file, or - for standard input (a scene JSON or "
+                 "a part list: one mesh path per line, or id<TAB>path)");
+  app.add_option("--tolerance", a.tolerance,
+                 "depth at or below which an interference is a discretization false positive "
+                 "(scene units; overrides the scene)");
+  app.add_option("--units", a.units, "length unit of the scene and the report: mm, cm, m, in, ft");
+  app.add_option("--method", a.method,
+                 "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
+  app.add_option("--pieces", a.pieces,
+                 "convex pieces of every mesh part, overriding the scene: auto (default: the "
+                 "hull, refined where the hull stage flags a nonconvex part), hull (never "
+                 "refined), meshes, decompose");
+  app.add_option("--cache", a.cache_dir,
+                 "directory of cached decompositions (default: $XDG_CACHE_HOME/pdcheck or "
+                 "~/.cache/pdcheck)");
+  app.add_flag("--no-cache", a.no_cache, "neither read nor write cached decompositions");
+  app.add_option("--seed", a.seed, "random seed of the stochastic methods (default 1)")
+      ->check(CLI::Validator(
+          [](std::string& v) { return std::string(v.rfind("-", 0) == 0 ? "must be >= 0" : ""); },
+          "UINT"));
+  app.add_option("-o,--output", output_,
+                 "write the report to this file (atomically) instead of stdout");
+  std::vector<std::string> format_names;
+  for (const auto& f : pd::report_formats()) format_names.push_back(f.name);
+  app.add_option("--format", a.format,
+                 "report format: json (one document), jsonl (a line per pair as it finishes, "
+                 "then a summary), junit or sarif")
+      ->check(CLI::IsMember(format_names));
+  app.add_option(
+         "-j,--jobs", a.jobs,
+         "worker processes for the solves, threads for parsing and hulls (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  app.add_option("--pair-timeout", a.pair_timeout,
+                 "seconds one pair may take before its worker is killed and the pair reported as "
+                 "an error (default: none)")
+      ->check(in_range(0, std::numeric_limits<double>::max(),
+                       "must be a finite number of seconds (0 = none)", "NONNEGATIVE"));
+  app.add_option("--load-timeout", a.load_timeout,
+                 "seconds one mesh file may take to read before its loader process is killed and "
+                 "its parts reported as errors (default: " +
+                     std::to_string(int(pd::kDefaultLoadTimeout)) + "; 0: none)")
+      ->check(in_range(0, 1e6, "must be a number of seconds from 0 to 1e6"));
+  app.add_option("--load-memory", a.load_memory,
+                 "MB one mesh loader process may allocate before its file is reported as an "
+                 "error (default: half the machine's memory shared among the loaders; 0: none)")
+      ->check(in_range(0, 1e9, "must be a number of MB from 0 to 1e9"));
+  app.add_flag("-q,--quiet", a.quiet, "no progress and no summary line on stderr");
+  add_ci_options(app, ci_);
+  app.add_option("--shard", shard_,
+                 "K/N: check shard K of N (a deterministic, cost-balanced share of the pairs; "
+                 "loads only their parts), or auto (CI_NODE_INDEX/CI_NODE_TOTAL, or "
+                 "SLURM_ARRAY_TASK_ID with --shard-total); merge with pdcheck merge "
+                 "(docs/scale-out.md)");
+  app.add_option("--shard-total", a.shard_total, "--shard auto under Slurm: the array's size N");
+  app.add_option("--shard-base", a.shard_base,
+                 "--shard auto under Slurm: the array's first index (default "
+                 "SLURM_ARRAY_TASK_MIN, else 0)");
+  app.add_option("--reuse", a.reuse,
+                 "an earlier JSON report: pairs whose parts and settings are unchanged keep "
+                 "their results (marked reused) instead of being solved again");
+}
+
+int CheckCommand::run(const pd::FaultHooks& faults) {
+  pd::CheckArgs& a = args_;
+  if (a.scene.empty())
+    throw pd::UserError(
+        "a scene is required (a scene JSON file, or - for standard input); see --help");
+  if (app_.count("--output")) a.output = output_;
+  if (app_.count("--shard")) a.shard = shard_;
+  a.extra = extra_output_paths(app_, ci_);
+  a.review = ci_.review;
+  a.jobs = jobs();
+  pd::RunConfig config;
+  pd::resolve_run_config(
+      a, std::cin, [](const char* v) { return std::getenv(v); }, config);
+  pd::RunOptions opt = config.options;
+  opt.reuse = config.prior ? &*config.prior : nullptr;
+  opt.faults = faults;
+  if (!a.quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
+  const pd::ReviewOptions& review_opt = config.review.options;
+  const bool jsonl = a.format == "jsonl";
+  if (jsonl && !config.out_file) {
+    // A failed write (the reader gone) throws: the run stops and its workers end.
+    opt.on_pair = [&review_opt](const pd::PairResult& r, const std::vector<pd::Part>& parts) {
+      auto j = pd::pair_json(r, parts);
+      // The bar does not show in a pair line: any will do before the run's end.
+      pd::add_pair_review(j, pd::review_pair(r, parts, review_opt, pd::FailOn::kNone));
+      pd::write_stdout(j.dump() + "\n");
+    };
+  }
+  pd::RunResult result;
+  try {
+    result = pd::run_scene(config.scene, opt);
+  } catch (const pd::OutputError& e) {
+    throw pd::UserError(std::string(e.what()) + "; the run stopped", e.exit_code());
+  }
+  const pd::Summary summary = pd::summarize(result);
+  const pd::ReportContext ctx{config.scene.path, config.scene.units.value_or("mm"),
+                              *config.scene.tolerance, opt.solver, config.load_seconds};
+  const pd::Review review = pd::review_run(result, review_opt, summary.incomplete());
+  const pd::ReportInput report{ctx, result, review, review_opt};
+  // Streamed lines are out already; a file gets the same lines in report order.
+  const std::string text = jsonl && !config.out_file
+                               ? pd::jsonl_tail(report) + "\n"
+                               : pd::find_report_format(a.format)->render(report);
+  if (config.out_file)
+    pd::write_output_file(*config.out_file, text);
+  else
+    pd::write_stdout(text);
+  pd::write_extra_outputs(config.extra, report, [&] { return pd::render_html(report); });
+  for (const auto& p : result.parts) {
+    if (!a.quiet)
+      for (const auto& w : p.warnings) say("warning", "part \"" + p.id + "\": " + w);
+    if (p.error) say("error", "part \"" + p.id + "\": " + *p.error);
+  }
+  if (!a.quiet) {
+    say_review(report);
+    std::cerr << pd::summary_line(summary, result.seconds) << "\n";
+    if (result.reused)
+      std::cerr << "pdcheck: " << result.reused << " pair(s) reused from " << a.reuse << "\n";
+  }
+  // A shard's verdict is the merge's: its exit code says its report is written.
+  return config.shard ? pd::kExitClean : review.exit_code;
+}

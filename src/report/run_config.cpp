@@ -1,0 +1,117 @@
+#include "report/run_config.h"
+
+#include <chrono>
+#include <cmath>
+#include <istream>
+#include <iterator>
+
+#include "cache_file.h"
+#include "report/prior_report.h"
+#include "results/fingerprint.h"
+#include "scene/units.h"
+
+namespace pd {
+
+namespace {
+
+std::optional<ShardSpec> resolve_shard(const CheckArgs& a,
+                                       const std::function<const char*(const char*)>& getenv) {
+  std::optional<ShardSpec> shard;
+  if (a.shard && *a.shard == "auto") {
+    shard = shard_from_environment(getenv, a.shard_total, a.shard_base);
+  } else {
+    if (a.shard_total || a.shard_base)
+      throw ShardError("--shard-total and --shard-base go with --shard auto");
+    if (a.shard) shard = parse_shard(*a.shard);
+  }
+  if (!shard) return shard;
+  if (a.format != "json")
+    throw ShardError("--shard writes a JSON report (--format json) for pdcheck merge");
+  const std::pair<const char*, bool> whole_run[] = {
+      {"--baseline", !a.review.baseline.empty()},
+      {"--suppressions", !a.review.suppressions.empty()},
+      {"--write-suppressions", a.extra.write_suppressions.has_value()},
+      {"--junit", a.extra.junit.has_value()},
+      {"--sarif", a.extra.sarif.has_value()},
+      {"--html", a.extra.html.has_value()}};
+  for (const auto& [option, given] : whole_run)
+    if (given)
+      throw ShardError(std::string("--shard: ") + option +
+                       " applies to the whole run, not to one shard");
+  return shard;
+}
+
+// The scene with the command line's overrides over it.
+SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSettings& solver) {
+  std::optional<std::string> units;
+  if (!a.units.empty()) {
+    if (!unit_in_mm(a.units))
+      throw SceneError("--units: unknown unit \"" + a.units + "\" (use " + kUnitNames + ")");
+    units = a.units;
+  }
+  SceneSpec scene;
+  if (a.scene == "-") {
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    scene = parse_stdin_scene(text, units, a.jobs);
+  } else {
+    scene = load_scene_file(a.scene, units, a.jobs, /*keep_vertices=*/!shard);
+  }
+  if (a.tolerance) {
+    if (!(*a.tolerance > 0 && std::isfinite(*a.tolerance)))
+      throw SceneError("--tolerance: must be a finite number > 0");
+    scene.tolerance = *a.tolerance;
+  }
+  if (!scene.tolerance)
+    throw SceneError(scene.path + ": no tolerance: give \"tolerance\" in the scene or --tolerance");
+  scene.solver.apply(solver);
+  if (!a.method.empty()) {
+    const auto m = parse_method(a.method);
+    if (!m)
+      throw SceneError("--method: unknown method \"" + a.method +
+                       "\" (mlsl, mlsl-paper, gs-local, grid, exact)");
+    solver.method = *m;
+  }
+  if (a.seed) solver.seed = *a.seed;
+  if (!a.pieces.empty()) {
+    const auto p = parse_pieces(a.pieces);
+    if (!p)
+      throw SceneError("--pieces: unknown value \"" + a.pieces + "\" (use " + kPiecesNames + ")");
+    override_pieces(scene, *p);
+  }
+  return scene;
+}
+
+}  // namespace
+
+void resolve_run_config(const CheckArgs& a, std::istream& in,
+                        const std::function<const char*(const char*)>& getenv, RunConfig& out) {
+  out.shard = resolve_shard(a, getenv);
+  // Every output path is checked before the run.
+  if (a.output) out.out_file = check_output_file("-o", *a.output);
+  out.extra = check_extra_outputs(a.extra);
+  const auto load_start = std::chrono::steady_clock::now();
+  SolverSettings solver;
+  out.scene = load_scene(a, out.shard.has_value(), in, solver);
+  // The CI inputs are read before the run: a malformed file costs no solve.
+  if (!a.reuse.empty()) out.prior = load_prior_report(a.reuse);
+  load_review_inputs(a.review, *out.scene.tolerance, out.review);
+  if (out.scene.pairs) {
+    out.review.options.listed.emplace();
+    for (const auto& [x, y] : *out.scene.pairs)
+      out.review.options.listed->insert(pair_fingerprint(x, y));
+  }
+  out.load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+  RunOptions& o = out.options;
+  o.solver = solver;
+  o.tolerance = *out.scene.tolerance;
+  o.jobs = a.jobs;
+  o.pair_timeout = a.pair_timeout;
+  o.load_timeout = a.load_timeout;
+  o.load_memory_mb = a.load_memory;
+  o.quiet = a.quiet;
+  o.shard = out.shard;
+  if (!a.no_cache) o.cache_dir = a.cache_dir.empty() ? default_cache_dir() : a.cache_dir;
+}
+
+}  // namespace pd
