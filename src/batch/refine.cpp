@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "batch/decomposition_cache.h"
+#include "batch/pair_workers.h"
 #include "batch/progress.h"
 #include "batch/refine_cache.h"
 #include "geometry/decompose.h"
@@ -376,31 +377,14 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     piece_parts[p] = std::move(q);
   }
   std::vector<std::optional<PairResult>> piece_results(flagged.size());
-  std::vector<size_t> order(solve.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  auto cost = [&](size_t k) {
+  std::vector<size_t> which(solve.size());
+  for (size_t k = 0; k < which.size(); ++k) which[k] = k;
+  auto job = [&](size_t k) {
     const auto [a, b] = pairs[flagged[solve[k]]];
-    return piece_parts[a]->hull_vertex_count() * piece_parts[b]->hull_vertex_count();
+    return PairJob{a, b, &*piece_parts[a], &*piece_parts[b]};
   };
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t x, size_t y) { return cost(x) > cost(y); });
-  std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
-  Progress progress(solve.size(), options.quiet, "piece pairs");
-  auto task = [&](size_t k) {
-    if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
-    const auto [a, b] = pairs[flagged[solve[k]]];
-    return encode_pair_result(solve_part_pair(a, *piece_parts[a], b, *piece_parts[b],
-                                              options.solver, options.tolerance, *ipopt,
-                                              checks(a, b)));
-  };
-  auto done = [&](size_t k, bool ok, const std::string& payload) {
-    const auto [a, b] = pairs[flagged[solve[k]]];
-    piece_results[solve[k]] =
-        pair_result_from_worker(ok, payload, a, b, method_name(options.solver.method));
-    progress.tick();
-  };
-  run_work_queue(order, {options.jobs, options.pair_timeout, options.on_warning}, task, done);
-  progress.finish();
+  solve_pairs_in_workers(which, job, options, checks, "piece pairs",
+                         [&](size_t k, PairResult r) { piece_results[solve[k]] = std::move(r); });
 
   // 5. Decide.
   bool warned = false;  // a cache that cannot be written is said once

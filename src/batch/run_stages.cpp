@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "batch/broad_phase.h"
+#include "batch/pair_workers.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
 #include "work_queue.h"
@@ -133,35 +134,21 @@ void solve_pairs(const std::vector<Part>& parts, const std::vector<std::pair<int
                  std::vector<size_t> to_solve, const RunOptions& options,
                  const std::function<PairChecks(int, int)>& checks,
                  std::vector<PairResult>& results) {
-  std::vector<long> hull_size(parts.size());
-  for (size_t k = 0; k < parts.size(); ++k) hull_size[k] = parts[k].hull_vertex_count();
-  auto cost = [&](size_t k) { return hull_size[pairs[k].first] * hull_size[pairs[k].second]; };
-  std::stable_sort(to_solve.begin(), to_solve.end(),
-                   [&](size_t x, size_t y) { return cost(x) > cost(y); });
-
-  Progress progress(to_solve.size(), options.quiet, "pairs");
-  std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
-  auto task = [&](size_t k) {
-    if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
+  auto job = [&](size_t k) {
     const auto [a, b] = pairs[k];
-    return encode_pair_result(solve_part_pair(a, parts[a], b, parts[b], options.solver,
-                                              options.tolerance, *ipopt, checks(a, b)));
+    return PairJob{a, b, &parts[a], &parts[b]};
   };
-  auto done = [&](size_t k, bool ok, const std::string& payload) {
-    PairResult r = pair_result_from_worker(ok, payload, pairs[k].first, pairs[k].second,
-                                           method_name(options.solver.method));
+  auto done = [&](size_t k, PairResult r) {
     note_hull_stage(r, parts[r.a], parts[r.b]);
     results[k] = r;
     if (options.on_pair && !needs_refinement(r, parts[r.a], parts[r.b])) options.on_pair(r, parts);
-    progress.tick();
   };
-  QueueOptions queue{options.jobs, options.pair_timeout, options.on_warning};
+  std::function<void(size_t)> before_task;
   if (options.faults.before_pair_solve)
-    queue.before_task = [&](size_t k) {
+    before_task = [&](size_t k) {
       options.faults.before_pair_solve(parts[pairs[k].first], parts[pairs[k].second]);
     };
-  run_work_queue(to_solve, queue, task, done);
-  progress.finish();
+  solve_pairs_in_workers(std::move(to_solve), job, options, checks, "pairs", done, before_task);
 }
 
 }  // namespace pd
