@@ -51,10 +51,9 @@ void same(const std::vector<ShardReport>& shards, const std::string& what,
   }
 }
 
-}  // namespace
-
-Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewOptions& review) {
-  if (shards.empty()) throw MergeError("no shard reports given");
+// Every shard of the same run: tool, hashes, shard count, units, tolerance,
+// method, checks and totals.
+void check_same_run(const std::vector<ShardReport>& shards) {
   try {
     same(shards, "the tool version", [](const json& d) { return d.at("tool").at("version"); });
     same(shards, "the scene content hash ($.hashes.scene)",
@@ -74,10 +73,11 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   } catch (const nlohmann::json::exception& e) {
     throw MergeError(std::string("not a shard report: ") + e.what());
   }
-  const json& first = shards[0].doc;
-  const long total = first["shard"]["total"].get<long>();
-  // Each shard once: a duplicated shard would count its pairs twice, a missing one
-  // would pass its pairs as clean.
+}
+
+// Each shard once: a duplicated shard would count its pairs twice, a missing one
+// would pass its pairs as clean.
+void check_each_shard_once(const std::vector<ShardReport>& shards, long total) {
   std::map<long, std::string> by_index;
   for (const ShardReport& s : shards) {
     const long k = s.doc["shard"].at("index").get<long>();
@@ -92,9 +92,10 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   if (!missing.empty())
     throw MergeError("shard(s) " + missing + " of " + std::to_string(total) + " missing (" +
                      std::to_string(shards.size()) + " of " + std::to_string(total) + " given)");
+}
 
-  // Parts: each from the shard that owns it, in scene order.
-  const long n = first["shard"]["parts_total"].get<long>();
+// The scene's parts, each from the shard that owns it, in scene order.
+std::vector<json> owned_parts(const std::vector<ShardReport>& shards, long n) {
   std::vector<json> parts(n);
   std::vector<std::string> owner(n);
   for (const ShardReport& s : shards) {
@@ -128,15 +129,22 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
         parts[i] = p;
     }
   }
-  std::map<std::string, int> id_index;
-  for (long k = 0; k < n; ++k) id_index[parts[k].at("id").get<std::string>()] = static_cast<int>(k);
+  return parts;
+}
 
-  // Pairs: every shard's, in the unsharded run's (a, b) order.
-  struct Entry {
-    int a, b;
-    const json* pair;
-    const std::string* path;
-  };
+struct Entry {
+  int a, b;
+  const json* pair;
+  const std::string* path;
+};
+
+// Every shard's pairs, in the unsharded run's (a, b) order; a pair twice is refused.
+std::vector<Entry> pair_entries(const std::vector<ShardReport>& shards,
+                                const std::vector<json>& parts) {
+  std::map<std::string, int> id_index;
+  for (size_t k = 0; k < parts.size(); ++k)
+    id_index[parts[k].at("id").get<std::string>()] = static_cast<int>(k);
+
   std::vector<Entry> entries;
   for (const ShardReport& s : shards)
     for (const json& p : s.doc.at("pairs")) {
@@ -156,12 +164,16 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
                        entries[k].pair->at("b").dump() + " checked by both " +
                        *entries[k - 1].path + " and " + *entries[k].path);
 
-  // The run as one run would have it: its counts, then its review.
-  Merged out;
-  RunResult& run = out.run;
+  return entries;
+}
+
+// The parts (id, source, vertices, warnings, error; no geometry) and pairs of
+// the merged run, for its review and the other writers.
+RunResult merged_run(const json& first, const std::vector<json>& parts,
+                     const std::vector<Entry>& entries) {
+  RunResult run;
   run.simulated = first.at("simulated").get<std::vector<std::string>>();
-  for (long k = 0; k < n; ++k) {
-    const json& j = parts[k];
+  for (const json& j : parts) {
     Part p;
     p.id = j.at("id").get<std::string>();
     p.source = j.value("source", "");
@@ -171,24 +183,64 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
     run.parts.push_back(std::move(p));
   }
   for (const Entry& e : entries) {
-    PairResult r;
     try {
-      r = pair_from_report(*e.pair, e.a, e.b);
+      run.pairs.push_back(pair_from_report(*e.pair, e.a, e.b));
     } catch (const std::exception& ex) {
       throw MergeError(*e.path + ": pair " + e.pair->at("a").dump() + ", " +
                        e.pair->at("b").dump() + ": " + ex.what());
     }
-    run.pairs.push_back(std::move(r));
   }
+  return run;
+}
+
+// The summary as one run counts it: from the scene's totals, the pairs of
+// unusable parts are unchecked and the rest culled or checked (a pair list has
+// no broad phase).
+Summary merged_summary(const json& first, const RunResult& run, long n) {
   Summary s = summarize(run);
   s.all_pairs = first["shard"]["pairs_total"].get<long>();
-  const bool listed = first["shard"].value("listed", false);
-  if (!listed) {
+  if (!first["shard"].value("listed", false)) {
     const long usable = n - s.part_errors;
     const long usable_pairs = pair_count(usable);
     s.unchecked = s.all_pairs - usable_pairs;
     s.culled = usable_pairs - s.candidates;
   }
+  return s;
+}
+
+// The shards' times summed into the merged report's `seconds` and
+// `stage_seconds`; returns the seconds.
+double add_shard_times(const std::vector<ShardReport>& shards, json& doc) {
+  double seconds = 0.0;
+  json stages = shards[0].doc.at("stage_seconds");
+  for (auto& [key, v] : stages.items()) v = 0.0;
+  for (const ShardReport& sh : shards) {
+    seconds += sh.doc.at("seconds").get<double>();
+    for (auto& [key, v] : stages.items())
+      v = v.get<double>() + sh.doc["stage_seconds"].value(key, 0.0);
+  }
+  doc["seconds"] = seconds;
+  doc["stage_seconds"] = stages;
+  return seconds;
+}
+
+}  // namespace
+
+Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewOptions& review) {
+  if (shards.empty()) throw MergeError("no shard reports given");
+  check_same_run(shards);
+  const json& first = shards[0].doc;
+  check_each_shard_once(shards, first["shard"]["total"].get<long>());
+  const long n = first["shard"]["parts_total"].get<long>();
+  const std::vector<json> parts = owned_parts(shards, n);
+  const std::vector<Entry> entries = pair_entries(shards, parts);
+
+  // The run as one run would have it: its counts, then its review.
+  Merged out;
+  out.run = merged_run(first, parts, entries);
+  RunResult& run = out.run;
+  const Summary s = merged_summary(first, run, n);
+  const bool listed = first["shard"].value("listed", false);
   out.review_options = review;
   out.review_options.tolerance = first.at("tolerance").get<double>();
   if (listed) {
@@ -203,17 +255,8 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   out.doc = first;
   out.doc.erase("shard");
   out.doc["summary"] = summary_json(s);
-  double seconds = 0.0;
-  json stages = first.at("stage_seconds");
-  for (auto& [key, v] : stages.items()) v = 0.0;
-  for (const ShardReport& sh : shards) {
-    seconds += sh.doc.at("seconds").get<double>();
-    for (auto& [key, v] : stages.items())
-      v = v.get<double>() + sh.doc["stage_seconds"].value(key, 0.0);
-  }
+  const double seconds = add_shard_times(shards, out.doc);
   run.seconds = seconds;
-  out.doc["seconds"] = seconds;
-  out.doc["stage_seconds"] = stages;
   out.doc["parts"] = json(parts);
   json pairs = json::array();
   for (size_t k = 0; k < entries.size(); ++k) {
