@@ -251,6 +251,63 @@ void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
   });
 }
 
+// Step 0 of refine_nonconvex_pairs: the flagged pairs found in the refinement
+// cache, taken out of `flagged`; `keys` gets the key of each pair left in it.
+std::vector<std::pair<size_t, StoredRefinement>> take_cached(
+    const std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
+    const std::vector<PairResult>& results, const RunOptions& options,
+    const std::function<PairChecks(int, int)>& checks, std::vector<size_t>& flagged,
+    std::vector<std::string>& keys) {
+  std::vector<std::pair<size_t, StoredRefinement>> hits;
+  if (options.cache_dir.empty()) return hits;
+  std::vector<size_t> misses;
+  for (size_t k : flagged) {
+    const auto [a, b] = pairs[k];
+    std::string key = refinement_key(parts[a], parts[b], results[k], options, checks(a, b));
+    if (auto hit = read_cached_refinement(options.cache_dir, key)) {
+      hits.emplace_back(k, std::move(*hit));
+    } else {
+      misses.push_back(k);
+      keys.push_back(std::move(key));
+    }
+  }
+  flagged.swap(misses);
+  return hits;
+}
+
+// Step 2 for one pair whose surfaces meet: the deepest point of either surface
+// inside the other (into `v`: a lower bound of any separating move that needs
+// no inside of the surface's own part), then the overlap thickness; its time
+// goes to the pair's, and `why_not` says what an open surface lacks.
+ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b, double tolerance,
+                                  PairResult& r, MeshVerdict& v, std::string& why_not) {
+  const auto t0 = Clock::now();
+  const SurfaceDepth ab = surface_depth(a.mesh(), b);
+  const SurfaceDepth ba = surface_depth(b.mesh(), a);
+  v.vertex_depth = std::max(ab.depth, ba.depth);
+  v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
+  ThicknessResult t = overlap_thickness(a, b, tolerance, r.depth);
+  r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  why_not = a.closed() ? b.note() : a.note();
+  return t;
+}
+
+// The used parts' pieces (their decomposition's, else their own) as
+// pieces-only parts, for the worker pool.
+std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& parts,
+                                                   const std::vector<int>& used) {
+  std::vector<std::optional<Part>> out(parts.size());
+  for (size_t p = 0; p < parts.size(); ++p) {
+    if (!used[p]) continue;
+    Part q;
+    q.id = parts[p].id;
+    q.box = parts[p].box;
+    q.pieces = parts[p].decomposition ? parts[p].decomposition->pieces : parts[p].pieces;
+    out[p] = std::move(q);
+  }
+  return out;
+}
+
 }  // namespace
 
 void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
@@ -267,22 +324,9 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   // taken from the cache (batch/refine_cache.h): none of the steps below runs
   // for them. Their parts are still decomposed (from the decomposition cache)
   // when the pair needed pieces, so the report's part fields are the same.
-  std::vector<std::pair<size_t, StoredRefinement>> hits;
   std::vector<std::string> keys;
-  if (!options.cache_dir.empty()) {
-    std::vector<size_t> misses;
-    for (size_t k : flagged) {
-      const auto [a, b] = pairs[k];
-      std::string key = refinement_key(parts[a], parts[b], results[k], options, checks(a, b));
-      if (auto hit = read_cached_refinement(options.cache_dir, key)) {
-        hits.emplace_back(k, std::move(*hit));
-      } else {
-        misses.push_back(k);
-        keys.push_back(std::move(key));
-      }
-    }
-    flagged.swap(misses);
-  }
+  std::vector<std::pair<size_t, StoredRefinement>> hits =
+      take_cached(parts, pairs, results, options, checks, flagged, keys);
 
   // 1. The surfaces as solids: do they meet, and how deep is the deepest vertex.
   std::vector<int> used(parts.size(), 0);
@@ -336,19 +380,8 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     parallel_for(thick.size(), options.jobs, [&](size_t k) {
       const size_t n = thick[k];
       const auto [a, b] = pairs[flagged[n]];
-      const auto t0 = Clock::now();
-      // The deepest point of either surface inside the other: a lower bound of
-      // any separating move that needs no inside of the surface's own part.
-      const SurfaceDepth ab = surface_depth(solids[a]->mesh(), *solids[b]);
-      const SurfaceDepth ba = surface_depth(solids[b]->mesh(), *solids[a]);
-      MeshVerdict& v = verdicts[n];
-      v.vertex_depth = std::max(ab.depth, ba.depth);
-      v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
-      thickness[n] =
-          overlap_thickness(*solids[a], *solids[b], options.tolerance, results[flagged[n]].depth);
-      results[flagged[n]].time_ms +=
-          std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-      why_not[n] = solids[a]->closed() ? solids[b]->note() : solids[a]->note();
+      thickness[n] = measure_thickness(*solids[a], *solids[b], options.tolerance,
+                                       results[flagged[n]], verdicts[n], why_not[n]);
       progress.tick();
     });
     progress.finish();
@@ -367,15 +400,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   decompose_parts(parts, to_decompose, options);
 
   // 4. Piece pairs in the worker pool (the parts' pieces as pieces-only parts).
-  std::vector<std::optional<Part>> piece_parts(parts.size());
-  for (size_t p = 0; p < parts.size(); ++p) {
-    if (!used[p]) continue;
-    Part q;
-    q.id = parts[p].id;
-    q.box = parts[p].box;
-    q.pieces = parts[p].decomposition ? parts[p].decomposition->pieces : parts[p].pieces;
-    piece_parts[p] = std::move(q);
-  }
+  const std::vector<std::optional<Part>> piece_parts = pieces_only_parts(parts, used);
   std::vector<std::optional<PairResult>> piece_results(flagged.size());
   std::vector<size_t> which(solve.size());
   for (size_t k = 0; k < which.size(); ++k) which[k] = k;
