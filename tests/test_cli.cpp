@@ -211,3 +211,44 @@ TEST(Cli, OutputFileIsWrittenWhole) {
   EXPECT_EQ(json::parse(ss.str())["summary"]["interference"], 1);
   EXPECT_EQ(pdcheck(kDemo + " -q -o /nonexistent-dir/report.json").code, 2);
 }
+
+// Nothing to check is bad input (exit 2), not a green run: an empty part list
+// (a failed export upstream), a scene without parts, a scene whose every part
+// failed. --allow-empty accepts each.
+TEST(Cli, EmptyInputIsAnError) {
+  for (const std::string& list : {std::string(), std::string("# no parts tonight\n\n")}) {
+    const CliRun r = pdcheck("- --tolerance 0.1 -q", list);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("pdcheck: error: <stdin>: an empty part list"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("--allow-empty"), std::string::npos) << r.err;
+    EXPECT_EQ(pdcheck("- --tolerance 0.1 -q --allow-empty", list).code, 0);
+  }
+  const std::string none = write_temp("no_parts.json", R"({"tolerance": 1, "parts": []})");
+  const CliRun r = pdcheck(none + " -q");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("no_parts.json: no parts"), std::string::npos) << r.err;
+  EXPECT_EQ(pdcheck(none + " -q --allow-empty").code, 0);
+
+  const std::string failed = write_temp("all_failed.json", R"({"tolerance": 1, "parts": [
+      {"id": "a", "mesh": "no/such/a.stl"}, {"id": "b", "mesh": "no/such/b.stl"}]})");
+  const CliRun f = pdcheck(failed + " -q");
+  EXPECT_EQ(f.code, 2) << f.err;
+  EXPECT_NE(f.err.find("every part failed (2 of 2"), std::string::npos) << f.err;
+  EXPECT_EQ(json::parse(f.out)["summary"]["part_errors"], 2);  // the report names each
+  EXPECT_EQ(json::parse(f.out)["summary"]["exit_code"], 2);
+  EXPECT_EQ(pdcheck(failed + " -q --allow-empty").code, 3);  // unchecked parts
+  // One usable part is not an empty input.
+  const std::string one = write_temp("one_failed.json", R"({"tolerance": 1, "parts": [
+      {"id": "a", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]},
+      {"id": "b", "mesh": "no/such/b.stl"}]})");
+  EXPECT_EQ(pdcheck(one + " -q").code, 3);
+
+  // The merged run of shards whose every part failed is judged as the run.
+  const std::string shard = testing::TempDir() + "all_failed_shard.json";
+  ASSERT_EQ(pdcheck(failed + " -q --shard 1/1 -o " + shard).code, 0);
+  const CliRun m = pdcheck("merge " + shard + " -q");
+  EXPECT_EQ(m.code, 2) << m.err;
+  EXPECT_NE(m.err.find("merge: every part failed"), std::string::npos) << m.err;
+  EXPECT_EQ(pdcheck("merge " + shard + " -q --allow-empty").code, 3);
+}

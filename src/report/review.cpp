@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "batch/empty_input.h"
 #include "results/fingerprint.h"
 
 namespace pd {
@@ -115,6 +116,7 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
   const bool stale = std::any_of(rv.suppression_issues.begin(), rv.suppression_issues.end(),
                                  [](const SuppressionIssue& i) { return i.fails; });
   rv.exit_code = run_exit_code(incomplete, rv.failing > 0 || stale);
+  if (!options.allow_empty && every_part_failed(run)) rv.exit_code = kExitBadInput;
   return rv;
 }
 

@@ -24,6 +24,9 @@ struct ReviewOptions {
   double tolerance = 0.0;    ///< scene units: the `updated` rule
   /// The fingerprints of the scene's pair list, when it has one: other pairs were not checked.
   std::optional<std::set<std::string>> listed;
+  /// A run whose every part failed exits 3 like any incomplete run (--allow-empty,
+  /// and a shard, judged by its merge); otherwise 2: nothing was checked (batch/empty_input.h).
+  bool allow_empty = false;
 };
 
 /// One pair's review (for findings; clean and failed pairs have neither state nor suppression).
@@ -51,7 +54,8 @@ struct Review {
   std::vector<SuppressionIssue> suppression_issues;
   long state_count[5] = {0, 0, 0, 0, 0};  ///< by BaselineState, gone ones included
   long suppressed = 0, failing = 0;
-  /// Incomplete wins, else a finding that fails or a stale suppression (run_exit_code).
+  /// Every part failed (unless allow_empty): bad input; else incomplete wins,
+  /// else a finding that fails or a stale suppression (run_exit_code).
   ExitCode exit_code = kExitClean;
 };
 

@@ -26,6 +26,7 @@ std::string part_list_id(const std::string& path) {
 SceneSpec parse_part_list(const std::string& text, const std::string& path) {
   SceneSpec s;
   s.path = path;
+  s.part_list = true;
   std::istringstream in(text);
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
@@ -49,6 +50,13 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
   }
   validate_scene(s);
   return s;
+}
+
+std::optional<std::string> empty_scene_problem(const SceneSpec& s) {
+  if (!s.parts.empty()) return std::nullopt;
+  const std::string what = s.part_list ? "an empty part list (no mesh path on any line)"
+                                       : "no parts (\"parts\" is empty)";
+  return s.path + ": " + what + ": nothing to check (--allow-empty accepts an empty input)";
 }
 
 SceneSpec parse_stdin_scene(const std::string& text, const std::optional<std::string>& units,

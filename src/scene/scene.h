@@ -95,7 +95,13 @@ struct SceneSpec {
   std::optional<std::vector<std::pair<std::string, std::string>>> pairs;
   SolverOverrides solver;
   Checks checks;
+  bool part_list = false;  ///< read from a plain part list (parse_part_list), not a scene JSON
 };
+
+/// Why the scene gives nothing to check, when it has no part: a scene whose
+/// `parts` is empty, or a part list without a path (a failed export upstream).
+/// The CLI refuses such input (exit 2) unless --allow-empty. nullopt: it has parts.
+std::optional<std::string> empty_scene_problem(const SceneSpec& s);
 
 /// Parses a scene document. `path` names it in messages; mesh paths are taken
 /// relative to `base_dir`. Throws SceneError.
