@@ -273,3 +273,59 @@ TEST(CiLoop, FailOnBars) {
   EXPECT_EQ(pdcheck(scene + " -q --suppressions " + accept + " --fail-on clearance").code, 0);
   EXPECT_EQ(pdcheck(scene + " -q --suppressions " + accept + " --fail-on any").code, 1);
 }
+
+// A unit the input declares is never reinterpreted, and a prior report in
+// another unit is refused: its depths are numbers in another unit (issue 25).
+TEST(CiCli, UnitsAreNeverReinterpreted) {
+  const std::string mm_scene = assembly("units_mm.json", 9);
+  const CliResult clash = pdcheck(mm_scene + " -q --units in");
+  EXPECT_EQ(clash.code, 2) << clash.err;
+  EXPECT_NE(clash.err.find("units_mm.json: units: the scene declares \"mm\" but --units says "
+                           "\"in\""),
+            std::string::npos)
+      << clash.err;
+  EXPECT_EQ(pdcheck(mm_scene + " -q --units mm").code, 1);  // the same unit is no clash
+
+  // A scene that declares no unit takes --units.
+  json bare = read_json(mm_scene);
+  bare.erase("units");
+  const std::string bare_scene = write_temp("units_none.json", bare.dump());
+  const std::string in_report = tmp("units_in.json"), mm_report = tmp("units_mm_report.json");
+  ASSERT_EQ(pdcheck(bare_scene + " -q --units in -o " + in_report).code, 1);
+  EXPECT_EQ(read_json(in_report)["units"], "in");
+  ASSERT_EQ(pdcheck(mm_scene + " -q -o " + mm_report).code, 1);
+
+  for (const std::string option : {"--baseline", "--reuse"}) {
+    const CliResult r = pdcheck(mm_scene + " " + option + " " + in_report);
+    EXPECT_EQ(r.code, 2) << option << r.err;
+    EXPECT_NE(r.err.find("pdcheck: error: " + option + " " + in_report +
+                         ": the report is in in, this run in mm"),
+              std::string::npos)
+        << r.err;
+  }
+  // Same unit, other settings: the comparison runs, and says what differs.
+  const CliResult tol = pdcheck(mm_scene + " --tolerance 0.2 --baseline " + mm_report);
+  EXPECT_EQ(tol.code, 1) << tol.err;
+  EXPECT_NE(tol.err.find("--baseline " + mm_report +
+                         ": written with tolerance 0.1 mm, this run's is 0.2 mm"),
+            std::string::npos)
+      << tol.err;
+  EXPECT_EQ(pdcheck(mm_scene + " --baseline " + mm_report).err.find("written with"),
+            std::string::npos);
+  const CliResult method = pdcheck(mm_scene + " --method exact --reuse " + mm_report);
+  EXPECT_EQ(method.code, 1) << method.err;
+  EXPECT_NE(method.err.find("--reuse " + mm_report + ": written with method {"), std::string::npos)
+      << method.err;
+  EXPECT_NE(method.err.find("no pair was reused"), std::string::npos) << method.err;
+  const CliResult same = pdcheck(mm_scene + " --reuse " + mm_report);
+  EXPECT_NE(same.err.find("pair(s) reused from"), std::string::npos) << same.err;
+  EXPECT_EQ(same.err.find("warning"), std::string::npos) << same.err;
+
+  // pdcheck merge refuses a baseline in another unit too.
+  const std::string shard = tmp("units_shard.json");
+  ASSERT_EQ(pdcheck(bare_scene + " -q --units in --shard 1/1 -o " + shard).code, 0);
+  const CliResult merged = pdcheck("merge " + shard + " -q --baseline " + mm_report);
+  EXPECT_EQ(merged.code, 2) << merged.err;
+  EXPECT_NE(merged.err.find("the report is in mm, this run in in"), std::string::npos)
+      << merged.err;
+}

@@ -67,6 +67,27 @@ TEST(SceneJson, BadJsonGivesLineAndColumn) {
   EXPECT_NE(e.find("s.json: invalid JSON at line 3, column 13"), std::string::npos) << e;
 }
 
+// --units names the unit of a scene that declares none; it never reinterprets a
+// declared one (issue 25: a mm scene read as inches moved its parts apart).
+TEST(SceneJson, CommandLineUnitsNeverReplaceADeclaredOne) {
+  const std::string declared = R"({"units": "mm", "tolerance": 0.1, "parts": []})";
+  EXPECT_EQ(parse_scene_json(declared, "s.json", "", std::string("mm")).units, "mm");
+  try {
+    parse_scene_json(declared, "s.json", "", std::string("in"));
+    ADD_FAILURE() << "a declared unit was replaced";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "s.json: units: the scene declares \"mm\" but --units says \"in\": a declared unit "
+              "is never reinterpreted (drop --units, or change the scene's \"units\")");
+  }
+  EXPECT_THROW(parse_scene_json_whole(declared, "s.json", "", std::string("in")), SceneError);
+  const SceneSpec bare = parse_scene_json(R"({"tolerance": 0.1, "parts": [
+      {"id": "a", "units": "mm", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]}]})",
+                                          "s.json", "", std::string("in"));
+  EXPECT_EQ(bare.units, "in");
+  EXPECT_DOUBLE_EQ(bare.parts[0].to_scene_units, 1 / 25.4);  // the part's own unit still holds
+}
+
 TEST(SceneJson, UnitsAndTransformsApply) {
   const SceneSpec s = parse_scene_json(R"({"units": "mm", "tolerance": 0.1, "parts": [
       {"id": "a", "units": "cm", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],

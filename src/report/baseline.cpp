@@ -42,6 +42,7 @@ Baseline parse_baseline(const std::string& text, const std::string& path) {
   const JsonAt pairs = root["pairs"];
   Baseline b;
   b.path = path;
+  b.settings = prior_settings_of(doc);
   for (size_t k = 0; k < pairs.array().size(); ++k) {
     const JsonAt p = pairs[k];
     BaselineFinding f;

@@ -10,6 +10,7 @@
 
 #include "batch/run_result.h"
 #include "report/input_error.h"
+#include "report/prior_settings.h"
 
 namespace pd {
 
@@ -28,6 +29,7 @@ struct BaselineFinding {
 struct Baseline {
   std::string path;
   std::map<std::string, BaselineFinding> findings;  ///< by fingerprint
+  PriorSettings settings;  ///< its unit, tolerance and method (check_prior_settings)
 };
 
 /// Reads a pdcheck JSON report (`--format json`, any run). The fingerprint is

@@ -8,7 +8,7 @@
 
 namespace pd {
 
-PriorResults load_prior_report(const std::string& path) {
+PriorResults load_prior_report(const std::string& path, PriorSettings* settings) {
   const std::string text = read_input_file(path);
   nlohmann::ordered_json doc;
   try {
@@ -18,6 +18,7 @@ PriorResults load_prior_report(const std::string& path) {
   }
   PriorResults prior;
   prior.path = path;
+  if (settings) *settings = prior_settings_of(doc);
   try {
     if (!doc.contains("hashes") || !doc["hashes"].contains("settings"))
       throw ReportInputError(path +

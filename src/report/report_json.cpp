@@ -58,6 +58,18 @@ json summary_json(const Summary& s) {
   return j;
 }
 
+json method_json(const SolverSettings& s) {
+  json method = json::object();
+  for_each_setting(s, [&](const Setting& setting, const auto& value) {
+    if (!setting.reported_for(s.method)) return;
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Method>)
+      method[setting.report_key] = method_name(value);
+    else
+      method[setting.report_key] = value;
+  });
+  return method;
+}
+
 json report_json(const ReportContext& ctx, const RunResult& r) {
   json parts = json::array();
   for (size_t k = 0; k < r.parts.size(); ++k) {
@@ -80,15 +92,7 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
   }
   json pairs = json::array();
   for (const PairResult& p : r.pairs) pairs.push_back(pair_json(p, r.parts));
-  const SolverSettings& s = ctx.solver;
-  json method = json::object();
-  for_each_setting(s, [&](const Setting& setting, const auto& value) {
-    if (!setting.reported_for(s.method)) return;
-    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Method>)
-      method[setting.report_key] = method_name(value);
-    else
-      method[setting.report_key] = value;
-  });
+  const json method = method_json(ctx.solver);
   json doc = {{"tool", {{"name", "pdcheck"}, {"version", PDCHECK_VERSION}}},
               {"report_version", 1},
               {"scene", ctx.scene_path},

@@ -23,6 +23,8 @@ Summary summarize(const RunResult& r);
 nlohmann::ordered_json pair_json(const PairResult& r, const std::vector<Part>& parts);
 nlohmann::ordered_json report_json(const ReportContext& ctx, const RunResult& r);
 nlohmann::ordered_json summary_json(const Summary& s);
+/// The report's `method`: the depth method's name and the settings it uses.
+nlohmann::ordered_json method_json(const SolverSettings& s);
 /// A shard's manifest (docs/report-format.md, "shard"); checked and pairs
 /// counts are the shard's summary.
 nlohmann::ordered_json shard_json(const ShardManifest& m);

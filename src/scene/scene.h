@@ -105,7 +105,8 @@ std::optional<std::string> empty_scene_problem(const SceneSpec& s);
 
 /// Parses a scene document. `path` names it in messages; mesh paths are taken
 /// relative to `base_dir`. Throws SceneError.
-/// `units` (the command line's --units), when given, replaces the scene's unit.
+/// `units` (the command line's --units), when given, is the unit of a scene that
+/// declares none; a scene that declares another one is refused (SceneError naming both).
 /// `threads` > 1 parses and converts the parts in parallel; the result and any
 /// error message are the same as with one thread. Inline vertex lists are read
 /// by scan_vertex_array when plain (scene/vertex_scan.h).

@@ -330,6 +330,12 @@ SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::s
   if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))
     c.fail("version", "only version 1 is known");
   if (doc.contains("units")) s.units = unit(c, doc["units"], "units");
+  // A declared unit is never reinterpreted: reading a mm scene's translations and
+  // tolerance as inches while its parts that declare mm stay mm moves them apart.
+  if (units && s.units && *units != *s.units)
+    c.fail("units", "the scene declares \"" + *s.units + "\" but --units says \"" + *units +
+                        "\": a declared unit is never reinterpreted (drop --units, or change the "
+                        "scene's \"units\")");
   if (units) s.units = units;
   if (doc.contains("tolerance")) {
     s.tolerance = number(c, doc["tolerance"], "tolerance");

@@ -1,0 +1,31 @@
+#include "report/prior_settings.h"
+
+#include "report/finding_text.h"
+
+namespace pd {
+
+std::vector<std::string> check_prior_settings(const std::string& option, const std::string& path,
+                                              const PriorSettings& prior,
+                                              const ReportContext& run) {
+  const std::string who = option + " " + path;
+  if (prior.units && *prior.units != run.units)
+    throw ReportInputError(who + ": the report is in " + *prior.units + ", this run in " +
+                           run.units + ": its depths cannot be compared with this run's (run in " +
+                           *prior.units + ", or write a new report in " + run.units + ")");
+  std::vector<std::string> warnings;
+  if (prior.tolerance && *prior.tolerance != run.tolerance)
+    warnings.push_back(who + ": written with tolerance " + short_number(*prior.tolerance) + " " +
+                       run.units + ", this run's is " + short_number(run.tolerance) + " " +
+                       run.units + ": a status may differ by the tolerance alone");
+  if (prior.method) {
+    // Both sides through the same JSON type, so that key order does not count.
+    const nlohmann::json now = nlohmann::json::parse(method_json(run.solver).dump());
+    if (*prior.method != now)
+      warnings.push_back(who + ": written with method " + prior.method->dump() +
+                         ", this run uses " + now.dump() +
+                         ": a depth may differ by the method alone");
+  }
+  return warnings;
+}
+
+}  // namespace pd
