@@ -98,6 +98,16 @@ inline constexpr double kDecomposeSeconds = 20.0;
 /// of the part; two hull excesses at a contact add up, so at 0.25 an exact fit
 /// scores at most half the tolerance and stays a false positive.
 inline constexpr double kConcavityFraction = 0.25;
+
+/// A part's transform is rigid when its singular values are within this of 1
+/// (absolute): a rotation written with 6 decimals (0.707107) passes, a scale
+/// (a units mistake, almost always) gets a warning with its factors.
+inline constexpr double kRigidPlacement = 1e-5;
+
+/// A part whose size (largest box extent) is within this relative distance of
+/// 25.4, 1000 or 304.8 times (or 1/that) the median part size of its assembly
+/// gets a warning: the factor of inches, metres or feet against millimetres.
+inline constexpr double kUnitsLikeFactor = 0.03;
 /// Limits of one decomposition (beyond them: not complete, pairs unconfirmed),
 /// and the samples of a piece's concavity estimate (a fifth of them to rank
 /// candidate cuts).

@@ -9,6 +9,7 @@
 #include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/run_stages.h"
+#include "scene/setup_warnings.h"
 
 namespace pd {
 
@@ -41,6 +42,40 @@ double lap(Clock::time_point& t) {
   const double s = std::chrono::duration<double>(now - t).count();
   t = now;
   return s;
+}
+
+// A part whose size is off its assembly's median by a units factor. The
+// median is over the whole scene, also in a shard (from the plan's boxes, which
+// are the parts' placed boxes), so a shard warns as the unsharded run does.
+void warn_units_like_sizes(std::vector<Part>& parts, const ScenePlan* plan,
+                           const std::vector<int>& loaded, const std::string& units) {
+  std::vector<std::optional<double>> sizes;
+  if (plan) {
+    for (const auto& b : plan->boxes)
+      sizes.push_back(b ? std::optional<double>((b->hi - b->lo).maxCoeff()) : std::nullopt);
+  } else {
+    for (const Part& p : parts)
+      sizes.push_back(p.error ? std::nullopt : std::optional<double>(part_size(p)));
+  }
+  const UnitsLikeOutliers off = units_like_outliers(sizes);
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const size_t at = plan ? size_t(loaded[k]) : k;
+    if (off.factor[at] && !parts[k].error)
+      parts[k].warnings.push_back(
+          units_like_warning(*sizes[at], *off.factor[at], off.median, units));
+  }
+}
+
+// A false positive whose tolerance is at least the smaller part's size: any
+// overlap of that pair would have passed.
+void warn_tolerance_covers_part(const std::vector<Part>& parts, double tolerance,
+                                const std::string& units, std::vector<PairResult>& results) {
+  for (PairResult& r : results) {
+    if (r.status != Status::kFalsePositive || r.a < 0 || r.b < 0) continue;
+    const auto w = tolerance_covers_part(tolerance, parts[r.a], parts[r.b], units);
+    if (w && std::find(r.warnings.begin(), r.warnings.end(), *w) == r.warnings.end())
+      r.warnings.push_back(*w);
+  }
 }
 
 }  // namespace
@@ -82,6 +117,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   }
   for (size_t k = 0; k < out.parts.size(); ++k)
     out.part_hashes.push_back(hashes[plan ? loaded[k] : k]);
+  const std::string units = scene.units.value_or("mm");
+  warn_units_like_sizes(out.parts, plan ? &*plan : nullptr, loaded, units);
   out.stages.parts = lap(t);
   const std::vector<Part>& parts = out.parts;
   const Checks& checks = scene.checks;
@@ -116,6 +153,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   solve_pairs(parts, pairs, to_solve, options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, options, pair_checks);
+  warn_tolerance_covers_part(out.parts, options.tolerance, units, out.pairs);
   out.stages.refine = lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();
   return out;

@@ -80,6 +80,7 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
               {"hull_vertices", p.hull_vertex_count()},
               {"pieces", p.decomposition ? p.decomposition->pieces.size() : p.pieces.size()},
               {"warnings", p.warnings}};
+    if (p.resolution) j["resolution"] = *p.resolution;
     if (k < r.part_hashes.size()) j["content_hash"] = r.part_hashes[k];
     if (p.convex) j["convex"] = *p.convex;
     if (p.decomposition) {

@@ -12,11 +12,13 @@
 
 #include "file_hash.h"
 #include "geometry/convexity.h"
+#include "geometry/coordinate_resolution.h"
 #include "hash.h"
 #include "parallel_for.h"
 #include "scene/convexity_cache.h"
 #include "scene/hull_cache.h"
 #include "scene/mesh_loader.h"
+#include "scene/setup_warnings.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -216,6 +218,13 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
       part.box = k == 0 ? b : part.box.merged(b);
       part.pieces.push_back(std::move(h));
     }
+    // Mesh files come as float32 (assimp's storage), inline vertices as doubles.
+    double max_abs = 0.0;
+    for (const Points* p : sets) max_abs = std::max(max_abs, max_abs_coordinate(*p));
+    const double placed_max_abs =
+        std::max(part.box.lo.cwiseAbs().maxCoeff(), part.box.hi.cwiseAbs().maxCoeff());
+    part.resolution =
+        coordinate_resolution(max_abs, file != nullptr, stretch(placement(spec)), placed_max_abs);
     if (file && file->mesh) {
       part.convex = file->concavity * stretch(placement(spec)) <= concavity_tol;
       part.surface = surface_of(spec, *file, *part.convex);
@@ -302,10 +311,17 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
 
   std::vector<Part> parts;
   parts.reserve(scene.parts.size());
+  const std::string units = scene.units.value_or("mm");
   for (size_t k = 0; k < scene.parts.size(); ++k) {
     Part p = built[source[k]];
     p.id = scene.parts[k].id;
     p.motion = scene.parts[k].motion;
+    if (!p.error) {
+      if (auto w = non_rigid_placement(scene.parts[k].transform)) p.warnings.push_back(*w);
+      if (p.resolution && scene.tolerance)
+        if (auto w = resolution_warning(*scene.tolerance, *p.resolution, units))
+          p.warnings.push_back(*w);
+    }
     parts.push_back(std::move(p));
   }
   return parts;

@@ -52,6 +52,10 @@ struct Part {
   std::optional<bool> convex;          ///< measured for pieces auto/decompose mesh parts
   std::optional<PartSurface> surface;  ///< pieces auto/decompose mesh parts
   std::optional<PartDecomposition> decomposition;  ///< set by the batch stage when used
+  /// Scene units: the spacing of its stored coordinates at their magnitude
+  /// (float32 for mesh files, as assimp stores them; double inline), carried by
+  /// its placement (geometry/coordinate_resolution.h). Set for usable parts.
+  std::optional<double> resolution;
 
   /// Whether a pair flagged by the hull stage must look past this part's hull.
   bool refinable() const {
