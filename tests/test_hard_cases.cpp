@@ -247,6 +247,48 @@ TEST(HardCases, TouchingPairsAtRandomPosesGiveTheExactDepth) {
   EXPECT_GE(exact_zero, cases / 4);  // most near the origin: a real share
 }
 
+// The same families as a mesh file gives them: posed, then every coordinate
+// rounded to float32 (assimp's storage). Rounding moves the touching faces
+// apart or into each other by ~1e-7 of the coordinates, so the exact depth is
+// 0 or a rounding-sized overlap; mlsl must agree with it to the same
+// scale-relative floor, and give exactly 0 wherever the exact reference does.
+TEST(HardCases, TouchingFloat32PairsAtRandomPosesGiveTheExactDepth) {
+  SphereSampler r(2026);
+  int exact_zero = 0, overlapping = 0, cases = 0;
+  for (Touch t : {Touch::kBoxEdgeOnFace, Touch::kBoxEdgeOnEdge, Touch::kEdgeEdge,
+                  Touch::kVertexFace, Touch::kPolytopeEdgeOnFace})
+    for (double far : {0.0, 30.0, 2000.0, 35000.0})
+      for (int k = 0; k < 12; ++k) {
+        testgen::PairCase c = posed(r, touching_pair(r, t), far);
+        c.a = c.a.cast<float>().cast<double>();
+        c.b = c.b.cast<float>().cast<double>();
+        const PairResult e = check(c.a, c.b, Method::kExact, 0.01);
+        const PairResult m = check(c.a, c.b, Method::kMlsl, 0.01);
+        const double floor = 1e-12 * pair_size(part("a", c.a), part("b", c.b));
+        SCOPED_TRACE(std::string(touch_name(t)) + " far " + std::to_string(far) + " case " +
+                     std::to_string(k) + ": exact " + std::to_string(e.depth * 1e15) +
+                     "e-15 mlsl " + std::to_string(m.depth * 1e15) + "e-15 (" +
+                     stop_reason_name(m.stats.stop_reason) + ")");
+        ASSERT_NE(m.status, Status::kError) << m.error;
+        EXPECT_EQ(m.status, e.status);
+        EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+        EXPECT_LE(std::abs(m.depth - e.depth), floor);
+        if (e.depth == 0) {
+          ++exact_zero;
+          EXPECT_EQ(m.depth, 0.0);
+        } else {
+          ++overlapping;
+        }
+        ++cases;
+      }
+  EXPECT_EQ(cases, 5 * 4 * 12);
+  RecordProperty("exact_zero", exact_zero);
+  RecordProperty("overlapping", overlapping);
+  // Both outcomes of the rounding are exercised.
+  EXPECT_GE(exact_zero, cases / 10);
+  EXPECT_GE(overlapping, cases / 10);
+}
+
 TEST(HardCases, OverlapOfOneBillionthOfTheSize) {
   const Points a = box(kO, kOne), b = box(Vec3(1 - 2e-9, 0, 0), Vec3(2 - 2e-9, 1, 1));
   expect_case("overlap 1e-9", a, b, 2e-9, 1e-15, Status::kFalsePositive);
