@@ -196,7 +196,15 @@ TEST(Cli, PartListOnStdinWithJsonLines) {
   while (std::getline(lines, line)) last = line;
   EXPECT_EQ(json::parse(first)["status"], "interference");  // identical boxes
   EXPECT_EQ(json::parse(last)["summary"]["interference"], 1);
+  // The closing line as docs/report-format.md gives it: part_errors even when none.
+  EXPECT_EQ(json::parse(last)["part_errors"], json::array());
   EXPECT_EQ(pdcheck("- -q", "a\t" + f + "box.obj\n").code, 2);  // a part list needs --tolerance
+  const CliRun bad = pdcheck("- --tolerance 0.5 --format jsonl -q",
+                             "a\t" + f + "box_binary.stl\nb\tno/such.stl\nc\t" + f + "box.obj\n");
+  std::istringstream bad_lines(bad.out);
+  for (std::string l; std::getline(bad_lines, l);) last = l;
+  EXPECT_EQ(json::parse(last)["part_errors"].size(), 1u) << last;
+  EXPECT_EQ(json::parse(last)["part_errors"][0]["id"], "b") << last;
 }
 
 TEST(Cli, OutputFileIsWrittenWhole) {
@@ -251,4 +259,19 @@ TEST(Cli, EmptyInputIsAnError) {
   EXPECT_EQ(m.code, 2) << m.err;
   EXPECT_NE(m.err.find("merge: every part failed"), std::string::npos) << m.err;
   EXPECT_EQ(pdcheck("merge " + shard + " -q --allow-empty").code, 3);
+}
+
+// A mesh file given where a scene is expected: the message suggests the part-list form.
+TEST(Cli, AMeshFileForASceneSuggestsAPartList) {
+  const CliRun r = pdcheck(kSource + "/testdata/formats/box_ascii.stl -q");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("box_ascii.stl looks like a mesh file, not a scene: to check mesh files, "
+                       "list them on standard input"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("| pdcheck - --tolerance"), std::string::npos) << r.err;
+  // A scene that is bad JSON gets no such hint.
+  const CliRun j = pdcheck(write_temp("bad.json", "{,}") + " -q");
+  EXPECT_EQ(j.code, 2);
+  EXPECT_EQ(j.err.find("mesh file"), std::string::npos) << j.err;
 }

@@ -222,6 +222,7 @@ TEST(Suppressions, MatchStaleExpiredExceeded) {
                 pair(0, 2, Status::kInterference, 0.2), pair(0, 3, Status::kSeparated)});
   ReviewOptions opt;
   opt.suppressions = &s;
+  opt.units = "in";
   opt.today = "2026-01-31";  // the last day p0/p2 holds
   Review rv = review_run(run, opt, false);
   EXPECT_TRUE(rv.pairs[0].suppressed);
@@ -237,6 +238,12 @@ TEST(Suppressions, MatchStaleExpiredExceeded) {
   EXPECT_EQ(issues,
             (std::map<std::string, std::string>{
                 {"p1/p2", "exceeded"}, {"p0/p3", "unmatched fails"}, {"p3/p5", "unchecked"}}));
+  for (const auto& i : rv.suppression_issues)  // every length with its unit
+    if (i.kind == "exceeded") {
+      EXPECT_EQ(i.detail,
+                "depth 0.7 in exceeds max_depth 0.5 in; the finding is reported as if "
+                "unsuppressed");
+    }
   EXPECT_EQ(rv.exit_code, 1);
 
   opt.today = "2026-02-01";  // the day after: expired, and the finding fails again

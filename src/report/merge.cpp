@@ -243,6 +243,7 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   const bool listed = first["shard"].value("listed", false);
   out.review_options = review;
   out.review_options.tolerance = first.at("tolerance").get<double>();
+  out.review_options.units = first.at("units").get<std::string>();
   if (listed) {
     // A scene's pair list has no broad phase: its pairs of usable parts are
     // exactly the pairs reported, which is what the review asks of the list.

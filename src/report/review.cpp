@@ -76,8 +76,9 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
         issue.fails = !options.allow_stale;
       } else {
         issue.kind = "exceeded";
-        issue.detail = "depth " + depth_text(r.depth) + " exceeds max_depth " +
-                       depth_text(*s.max_depth) + "; the finding is reported as if unsuppressed";
+        issue.detail = "depth " + depth_text(r.depth) + " " + options.units +
+                       " exceeds max_depth " + depth_text(*s.max_depth) + " " + options.units +
+                       "; the finding is reported as if unsuppressed";
       }
       rv.suppression_issues.push_back(issue);
     }

@@ -22,6 +22,7 @@ struct ReviewOptions {
   bool allow_stale = false;  ///< stale or expired suppressions do not fail the run
   std::string today;         ///< YYYY-MM-DD, for `expires`
   double tolerance = 0.0;    ///< scene units: the `updated` rule
+  std::string units = "mm";  ///< the run's, for the lengths in messages
   /// The fingerprints of the scene's pair list, when it has one: other pairs were not checked.
   std::optional<std::set<std::string>> listed;
   /// A run whose every part failed exits 3 like any incomplete run (--allow-empty,

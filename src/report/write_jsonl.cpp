@@ -17,7 +17,9 @@ std::string render_jsonl(const ReportInput& in) {
 }
 
 std::string jsonl_tail(const ReportInput& in) {
-  nlohmann::ordered_json tail = {{"summary", summary_json(summarize(in.run))}};
+  // `part_errors` always, empty too: a reader need not test for the key.
+  nlohmann::ordered_json tail = {{"summary", summary_json(summarize(in.run))},
+                                 {"part_errors", nlohmann::ordered_json::array()}};
   for (const auto& p : in.run.parts)
     if (p.error) tail["part_errors"].push_back({{"id", p.id}, {"error", *p.error}});
   add_run_review(tail, tail["summary"], in.review, in.review_options);

@@ -160,8 +160,9 @@ std::string render_sarif(const ReportInput& in) {
                 {"level", "none"},
                 {"message",
                  {{"text", g.was.a + " / " + g.was.b + ": was " + g.was.status + " (depth " +
-                               short_number(g.was.depth) + ") in the baseline; now " +
-                               baseline_state_name(g.state) + ": " + g.reason}}},
+                               short_number(g.was.depth) + " " + in.context.units +
+                               ") in the baseline; now " + baseline_state_name(g.state) + ": " +
+                               g.reason}}},
                 {"locations", locations(files)},
                 {"partialFingerprints", {{"pdcheckPair/v1", g.was.fingerprint}}}};
     if (absent) res["baselineState"] = "absent";

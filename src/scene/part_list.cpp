@@ -1,3 +1,4 @@
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -50,6 +51,15 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
   }
   validate_scene(s);
   return s;
+}
+
+bool looks_like_mesh_file(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* m :
+       {".stl", ".obj", ".ply", ".gltf", ".glb", ".3mf", ".off", ".fbx", ".dae", ".3ds"})
+    if (ext == m) return true;
+  return false;
 }
 
 std::optional<std::string> empty_scene_problem(const SceneSpec& s) {

@@ -150,6 +150,11 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path);
 /// directory when it is an absolute path inside it.
 std::string part_list_id(const std::string& path);
 
+/// Whether `path` names a mesh format by its extension (.stl, .obj, .ply, .gltf,
+/// .glb, .3mf, .off, .fbx, .dae, .3ds; any case): given where a scene is
+/// expected, the message suggests the part-list form `pdcheck -`.
+bool looks_like_mesh_file(const std::string& path);
+
 /// Standard input: a scene JSON when it starts with '{', a part list otherwise.
 SceneSpec parse_stdin_scene(const std::string& text,
                             const std::optional<std::string>& units = std::nullopt,

@@ -556,8 +556,18 @@ SceneSpec load_scene_file(const std::string& path, const std::optional<std::stri
                           int threads, bool keep_vertices) {
   const SceneText file(path);
   const std::string base = std::filesystem::path(path).parent_path().string();
-  return parse_scene_text(file.text(), path, base, units, threads,
-                          keep_vertices || !file.rereadable());
+  try {
+    return parse_scene_text(file.text(), path, base, units, threads,
+                            keep_vertices || !file.rereadable());
+  } catch (const SceneError& e) {
+    // `pdcheck part.stl`: say what was meant, not only that it is no JSON.
+    if (looks_like_mesh_file(path))
+      throw SceneError(std::string(e.what()) + "; " + path +
+                       " looks like a mesh file, not a scene: to check mesh files, list them on "
+                       "standard input (ls " +
+                       path + " other.stl | pdcheck - --tolerance 0.05)");
+    throw;
+  }
 }
 
 void validate_scene(const SceneSpec& s) {
