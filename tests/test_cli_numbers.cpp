@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cli_support.h"
+#include "scene/units.h"
 
 using nlohmann::json;
 
@@ -166,4 +167,31 @@ TEST(CliNumbers, ADepthBelowTheResolvableScaleIsFlagged) {
   const std::string unit = write_temp("num_unit2.json", overlapping_pair(""));
   const CliRun r = pdcheck(unit + " --quiet -j 1");
   EXPECT_FALSE(json::parse(r.out)["pairs"][0].contains("warnings")) << r.out;
+}
+
+// A length on the command line takes a unit suffix, converted to the scene's
+// unit; without one it is in the scene's unit (issue 25).
+TEST(CliNumbers, ToleranceTakesAUnitSuffix) {
+  EXPECT_EQ(pd::parse_length("0.05mm")->value, 0.05);
+  EXPECT_EQ(*pd::parse_length("0.05mm")->unit, "mm");
+  EXPECT_EQ(*pd::parse_length("2 in")->unit, "in");
+  EXPECT_FALSE(pd::parse_length("0.05")->unit);
+  for (const char* bad : {"", "mm", "0.05furlong", "0.05 mmm", "1e999", "nan", "inf"})
+    EXPECT_FALSE(pd::parse_length(bad)) << bad;
+  EXPECT_DOUBLE_EQ(pd::length_in(*pd::parse_length("2in"), "mm"), 50.8);
+  EXPECT_DOUBLE_EQ(pd::length_in(*pd::parse_length("0.5mm"), "cm"), 0.05);
+  EXPECT_EQ(pd::length_in(*pd::parse_length("0.5"), "in"), 0.5);
+
+  // The demo (mm): cover / bracket interfere by 2 mm. 0.25 cm = 2.5 mm covers it.
+  const std::string demo = kSource + "/testdata/demo/scene.json --quiet";
+  const CliRun mm = pdcheck(demo + " --tolerance 2.5mm");
+  const CliRun cm = pdcheck(demo + " --tolerance 0.25cm");
+  EXPECT_EQ(nlohmann::json::parse(mm.out)["tolerance"], 2.5);
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(cm.out)["tolerance"].get<double>(), 2.5);
+  EXPECT_EQ(pdcheck(demo + " --tolerance 0.1mm").code, 1);
+  const CliRun bad = pdcheck(demo + " --tolerance 0.1furlong");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("pdcheck: error: --tolerance: expected a length such as 0.05 or 0.05mm"),
+            std::string::npos)
+      << bad.err;
 }

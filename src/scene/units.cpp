@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace pd {
@@ -13,6 +16,26 @@ std::optional<double> unit_in_mm(const std::string& unit) {
   if (unit == "in") return 25.4;
   if (unit == "ft") return 304.8;
   return std::nullopt;
+}
+
+std::optional<LengthArg> parse_length(const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(begin, &end);
+  if (end == begin || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
+  std::string rest(end);
+  rest.erase(0, rest.find_first_not_of(' '));
+  LengthArg out{v, std::nullopt};
+  if (rest.empty()) return out;
+  if (!unit_in_mm(rest)) return std::nullopt;
+  out.unit = rest;
+  return out;
+}
+
+double length_in(const LengthArg& length, const std::string& scene_unit) {
+  if (!length.unit || *length.unit == scene_unit) return length.value;
+  return length.value * *unit_in_mm(*length.unit) / *unit_in_mm(scene_unit);
 }
 
 std::optional<std::string> format_unit(const std::string& mesh_path) {
