@@ -5,8 +5,10 @@
 #include <iostream>
 #include <limits>
 
+#include "batch/empty_input.h"
 #include "report/report_json.h"
 #include "report/review_json.h"
+#include "report/warning_lines.h"
 #include "report/write_html.h"
 #include "report/writer.h"
 #include "say.h"
@@ -35,9 +37,11 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
                  "scene JSON file, or - for standard input (a scene JSON or "
                  "a part list: one mesh path per line, or id<TAB>path)");
   app.add_option("--tolerance", a.tolerance,
-                 "depth at or below which an interference is a discretization false positive "
-                 "(scene units; overrides the scene)");
-  app.add_option("--units", a.units, "length unit of the scene and the report: mm, cm, m, in, ft");
+                 "depth at or below which an interference is a discretization false positive, in "
+                 "the scene's unit or with a unit suffix (0.05mm, 0.002in); overrides the scene");
+  app.add_option("--units", a.units,
+                 "length unit of input that declares none (a part list, a scene without "
+                 "\"units\"): mm, cm, m, in, ft; a scene declaring another unit is refused");
   app.add_option("--method", a.method,
                  "depth method: mlsl (default), mlsl-paper, gs-local, grid, exact");
   app.add_option("--pieces", a.pieces,
@@ -79,6 +83,9 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
                  "error (default: half the machine's memory shared among the loaders; 0: none)")
       ->check(in_range(0, 1e9, "must be a number of MB from 0 to 1e9"));
   app.add_flag("-q,--quiet", a.quiet, "no progress and no summary line on stderr");
+  app.add_flag("--allow-empty", a.allow_empty,
+               "accept an input with nothing to check (no parts, an empty part list, every part "
+               "failed) instead of exit 2");
   add_ci_options(app, ci_);
   app.add_option("--shard", shard_,
                  "K/N: check shard K of N (a deterministic, cost-balanced share of the pairs; "
@@ -91,7 +98,8 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
                  "SLURM_ARRAY_TASK_MIN, else 0)");
   app.add_option("--reuse", a.reuse,
                  "an earlier JSON report: pairs whose parts and settings are unchanged keep "
-                 "their results (marked reused) instead of being solved again");
+                 "their results (marked reused) instead of being solved again (a report in another "
+                 "unit is refused)");
 }
 
 int CheckCommand::run(const pd::FaultHooks& faults) {
@@ -111,6 +119,8 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
   opt.reuse = config.prior ? &*config.prior : nullptr;
   opt.faults = faults;
   if (!a.quiet) opt.on_warning = [](const std::string& w) { say("warning", w); };
+  if (!a.quiet)
+    for (const auto& w : config.prior_warnings) say("warning", w);
   const pd::ReviewOptions& review_opt = config.review.options;
   const bool jsonl = a.format == "jsonl";
   if (jsonl && !config.out_file) {
@@ -142,17 +152,22 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
   else
     pd::write_stdout(text);
   pd::write_extra_outputs(config.extra, report, [&] { return pd::render_html(report); });
-  for (const auto& p : result.parts) {
-    if (!a.quiet)
-      for (const auto& w : p.warnings) say("warning", "part \"" + p.id + "\": " + w);
+  if (!a.quiet)
+    for (const auto& w : pd::warning_lines(result)) say("warning", w);
+  for (const auto& p : result.parts)
     if (p.error) say("error", "part \"" + p.id + "\": " + *p.error);
-  }
   if (!a.quiet) {
     say_review(report);
     std::cerr << pd::summary_line(summary, result.seconds) << "\n";
     if (result.reused)
       std::cerr << "pdcheck: " << result.reused << " pair(s) reused from " << a.reuse << "\n";
+    else if (config.prior && config.prior->settings_hash != result.settings_hash)
+      say("warning", "--reuse " + a.reuse +
+                         ": its settings hash differs from this run's (solver settings, tolerance "
+                         "or checks): no pair was reused");
   }
   // A shard's verdict is the merge's: its exit code says its report is written.
-  return config.shard ? pd::kExitClean : review.exit_code;
+  if (config.shard) return pd::kExitClean;
+  if (review.exit_code == pd::kExitBadInput) say("error", *pd::every_part_failed(result));
+  return review.exit_code;
 }

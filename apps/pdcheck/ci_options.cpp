@@ -13,7 +13,8 @@ void add_ci_options(CLI::App& app, CiOptions& o) {
   app.add_option("--fail-on", o.review.fail_on, bar_help)->check(CLI::IsMember(bars));
   app.add_option("--baseline", o.review.baseline,
                  "a previous JSON report: mark each finding new, unchanged or updated and list "
-                 "the baseline's findings that are absent or unknown now");
+                 "the baseline's findings that are absent or unknown now (a report in another unit "
+                 "is refused)");
   app.add_option("--suppressions", o.review.suppressions,
                  "reviewed suppressions (JSON, docs/ci.md): listed findings are reported as "
                  "suppressed and do not fail the run");

@@ -3,8 +3,10 @@
 #include <iostream>
 #include <optional>
 
+#include "batch/empty_input.h"
 #include "report/merge.h"
 #include "report/output_file.h"
+#include "report/prior_settings.h"
 #include "report/writer.h"
 #include "say.h"
 #include "scene/scene.h"
@@ -17,6 +19,8 @@ MergeCommand::MergeCommand(CLI::App& app) {
                    "write the merged report to this file (atomically) instead of stdout");
   add_ci_options(*cmd_, ci_);
   cmd_->add_flag("-q,--quiet", quiet_, "no review and no summary line on stderr");
+  cmd_->add_flag("--allow-empty", allow_empty_,
+                 "exit by the findings even when every part failed (else exit 2)");
   cmd_->fallthrough();  // -j, --load-timeout (--html reads the meshes again)
 }
 
@@ -32,11 +36,16 @@ int MergeCommand::run(int jobs, double load_timeout, bool quiet) const {
     for (const auto& path : inputs_) shards.push_back(pd::read_shard_report(path));
     // The tolerance of the `updated` rule is the shards' (merge_shard_reports).
     pd::load_review_inputs(ci_.review, 0.0, review);
+    review.options.allow_empty = allow_empty_;
     merged.emplace(pd::merge_shard_reports(shards, review.options));
   } catch (const pd::MergeError& e) {
     throw pd::UserError(std::string("merge: ") + e.what());
   }
   const pd::Merged& m = *merged;
+  if (review.baseline)  // refused in another unit, said when other settings
+    for (const auto& w : pd::check_prior_settings("--baseline", review.baseline->path,
+                                                  review.baseline->settings, m.context))
+      if (!quiet && !quiet_) say("warning", w);
   const std::string text = m.doc.dump(2) + "\n";
   if (out_file)
     pd::write_output_file(*out_file, text);
@@ -60,5 +69,7 @@ int MergeCommand::run(int jobs, double load_timeout, bool quiet) const {
     say_review(report);
     std::cerr << m.summary_line << "\n";
   }
+  if (m.review.exit_code == pd::kExitBadInput)
+    say("error", "merge: " + *pd::every_part_failed(m.run));
   return page_problems.empty() ? m.review.exit_code : pd::kExitIncomplete;
 }

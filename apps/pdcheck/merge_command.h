@@ -22,5 +22,6 @@ class MergeCommand {
   std::vector<std::string> inputs_;
   std::string output_;
   bool quiet_ = false;
+  bool allow_empty_ = false;
   CiOptions ci_;
 };

@@ -7,6 +7,8 @@
 
 #include "cache_file.h"
 #include "report/prior_report.h"
+#include "report/prior_settings.h"
+#include "report/report_json.h"
 #include "results/fingerprint.h"
 #include "scene/units.h"
 
@@ -57,12 +59,20 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
     scene = load_scene_file(a.scene, units, a.jobs, /*keep_vertices=*/!shard);
   }
   if (a.tolerance) {
-    if (!(*a.tolerance > 0 && std::isfinite(*a.tolerance)))
-      throw SceneError("--tolerance: must be a finite number > 0");
-    scene.tolerance = *a.tolerance;
+    // A unit suffix is converted to the scene's unit, which is known by now.
+    const auto length = parse_length(*a.tolerance);
+    if (!length)
+      throw SceneError("--tolerance: expected a length such as 0.05 or 0.05mm (units " +
+                       std::string(kUnitNames) + "), got \"" + *a.tolerance + "\"");
+    const double tolerance = length_in(*length, scene.units.value_or("mm"));
+    if (!(tolerance > 0 && std::isfinite(tolerance)))
+      throw SceneError("--tolerance: must be a finite length > 0");
+    scene.tolerance = tolerance;
   }
   if (!scene.tolerance)
     throw SceneError(scene.path + ": no tolerance: give \"tolerance\" in the scene or --tolerance");
+  if (const auto empty = empty_scene_problem(scene); empty && !a.allow_empty)
+    throw SceneError(*empty);
   scene.solver.apply(solver);
   if (!a.method.empty()) {
     const auto m = parse_method(a.method);
@@ -92,9 +102,23 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
   const auto load_start = std::chrono::steady_clock::now();
   SolverSettings solver;
   out.scene = load_scene(a, out.shard.has_value(), in, solver);
-  // The CI inputs are read before the run: a malformed file costs no solve.
-  if (!a.reuse.empty()) out.prior = load_prior_report(a.reuse);
+  // The CI inputs are read before the run: a malformed file costs no solve. A
+  // prior report in another unit is refused; other settings that differ are said.
+  const ReportContext run_settings{out.scene.path, out.scene.units.value_or("mm"),
+                                   *out.scene.tolerance, solver};
+  if (!a.reuse.empty()) {
+    PriorSettings s;
+    out.prior = load_prior_report(a.reuse, &s);
+    out.prior_warnings = check_prior_settings("--reuse", a.reuse, s, run_settings);
+  }
   load_review_inputs(a.review, *out.scene.tolerance, out.review);
+  if (out.review.baseline)
+    for (const auto& w : check_prior_settings("--baseline", out.review.baseline->path,
+                                              out.review.baseline->settings, run_settings))
+      out.prior_warnings.push_back(w);
+  out.review.options.units = run_settings.units;
+  // A shard's parts are some of the scene's: its merge judges an empty run.
+  out.review.options.allow_empty = a.allow_empty || out.shard.has_value();
   if (out.scene.pairs) {
     out.review.options.listed.emplace();
     for (const auto& [x, y] : *out.scene.pairs)

@@ -8,6 +8,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "batch/run.h"
 #include "report/extra_outputs.h"
@@ -21,7 +22,7 @@ namespace pd {
 struct CheckArgs {
   std::string scene;  ///< a scene file, or - for standard input
   std::string units, method, pieces;
-  std::optional<double> tolerance;
+  std::optional<std::string> tolerance;  ///< a length: "0.05", "0.05mm" (scene/units.h)
   std::optional<std::uint64_t> seed;
   std::string format = "json";
   std::optional<std::string> output;
@@ -35,6 +36,7 @@ struct CheckArgs {
   bool quiet = false;
   std::string cache_dir;  ///< "" = the default cache directory
   bool no_cache = false;
+  bool allow_empty = false;  ///< --allow-empty: nothing to check is no error
 };
 
 /// The run to do. Not copyable: its review options point into its own files.
@@ -49,6 +51,8 @@ struct RunConfig {
   /// into `prior`: set it where the run is made).
   RunOptions options;
   double load_seconds = 0.0;  ///< reading the scene and the CI inputs
+  /// --reuse and --baseline written under other settings (report/prior_settings.h).
+  std::vector<std::string> prior_warnings;
 
   RunConfig() = default;
   RunConfig(const RunConfig&) = delete;
