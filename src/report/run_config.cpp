@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <istream>
 #include <iterator>
 
@@ -56,10 +57,19 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
   } else {
     scene = load_scene_file(a.scene, units, a.jobs, /*keep_vertices=*/!shard);
   }
-  if (a.tolerance) {
-    if (!(*a.tolerance > 0 && std::isfinite(*a.tolerance)))
-      throw SceneError("--tolerance: must be a finite number > 0");
-    scene.tolerance = *a.tolerance;
+  if (a.tolerance && *a.tolerance == "auto") {
+    if (!scene.auto_tolerance) {  // a scene's own auto keeps its clamps
+      scene.auto_tolerance = AutoTolerance{};
+      scene.tolerance = 0.0;
+    }
+  } else if (a.tolerance) {
+    const std::string& t = *a.tolerance;
+    char* end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    if (t.empty() || end != t.c_str() + t.size() || !(v > 0 && std::isfinite(v)))
+      throw SceneError("--tolerance: must be a finite number > 0 or auto, got \"" + t + "\"");
+    scene.tolerance = v;
+    scene.auto_tolerance.reset();
   }
   if (!scene.tolerance)
     throw SceneError(scene.path + ": no tolerance: give \"tolerance\" in the scene or --tolerance");

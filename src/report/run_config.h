@@ -21,7 +21,7 @@ namespace pd {
 struct CheckArgs {
   std::string scene;  ///< a scene file, or - for standard input
   std::string units, method, pieces;
-  std::optional<double> tolerance;
+  std::optional<std::string> tolerance;  ///< a number > 0, or "auto"
   std::optional<std::uint64_t> seed;
   std::string format = "json";
   std::optional<std::string> output;
