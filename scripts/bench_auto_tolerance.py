@@ -3,7 +3,7 @@
 tolerance against auto, with its parts inline (as scripts/make_assembly.py writes them: auto only
 reads their double step) and as binary STL files (auto measures every file's sag).
 
-usage: bench_auto_tolerance.py PDCHECK OUTDIR [--parts 10000] [--runs 3]
+usage: bench_auto_tolerance.py PDCHECK OUTDIR [--parts 10000] [--runs 3] [--only inline|stl]
 
 Writes OUTDIR/a.json (make_assembly.py), OUTDIR/meshes/*.stl (each prism as a closed float32 mesh:
 its n-gon caps fanned from their first vertex, its sides two triangles each) and OUTDIR/m.json (the
@@ -66,6 +66,7 @@ def main():
     ap.add_argument("outdir")
     ap.add_argument("--parts", type=int, default=10000)
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--only", choices=["inline", "stl"])
     a = ap.parse_args()
     os.makedirs(os.path.join(a.outdir, "meshes"), exist_ok=True)
     inline = os.path.join(a.outdir, "a.json")
@@ -93,7 +94,8 @@ def main():
     print("| scene | tolerance | cold: wall, CPU (s) | cached: wall, CPU (s) | interference / "
           "false_positive |")
     print("|---|---|---|---|---|")
-    for label in ("inline", "STL files"):
+    labels = {"inline": ["inline"], "stl": ["STL files"]}.get(a.only, ["inline", "STL files"])
+    for label in labels:
         results = {name: ([], [], [], [], None) for name, _ in scenes[label]}
         for _ in range(a.runs):  # interleaved, so a change in the machine's load hits all alike
             for name, args in scenes[label]:
