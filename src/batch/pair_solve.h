@@ -1,8 +1,8 @@
 // Solving one pair of parts: every piece pair, the deepest one counts.
 #pragma once
 
-#include "results/pair_result.h"
 #include "batch/pair_tolerance.h"
+#include "results/pair_result.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "solve/ipopt_local.h"
