@@ -41,7 +41,7 @@ std::pair<std::string, int> failure(const CheckArgs& a) {
 
 TEST(RunConfig, TheCommandLineOverridesTheScene) {
   CheckArgs a = demo_args();
-  a.tolerance = 0.25;
+  a.tolerance = "0.25";
   a.method = "grid";
   a.seed = std::uint64_t{1} << 60;
   a.pieces = "hull";
@@ -67,7 +67,7 @@ TEST(RunConfig, EachBadOptionIsAUserErrorNamingIt) {
   CheckArgs units = demo_args();
   units.units = "parsec";
   CheckArgs tolerance = demo_args();
-  tolerance.tolerance = -1.0;
+  tolerance.tolerance = "-1";
   CheckArgs method = demo_args();
   method.method = "guess";
   CheckArgs shard = demo_args();
