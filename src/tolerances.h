@@ -192,4 +192,21 @@ inline constexpr double kShardPairCost = 200.0;
 /// scene, with no eviction.
 inline constexpr long kInlineHullCacheVertices = 1000;
 
+/// Tessellation sag (geometry/tessellation_sag.h). Absolute angle, radians: an
+/// edge whose facets turn by at most this is a tessellation crease inside a
+/// smooth region; a sharper one is a design edge (a box's 90° edge). 50° reads
+/// an 8-segment cylinder (45° creases) as tessellated; an octagonal prism is
+/// read so too (declare its part's `sag` when that is wrong).
+inline constexpr double kSagCreaseAngle = 0.8726646259971648;  // 50°
+/// A corner normal more than acos(this) from its facet's normal (a cone's apex,
+/// whose normal the mesh does not define) gives no patch estimate for the
+/// facet: its crease estimate stands alone.
+inline constexpr double kSagPatchMinCos = 0.5;
+/// `tolerance: auto` (docs/numerics.md): a pair's band is the concave sags and
+/// coordinate steps of its two parts where they meet, times 1 + this. Relative:
+/// it covers the measurement's error (within 10 % on generated cylinders,
+/// spheres, tori and cones) and facets a little coarser than the region's
+/// measured worst.
+inline constexpr double kAutoToleranceMargin = 0.25;
+
 }  // namespace pd::tol

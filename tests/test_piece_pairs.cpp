@@ -139,7 +139,8 @@ TEST(PiecePairs, SeparatedPairReportsTheClosestPiecePairNotTheFirst) {
   EXPECT_NEAR(*r.distance, near, 1e-12);
   EXPECT_TRUE(separates(kNear, octahedron(1.0), r.direction));
   // The clearance check's distance is the same smallest one.
-  const PairResult c = solve_part_pair(0, a, 1, b, SolverSettings{}, 0.1, ipopt, {1.0, nullptr});
+  const PairResult c =
+      solve_part_pair(0, a, 1, b, SolverSettings{}, 0.1, ipopt, {1.0, nullptr, std::nullopt});
   EXPECT_EQ(c.status, Status::kClearanceViolation);
   ASSERT_TRUE(c.distance);
   EXPECT_NEAR(*c.distance, near, 1e-8);

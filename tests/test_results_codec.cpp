@@ -256,12 +256,32 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
   const auto j = pd::pair_to_report(r, "A", "B");
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys,
-            (std::vector<std::string>{
-                "a",        "b",        "fingerprint",  "status",     "depth",        "direction",
-                "margin",   "distance", "depth_source", "hull_depth", "depth_bounds", "confirmed",
-                "pieces",   "at",       "reason",       "clearance",  "motion",       "method",
-                "fallback", "warnings", "stats",        "time_ms",    "reused"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"a",
+                                            "b",
+                                            "fingerprint",
+                                            "status",
+                                            "tolerance",
+                                            "tolerance_source",
+                                            "tolerance_basis",
+                                            "depth",
+                                            "direction",
+                                            "margin",
+                                            "distance",
+                                            "depth_source",
+                                            "hull_depth",
+                                            "depth_bounds",
+                                            "confirmed",
+                                            "pieces",
+                                            "at",
+                                            "reason",
+                                            "clearance",
+                                            "motion",
+                                            "method",
+                                            "fallback",
+                                            "warnings",
+                                            "stats",
+                                            "time_ms",
+                                            "reused"}));
   EXPECT_EQ(j["direction"].dump(), "[0.0,0.6,0.8]");
   EXPECT_EQ(j["clearance"]["distance"], j["distance"]);  // repeated for the clearance check
   EXPECT_FALSE(j["stats"].contains("mlsl_iterations"));

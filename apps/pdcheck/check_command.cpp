@@ -38,7 +38,9 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
                  "a part list: one mesh path per line, or id<TAB>path)");
   app.add_option("--tolerance", a.tolerance,
                  "depth at or below which an interference is a discretization false positive, in "
-                 "the scene's unit or with a unit suffix (0.05mm, 0.002in); overrides the scene");
+                 "the scene's unit or with a unit suffix (0.05mm, 0.002in); overrides the scene. "
+                 "Or auto: each pair's own band from its parts' measured tessellation sag where "
+                 "they meet (docs/numerics.md)");
   app.add_option("--units", a.units,
                  "length unit of input that declares none (a part list, a scene without "
                  "\"units\"): mm, cm, m, in, ft; a scene declaring another unit is refused");
@@ -139,8 +141,9 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
     throw pd::UserError(std::string(e.what()) + "; the run stopped", e.exit_code());
   }
   const pd::Summary summary = pd::summarize(result);
-  const pd::ReportContext ctx{config.scene.path, config.scene.units.value_or("mm"),
-                              *config.scene.tolerance, opt.solver, config.load_seconds};
+  const pd::ReportContext ctx{config.scene.path,       config.scene.units.value_or("mm"),
+                              *config.scene.tolerance, opt.solver,
+                              config.load_seconds,     config.scene.auto_tolerance};
   const pd::Review review = pd::review_run(result, review_opt, summary.incomplete());
   const pd::ReportInput report{ctx, result, review, review_opt};
   // Streamed lines are out already; a file gets the same lines in report order.

@@ -6,6 +6,7 @@
 #include "file_hash.h"
 #include "hash.h"
 #include "solve/settings.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -89,11 +90,16 @@ void add_solver_settings(Hasher& h, const SolverSettings& s) {
   for_each_setting(s, AddSetting{h});
 }
 
-std::string settings_hash(const SolverSettings& s, double tolerance, const Checks& checks) {
+std::string settings_hash(const SolverSettings& s, double tolerance, const Checks& checks,
+                          const std::optional<AutoTolerance>& auto_tolerance) {
   Hasher h;
   h.add("pdcheck-settings-v1");
   add_solver_settings(h, s);
   h.add(tolerance);
+  if (auto_tolerance) {
+    h.add("tolerance-auto").add(auto_tolerance->min.value_or(-1.0));
+    h.add(auto_tolerance->max.value_or(-1.0)).add(tol::kAutoToleranceMargin);
+  }
   if (checks.clearance) {
     h.add("clearance").add(checks.clearance->min);
     for (const auto& e : checks.clearance->pairs) h.add(e.a).add(e.b).add(e.min);

@@ -36,6 +36,9 @@ void add_solver_settings(Hasher& h, const SolverSettings& s);
 
 /// Everything besides geometry that changes a pair's result: the solver settings,
 /// the tolerance and the checks (clearance, motion).
-std::string settings_hash(const SolverSettings& solver, double tolerance, const Checks& checks);
+/// `auto_tolerance`: tolerance auto and its clamps (each pair's band then
+/// follows from its parts' content, which the part hashes hold).
+std::string settings_hash(const SolverSettings& solver, double tolerance, const Checks& checks,
+                          const std::optional<AutoTolerance>& auto_tolerance = std::nullopt);
 
 }  // namespace pd

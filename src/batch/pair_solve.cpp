@@ -112,8 +112,17 @@ double pair_size(const Part& a, const Part& b) {
   return rounding_scale(a.box.merged(b.box));
 }
 
+void note_pair_tolerance(PairResult& r, const PairChecks& c) {
+  if (!c.tolerance) return;
+  r.tolerance = c.tolerance->value;
+  r.tolerance_source = c.tolerance->source;
+  r.tolerance_basis = c.tolerance->basis;
+}
+
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
-                           double tolerance, IpoptLocalSolver& ipopt, const PairChecks& checks) {
+                           double scene_tolerance, IpoptLocalSolver& ipopt,
+                           const PairChecks& checks) {
+  const double tolerance = pair_tolerance_of(checks, scene_tolerance);
   const auto t0 = std::chrono::steady_clock::now();
   PairResult r;
   r.a = ia;

@@ -1,6 +1,7 @@
 // Solving one pair of parts: every piece pair, the deepest one counts.
 #pragma once
 
+#include "batch/pair_tolerance.h"
 #include "results/pair_result.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
@@ -11,9 +12,18 @@ namespace pd {
 
 /// What a pair is checked for beyond the static depth; empty for a static scene.
 struct PairChecks {
-  std::optional<double> clearance;      ///< the required clearance
-  const MotionCheck* motion = nullptr;  ///< set when a part of the pair moves
+  std::optional<double> clearance;         ///< the required clearance
+  const MotionCheck* motion = nullptr;     ///< set when a part of the pair moves
+  std::optional<PairTolerance> tolerance;  ///< tolerance auto: the pair's own band
 };
+
+/// The tolerance the pair is decided against: its own band under auto, else `scene`.
+inline double pair_tolerance_of(const PairChecks& c, double scene) {
+  return c.tolerance ? c.tolerance->value : scene;
+}
+
+/// Records in `r` the band it was decided against, under auto (report fields).
+void note_pair_tolerance(PairResult& r, const PairChecks& c);
 
 /// The rounding scale of a pair: input coordinates were rounded at their absolute
 /// magnitude, so the box's distance from the origin counts as well as its size

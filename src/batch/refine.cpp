@@ -188,7 +188,6 @@ MeshVerdict mesh_verdict(const PreparedMesh* a, const PreparedMesh* b, bool vert
 // concavity tolerance of its instances, from the cache when it has it.
 void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
                      const RunOptions& options) {
-  const double concavity_tol = tol::kConcavityFraction * options.tolerance;
   struct FileJob {
     const Part* first = nullptr;
     double tol = 0.0;  ///< file units
@@ -199,7 +198,7 @@ void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
   for (int k : which) {
     const PartSurface& s = *parts[k].surface;
     FileJob& f = files[s.file_hash];
-    const double t = concavity_tol / s.stretch;
+    const double t = s.concavity_tol / s.stretch;  // the tolerance its convexity was measured at
     if (!f.first || t < f.tol) f.tol = t;
     if (!f.first) f.first = &parts[k];
   }
@@ -380,7 +379,8 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     parallel_for(thick.size(), options.jobs, [&](size_t k) {
       const size_t n = thick[k];
       const auto [a, b] = pairs[flagged[n]];
-      thickness[n] = measure_thickness(*solids[a], *solids[b], options.tolerance,
+      thickness[n] = measure_thickness(*solids[a], *solids[b],
+                                       pair_tolerance_of(checks(a, b), options.tolerance),
                                        results[flagged[n]], verdicts[n], why_not[n]);
       progress.tick();
     });
@@ -419,11 +419,13 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     const bool complete = (!pa.decomposition || pa.decomposition->complete) &&
                           (!pb.decomposition || pb.decomposition->complete);
     PairResult& r = results[flagged[n]];
+    const double tolerance = pair_tolerance_of(checks(a, b), options.tolerance);
     r = thickness[n]
-            ? decide_thickness(r, verdicts[n], *thickness[n], options.tolerance, pair_size(pa, pb),
+            ? decide_thickness(r, verdicts[n], *thickness[n], tolerance, pair_size(pa, pb),
                                why_not[n])
             : decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr,
-                             complete, options.tolerance, pair_size(pa, pb));
+                             complete, tolerance, pair_size(pa, pb));
+    note_pair_tolerance(r, checks(a, b));
     // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
     if (!keys.empty() && r.status != Status::kError) {
       const bool solved = std::find(solve.begin(), solve.end(), n) != solve.end();
@@ -437,6 +439,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
     hit.result.a = r.a;
     hit.result.b = r.b;
     r = std::move(hit.result);
+    note_pair_tolerance(r, checks(r.a, r.b));
     if (options.on_pair) options.on_pair(r, parts);
   }
 }

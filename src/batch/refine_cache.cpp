@@ -47,6 +47,7 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
   h.add(options.tolerance).add(options.pair_timeout);
   add_solver_settings(h, options.solver);
   h.add(checks.clearance ? *checks.clearance : -1.0);
+  h.add(checks.tolerance ? checks.tolerance->value : -1.0);
   for (double x :
        {tol::kConcavityFraction, tol::kDecomposeSeconds,
         static_cast<double>(tol::kThicknessMaxEvaluations), tol::kThicknessSeconds,

@@ -87,7 +87,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   const std::map<std::string, std::string> file_hashes = mesh_file_hashes(scene);
   const std::vector<std::string> hashes = part_content_hashes(scene, file_hashes);
   out.scene_hash = scene_content_hash(scene, hashes);
-  out.settings_hash = settings_hash(options.solver, options.tolerance, scene.checks);
+  out.settings_hash =
+      settings_hash(options.solver, options.tolerance, scene.checks, scene.auto_tolerance);
   // A shard plans the whole scene without hulls, then loads only its parts.
   std::optional<ScenePlan> plan;
   std::vector<int> loaded;  // scene index of each loaded part (a shard's)
@@ -99,6 +100,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     shard_scene.path = scene.path;
     shard_scene.units = scene.units;
     shard_scene.tolerance = scene.tolerance;
+    shard_scene.auto_tolerance = scene.auto_tolerance;
     shard_scene.checks = scene.checks;
     for (int k : loaded) shard_scene.parts.push_back(scene.parts[k]);
     read_inline_vertices(shard_scene);  // only this shard's parts (scene/scene.h)
@@ -125,7 +127,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   out.simulated = {"interference"};
   if (checks.clearance) out.simulated.push_back("clearance");
   if (checks.motion) out.simulated.push_back("motion");
-  const auto pair_checks = pair_checks_of(parts, checks);
+  const auto pair_checks =
+      pair_checks_of(parts, checks, scene.auto_tolerance, scene.units.value_or("mm"));
 
   CandidatePairs candidates;
   if (plan) {

@@ -89,15 +89,18 @@ CandidatePairs shard_pairs(const ScenePlan& plan, const ShardSpec& shard,
   return out;
 }
 
-std::function<PairChecks(int, int)> pair_checks_of(const std::vector<Part>& parts,
-                                                   const Checks& checks) {
+std::function<PairChecks(int, int)> pair_checks_of(
+    const std::vector<Part>& parts, const Checks& checks,
+    const std::optional<AutoTolerance>& auto_tolerance, const std::string& units) {
   // Clearance per pair: the scene's minimum, or a named pair's own.
   std::map<std::pair<std::string, std::string>, double> own_clearance;
   if (checks.clearance)
     for (const auto& e : checks.clearance->pairs)
       own_clearance[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.min;
-  return [&parts, &checks, own_clearance](int a, int b) {
+  return [&parts, &checks, own_clearance, auto_tolerance, units](int a, int b) {
     PairChecks pc;
+    if (auto_tolerance && parts[a].sag && parts[b].sag)
+      pc.tolerance = pair_tolerance(parts[a], parts[b], *auto_tolerance, units);
     if (checks.clearance) {
       const auto it = own_clearance.find(
           {std::min(parts[a].id, parts[b].id), std::max(parts[a].id, parts[b].id)});
@@ -140,6 +143,7 @@ void solve_pairs(const std::vector<Part>& parts, const std::vector<std::pair<int
   };
   auto done = [&](size_t k, PairResult r) {
     note_hull_stage(r, parts[r.a], parts[r.b]);
+    note_pair_tolerance(r, checks(r.a, r.b));
     results[k] = r;
     if (options.on_pair && !needs_refinement(r, parts[r.a], parts[r.b])) options.on_pair(r, parts);
   };

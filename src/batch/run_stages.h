@@ -41,8 +41,12 @@ CandidatePairs shard_pairs(const ScenePlan& plan, const ShardSpec& shard,
 
 /// The checks of the pair of parts (a, b): its clearance (the scene's minimum,
 /// or the pair's own) and the motion when either part moves.
-std::function<PairChecks(int, int)> pair_checks_of(const std::vector<Part>& parts,
-                                                   const Checks& checks);
+/// `auto_tolerance`: each pair also gets its own band (batch/pair_tolerance.h);
+/// `units` names the scene unit in its basis.
+std::function<PairChecks(int, int)> pair_checks_of(
+    const std::vector<Part>& parts, const Checks& checks,
+    const std::optional<AutoTolerance>& auto_tolerance = std::nullopt,
+    const std::string& units = "mm");
 
 /// --reuse (options.reuse): each pair whose old result stands (batch/reuse.h;
 /// never a pair of a nonconvex part, which the refinement takes on) gets it in

@@ -237,6 +237,43 @@ Mesh hollow_box(const Vec3& lo, const Vec3& hi, double wall) {
   return joined({box(lo, hi), flipped(box(lo + w, hi - w))});
 }
 
+Mesh revolution(const std::vector<Vec2>& profile, int segments) {
+  const int n = static_cast<int>(profile.size());
+  std::vector<std::vector<int>> ring(n);  // per profile point: its vertices
+  std::vector<Vec3> v;
+  for (int i = 0; i < n; ++i) {
+    const Vec2& p = profile[i];
+    if (p.x() <= 0) {
+      ring[i].assign(segments, static_cast<int>(v.size()));
+      v.emplace_back(0.0, 0.0, p.y());
+      continue;
+    }
+    for (int k = 0; k < segments; ++k) {
+      ring[i].push_back(static_cast<int>(v.size()));
+      const double a = 2 * M_PI * k / segments;
+      v.emplace_back(p.x() * std::cos(a), p.x() * std::sin(a), p.y());
+    }
+  }
+  std::vector<std::array<int, 3>> t;
+  for (int i = 0; i < n; ++i) {
+    const std::vector<int>&a = ring[i], &b = ring[(i + 1) % n];
+    for (int k = 0; k < segments; ++k) {
+      const int k1 = (k + 1) % segments;
+      // Profile edge a → b counter-clockwise in (ρ, z): its outward side faces
+      // right of the direction of travel; the quad a_k, b_k, b_k1, a_k1.
+      if (a[k] != a[k1]) t.push_back({a[k], a[k1], b[k]});
+      if (b[k] != b[k1]) t.push_back({a[k1], b[k1], b[k]});
+    }
+  }
+  Mesh m;
+  m.vertices.resize(3, static_cast<long>(v.size()));
+  for (size_t i = 0; i < v.size(); ++i) m.vertices.col(static_cast<long>(i)) = v[i];
+  m.triangles.resize(3, static_cast<long>(t.size()));
+  for (size_t i = 0; i < t.size(); ++i)
+    for (int k = 0; k < 3; ++k) m.triangles(k, static_cast<long>(i)) = t[i][k];
+  return m;
+}
+
 Mesh translated(Mesh m, const Vec3& offset) {
   m.vertices.colwise() += offset;
   return m;

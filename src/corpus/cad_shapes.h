@@ -52,6 +52,13 @@ Mesh hollow_box(const Vec3& lo, const Vec3& hi, double wall);
 Mesh stepped_shaft(double shank_radius, double head_radius, double z0, double z1, double z2,
                    int segments);
 
+/// The solid of revolution about the z axis of a closed profile polygon in the
+/// (ρ, z) half-plane (ρ >= 0, counter-clockwise): each profile point with ρ > 0
+/// becomes a ring of `segments` vertices on its true circle (the first at
+/// angle 0), one with ρ = 0 a single vertex on the axis. Watertight, outward.
+/// Cylinders, tubes (a bore is their inner wall), UV spheres, tori and cones.
+Mesh revolution(const std::vector<Vec2>& profile, int segments);
+
 /// Every vertex moved by `offset`.
 Mesh translated(Mesh m, const Vec3& offset);
 

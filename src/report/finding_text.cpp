@@ -23,6 +23,7 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
                          const PairReview& review, const std::string& units, double tolerance) {
   const std::string& a = parts[r.a].id;
   const std::string& b = parts[r.b].id;
+  if (r.tolerance) tolerance = *r.tolerance;  // tolerance auto: the pair's own band
   std::string t = a + " / " + b + ": " + status_name(r.status);
   if (r.status == Status::kError) return t + ": " + r.error;
   // A unit vector: components below 1e-12 are rounding noise, shown as 0.
@@ -55,6 +56,13 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
     if (r.depth_source == "hull")
       t += "; moving " + b + " by the depth along " + dir + " separates the pair";
   }
+  // Under tolerance auto, say what the band rests on: a false positive is
+  // explained by the features whose tessellation can make that much overlap.
+  if (r.tolerance && (r.status == Status::kFalsePositive || r.status == Status::kInterference ||
+                      r.status == Status::kUndecided))
+    t += (r.status == Status::kFalsePositive ? "; a tessellation artefact within the band of "
+                                             : "; band from ") +
+         r.tolerance_source + " sag (" + r.tolerance_basis + ")";
   if (review.baseline_state)
     t += "; baseline: " + std::string(baseline_state_name(*review.baseline_state));
   if (review.suppressed) t += "; suppressed: " + review.suppressed->reason;

@@ -15,7 +15,11 @@ namespace pd {
 /// "false_positive: overlap thickness 0.02 mm <= tolerance 0.05 mm (certified
 /// between 0.02 and 0.03 mm)" (nonconvex pairs: no move is claimed);
 /// "undecided: depth between 0.02 and 0.3 mm, tolerance 0.05 mm (why)"; with
-/// the baseline state and suppression when set.
+/// the baseline state and suppression when set. Under tolerance auto the
+/// pair's own band replaces `tolerance`, and a finding says what it rests on:
+/// "false_positive: overlap thickness 0.08 mm <= tolerance 0.12 mm; a
+/// tessellation artefact within the band of measured sag (bushing: bore r 20
+/// mm, 32 segments, sag 0.0963 mm; pin: …)".
 std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
                          const PairReview& review, const std::string& units, double tolerance);
 

@@ -83,6 +83,10 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
     if (p.resolution) j["resolution"] = *p.resolution;
     if (k < r.part_hashes.size()) j["content_hash"] = r.part_hashes[k];
     if (p.convex) j["convex"] = *p.convex;
+    if (p.sag) {
+      j["sag"] = {{"concave", p.sag->measured.concave}, {"convex", p.sag->measured.convex}};
+      if (p.sag->declared) j["sag"]["declared"] = *p.sag->declared;
+    }
     if (p.decomposition) {
       j["decomposition_seconds"] = p.decomposition->seconds;
       j["cached"] = p.decomposition->cached;
@@ -115,6 +119,12 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
                 {"broad_phase", r.stages.broad_phase},
                 {"solve", r.stages.solve},
                 {"refine", r.stages.refine}}}};
+  if (ctx.auto_tolerance) {
+    json a = json::object();
+    if (ctx.auto_tolerance->min) a["min"] = *ctx.auto_tolerance->min;
+    if (ctx.auto_tolerance->max) a["max"] = *ctx.auto_tolerance->max;
+    doc["tolerance_auto"] = a;
+  }
   if (!r.scene_hash.empty())
     doc["hashes"] = {{"scene", r.scene_hash}, {"settings", r.settings_hash}};
   if (r.shard) doc["shard"] = shard_json(*r.shard);

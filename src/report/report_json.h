@@ -2,6 +2,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "batch/run_result.h"
@@ -15,6 +16,7 @@ struct ReportContext {
   double tolerance = 0.0;
   SolverSettings solver;
   double load_seconds = 0.0;  ///< reading and parsing the scene (before run_scene)
+  std::optional<AutoTolerance> auto_tolerance;  ///< tolerance auto (each pair its own)
 };
 
 /// The run's counts (results/summary.h).

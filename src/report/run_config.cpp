@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <istream>
 #include <iterator>
 
@@ -58,16 +59,22 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
   } else {
     scene = load_scene_file(a.scene, units, a.jobs, /*keep_vertices=*/!shard);
   }
-  if (a.tolerance) {
+  if (a.tolerance && *a.tolerance == "auto") {
+    if (!scene.auto_tolerance) {  // a scene's own auto keeps its clamps
+      scene.auto_tolerance = AutoTolerance{};
+      scene.tolerance = 0.0;
+    }
+  } else if (a.tolerance) {
     // A unit suffix is converted to the scene's unit, which is known by now.
     const auto length = parse_length(*a.tolerance);
     if (!length)
       throw SceneError("--tolerance: expected a length such as 0.05 or 0.05mm (units " +
-                       std::string(kUnitNames) + "), got \"" + *a.tolerance + "\"");
+                       std::string(kUnitNames) + "), or auto, got \"" + *a.tolerance + "\"");
     const double tolerance = length_in(*length, scene.units.value_or("mm"));
     if (!(tolerance > 0 && std::isfinite(tolerance)))
       throw SceneError("--tolerance: must be a finite length > 0");
     scene.tolerance = tolerance;
+    scene.auto_tolerance.reset();
   }
   if (!scene.tolerance)
     throw SceneError(scene.path + ": no tolerance: give \"tolerance\" in the scene or --tolerance");
@@ -104,8 +111,9 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
   out.scene = load_scene(a, out.shard.has_value(), in, solver);
   // The CI inputs are read before the run: a malformed file costs no solve. A
   // prior report in another unit is refused; other settings that differ are said.
-  const ReportContext run_settings{out.scene.path, out.scene.units.value_or("mm"),
-                                   *out.scene.tolerance, solver};
+  const ReportContext run_settings{
+      out.scene.path,          out.scene.units.value_or("mm"), *out.scene.tolerance, solver, 0.0,
+      out.scene.auto_tolerance};
   if (!a.reuse.empty()) {
     PriorSettings s;
     out.prior = load_prior_report(a.reuse, &s);

@@ -22,7 +22,7 @@ namespace pd {
 struct CheckArgs {
   std::string scene;  ///< a scene file, or - for standard input
   std::string units, method, pieces;
-  std::optional<std::string> tolerance;  ///< a length: "0.05", "0.05mm" (scene/units.h)
+  std::optional<std::string> tolerance;  ///< a length ("0.05", "0.05mm"; scene/units.h) or "auto"
   std::optional<std::uint64_t> seed;
   std::string format = "json";
   std::optional<std::string> output;

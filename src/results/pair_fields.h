@@ -44,6 +44,10 @@ auto for_each_field(M& m, Visit&& visit) -> IfFieldsOf<M, MotionTrace> {
 template <class R, class Visit>
 auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"status"}, r.status);
+  // tolerance auto: the pair's own band and what it rests on (absent otherwise).
+  visit(Field{"tolerance"}, r.tolerance);
+  visit(Field{"tolerance_source"}.unless_empty(), r.tolerance_source);
+  visit(Field{"tolerance_basis"}.unless_empty(), r.tolerance_basis);
   // The report gives an error pair its error alone, a decided pair its answer.
   const bool decided = r.status != Status::kError;
   visit(Field{"error"}.when(!decided), r.error);

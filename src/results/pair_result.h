@@ -71,6 +71,10 @@ struct PairResult {
   std::optional<Vec3> at;  ///< where the depth was found (nonconvex pairs: the thickest overlap)
   std::string reason;      ///< why an undecided pair stayed undecided
   bool reused = false;     ///< taken from an earlier report (--reuse), not solved
+  // tolerance auto (docs/numerics.md): the pair's own band and what it rests on.
+  std::optional<double> tolerance;
+  std::string tolerance_source;  ///< "measured" or "declared"
+  std::string tolerance_basis;   ///< the features, one clause per part
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

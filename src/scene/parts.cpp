@@ -18,6 +18,7 @@
 #include "scene/convexity_cache.h"
 #include "scene/hull_cache.h"
 #include "scene/mesh_loader.h"
+#include "scene/sag_cache.h"
 #include "scene/setup_warnings.h"
 #include "tolerances.h"
 
@@ -69,7 +70,28 @@ struct MeshFile {
   double concavity = 0.0;  ///< file units
   bool closed = false;
   double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
+  // Under tolerance auto: the sag (file units), and the concavity tolerance it
+  // gives the file (scene units).
+  std::optional<TessellationSag> sag;
+  bool sag_cached = false;
+  double concavity_tol = 0.0;
 };
+
+// A file's sag: each of its meshes measured on its own (welding across meshes
+// would join unrelated instances), the features of all of them.
+TessellationSag file_sag(const std::vector<Mesh>& meshes) {
+  TessellationSag all;
+  for (const Mesh& m : meshes) {
+    TessellationSag s = measure_tessellation_sag(m, CoordinateStorage::kFloat32);
+    all.concave = std::max(all.concave, s.concave);
+    all.convex = std::max(all.convex, s.convex);
+    all.resolution = std::max(all.resolution, s.resolution);
+    all.creases += s.creases;
+    all.design_edges += s.design_edges;
+    all.features.insert(all.features.end(), s.features.begin(), s.features.end());
+  }
+  return all;
+}
 
 bool keeps_surface(Pieces p) {
   return p == Pieces::kAuto || p == Pieces::kDecompose;
@@ -121,7 +143,31 @@ bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   return true;
 }
 
-void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache) {
+// The file's sag from the cache, when an earlier run stored it: true if found.
+bool cached_sag(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
+  if (cache.dir.empty()) return false;
+  if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
+  auto hit = read_cached_sag(cache.dir, sag_key(f.hash, spec.pieces == Pieces::kMeshes));
+  if (!hit) return false;
+  f.sag = std::move(*hit);
+  f.sag_cached = true;
+  return true;
+}
+
+// Under tolerance auto, the concavity tolerance of a file: kConcavityFraction
+// of the band two copies of it get at their worst features, its coordinate
+// noise standing for the resolution (a float32 file far from the origin is
+// not concave by its rounding). Scene units, at the file's largest stretch.
+double auto_concavity_tol(const MeshFile& f, const AutoTolerance& a) {
+  const double s = f.sag->concave * f.max_stretch;
+  double noise = 0.0;
+  for (const Points& p : f.reduced) noise = std::max(noise, coordinate_noise(p));
+  noise *= f.max_stretch;
+  return tol::kConcavityFraction * a.band(s, s, noise, noise);
+}
+
+void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache,
+          const AutoTolerance* auto_tol) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
@@ -137,6 +183,15 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
         write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
                            {f.counts, f.reduced, f.warnings});
     }
+    if (auto_tol && !f.sag) {
+      f.sag = file_sag(meshes);
+      if (!cache.dir.empty()) {
+        if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
+        write_cached_sag(cache.dir, sag_key(f.hash, spec.pieces == Pieces::kMeshes), *f.sag);
+      }
+    }
+    if (auto_tol) concavity_tol = auto_concavity_tol(f, *auto_tol);
+    f.concavity_tol = concavity_tol;
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
       if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
@@ -163,6 +218,7 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
   s.placement = placement(spec);
   s.stretch = stretch(s.placement);
   s.concavity = f.concavity * s.stretch;
+  s.concavity_tol = f.concavity_tol;
   s.closed = f.closed;
   if (!convex || spec.pieces == Pieces::kDecompose) {  // only what a refinement can use
     Mesh placed;
@@ -187,15 +243,15 @@ Hull inline_hull(const PartSpec& spec, const PartsCache& cache) {
 }
 
 /// One part from its spec; `file` is its mesh file, shared with other instances.
-Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
-                const PartsCache& cache) {
+Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, const PartsCache& cache,
+                const AutoTolerance* auto_tol) {
   Part part;
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
   part.mode = spec.pieces;
   if (file) {
     std::call_once(file->loaded, [&] {
-      load(spec, *file, concavity_tol, cache);
+      load(spec, *file, concavity_tol, cache, auto_tol);
     });  // the first instance reduces it
     if (file->error) {
       part.error = file->error;
@@ -225,8 +281,15 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol,
         std::max(part.box.lo.cwiseAbs().maxCoeff(), part.box.hi.cwiseAbs().maxCoeff());
     part.resolution =
         coordinate_resolution(max_abs, file != nullptr, stretch(placement(spec)), placed_max_abs);
+    if (auto_tol) {
+      PartSag sag;
+      if (file) sag.measured = placed_sag(*file->sag, placement(spec), stretch(placement(spec)));
+      sag.measured.resolution = *part.resolution;  // one owner: the part's resolution
+      sag.declared = spec.sag;
+      part.sag = std::move(sag);
+    }
     if (file && file->mesh) {
-      part.convex = file->concavity * stretch(placement(spec)) <= concavity_tol;
+      part.convex = file->concavity * stretch(placement(spec)) <= file->concavity_tol;
       part.surface = surface_of(spec, *file, *part.convex);
     }
   } catch (const std::exception& e) {
@@ -274,6 +337,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   // Importer its own, and build_part catches whatever it throws. The first
   // instance of a mesh file reduces it; others of the same file wait for it.
   const double concavity_tol = tol::kConcavityFraction * scene.tolerance.value_or(0.0);
+  const AutoTolerance* auto_tol = scene.auto_tolerance ? &*scene.auto_tolerance : nullptr;
   std::vector<Part> built(unique.size());
   std::vector<MeshFile> mesh_files(files.size());
   // Every mesh file is read first, in loader processes: forked here, while
@@ -286,8 +350,10 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     if (!file_of[u] || planned[*file_of[u]]) continue;
     const size_t f = *file_of[u];
     planned[f] = true;
-    if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces))
+    if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces) &&
+        (!auto_tol || cached_sag(*unique[u], mesh_files[f], cache)))
       continue;
+    if (auto_tol) cached_sag(*unique[u], mesh_files[f], cache);
     requests.push_back({*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes});
     requested.push_back(f);
   }
@@ -305,7 +371,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
     built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr,
-                          concavity_tol, cache);
+                          concavity_tol, cache, auto_tol);
     if (on_built) on_built(users[u]);
   });
 

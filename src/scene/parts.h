@@ -12,6 +12,7 @@
 #include "geometry/hull.h"
 #include "geometry/mesh.h"
 #include "geometry/motion.h"
+#include "geometry/tessellation_sag.h"
 #include "scene/mesh_loader.h"
 #include "scene/scene.h"
 
@@ -26,8 +27,9 @@ struct PartSurface {
   Mat4 placement = Mat4::Identity();      ///< file → scene units (units, then transform)
   double stretch = 1.0;                   ///< the placement's largest stretch factor
   double concavity = 0.0;                 ///< the file's measured nonconvexity, scene units
-  bool closed = false;                    ///< the file's mesh bounds a solid
-  std::shared_ptr<const Mesh> mesh;       ///< placed (scene units), when nonconvex
+  double concavity_tol = 0.0;  ///< what it was measured against (scene units; per file under auto)
+  bool closed = false;         ///< the file's mesh bounds a solid
+  std::shared_ptr<const Mesh> mesh;  ///< placed (scene units), when nonconvex
 };
 
 /// A part's convex decomposition, once the batch stage has made one (placed).
@@ -37,6 +39,13 @@ struct PartDecomposition {
   bool cached = false;   ///< read from the decomposition cache
   bool complete = true;  ///< false: time box or failure; the pieces are a fallback
   std::string note;
+};
+
+/// A part's tessellation sag, measured under `tolerance: auto` (docs/numerics.md).
+struct PartSag {
+  TessellationSag measured;  ///< placed: scene units (an inline part: its resolution only)
+  std::optional<double>
+      declared;  ///< the part's `sag` (scene units): replaces the measured concave sag
 };
 
 struct Part {
@@ -56,6 +65,7 @@ struct Part {
   /// (float32 for mesh files, as assimp stores them; double inline), carried by
   /// its placement (geometry/coordinate_resolution.h). Set for usable parts.
   std::optional<double> resolution;
+  std::optional<PartSag> sag;  ///< under tolerance auto
 
   /// Whether a pair flagged by the hull stage must look past this part's hull.
   bool refinable() const {
@@ -83,7 +93,10 @@ struct PartsCache {
 /// limit) and `load_memory_mb` (load_meshes_isolated): a reader that hangs,
 /// crashes or allocates without end costs only its file's parts. Forks: call
 /// it from a process with one thread.
-/// `cache`: where measured convexities are cached (PartsCache). `before_load`:
+/// `cache`: where measured convexities are cached (PartsCache). Under
+/// `scene.auto_tolerance` every part's sag is measured (once per file, cached
+/// beside the hulls) and a file's concavity tolerance is kConcavityFraction of
+/// the band two copies of it would get. `before_load`:
 /// fault injection for tests (mesh_loader.h).
 std::vector<Part> build_parts(const SceneSpec& scene, int threads = 1,
                               const std::function<void(size_t)>& on_built = {},

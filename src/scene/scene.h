@@ -55,6 +55,19 @@ struct PartSpec {
   Mat4 transform = Mat4::Identity();
   Pieces pieces = Pieces::kAuto;      ///< the hull, refined where it flags a nonconvex part
   std::optional<RigidMotion> motion;  ///< only with checks.motion
+  /// The concave sag its exporter was set to (scene units): replaces the
+  /// measured one under `tolerance: auto`.
+  std::optional<double> sag;
+};
+
+/// `"tolerance": "auto"` (docs/numerics.md, "Tessellation sag"): each pair's
+/// band from its parts' measured sags and coordinate steps where they meet,
+/// clamped to [min, max] when given (scene units).
+struct AutoTolerance {
+  std::optional<double> min, max;
+  /// The band of two parts of concave sags sa, sb and coordinate steps ra, rb
+  /// where they meet: (sa + sb + ra + rb)·(1 + kAutoToleranceMargin), clamped.
+  double band(double sa, double sb, double ra, double rb) const;
 };
 
 /// Effects beyond the static check, computed only when the scene asks.
@@ -90,7 +103,10 @@ struct SolverOverrides {
 struct SceneSpec {
   std::string path;  ///< the scene file, or "-" for standard input
   std::optional<std::string> units;
+  /// A fixed tolerance; under `auto` the nominal one (its `min`, else 0) where
+  /// one number stands for the scene (the baseline's `updated` rule).
   std::optional<double> tolerance;
+  std::optional<AutoTolerance> auto_tolerance;  ///< "tolerance": "auto" or {"auto": true, …}
   std::vector<PartSpec> parts;
   std::optional<std::vector<std::pair<std::string, std::string>>> pairs;
   SolverOverrides solver;

@@ -121,7 +121,7 @@ Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
 PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
               const std::string& scene_units, std::optional<Points>* scanned) {
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
-  only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces", "motion"});
+  only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces", "motion", "sag"});
   PartSpec p;
   p.where = c.file + ": " + at;
   if (!j.contains("id")) c.fail(at, "missing \"id\"");
@@ -145,6 +145,11 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     p.to_scene_units = mesh_to_scene_units(*p.mesh, scene_units);  // glTF: metres
   }
   if (j.contains("transform")) p.transform = transform(c, j["transform"], at + ".transform");
+  if (j.contains("sag")) {
+    const double v = number(c, j["sag"], at + ".sag");
+    if (!(v >= 0)) c.fail(at + ".sag", "must be >= 0");
+    p.sag = v * p.to_scene_units;  // the part's units, as its vertices
+  }
   if (j.contains("pieces")) {
     const std::string v = string(c, j["pieces"], at + ".pieces");
     const std::optional<Pieces> mode = parse_pieces(v);
@@ -319,6 +324,38 @@ json parse_json(std::string_view text, const std::string& path) {
   }
 }
 
+/// "tolerance": a number > 0, "auto", or {"auto": true, "min": …, "max": …}.
+void tolerance(const Ctx& c, const json& j, SceneSpec& s) {
+  if (j.is_string()) {
+    if (j.get<std::string>() != "auto")
+      c.fail("tolerance", "expected a number > 0, \"auto\" or {\"auto\": true, ...}, got \"" +
+                              j.get<std::string>() + "\"");
+    s.auto_tolerance = AutoTolerance{};
+    s.tolerance = 0.0;
+    return;
+  }
+  if (j.is_object()) {
+    only_keys(c, j, "tolerance", {"auto", "min", "max"});
+    if (!j.contains("auto") || !j["auto"].is_boolean() || !j["auto"].get<bool>())
+      c.fail("tolerance.auto", "expected true");
+    AutoTolerance a;
+    if (j.contains("min")) {
+      a.min = number(c, j["min"], "tolerance.min");
+      if (!(*a.min > 0)) c.fail("tolerance.min", "must be > 0");
+    }
+    if (j.contains("max")) {
+      a.max = number(c, j["max"], "tolerance.max");
+      if (!(*a.max > 0)) c.fail("tolerance.max", "must be > 0");
+      if (a.min && *a.max < *a.min) c.fail("tolerance.max", "must be >= tolerance.min");
+    }
+    s.auto_tolerance = a;
+    s.tolerance = a.min.value_or(0.0);
+    return;
+  }
+  s.tolerance = number(c, j, "tolerance");
+  if (!(*s.tolerance > 0)) c.fail("tolerance", "must be > 0");
+}
+
 /// Everything but the parts (they are converted by `scene_part`): the fields a
 /// part's conversion needs (units, checks.motion) are read first.
 SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::string>& units) {
@@ -337,10 +374,7 @@ SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::s
                         "\": a declared unit is never reinterpreted (drop --units, or change the "
                         "scene's \"units\")");
   if (units) s.units = units;
-  if (doc.contains("tolerance")) {
-    s.tolerance = number(c, doc["tolerance"], "tolerance");
-    if (!(*s.tolerance > 0)) c.fail("tolerance", "must be > 0");
-  }
+  if (doc.contains("tolerance")) tolerance(c, doc["tolerance"], s);
   if (!doc.contains("parts")) c.fail("", "missing \"parts\"");
   const json& parts = doc["parts"];
   if (!parts.is_array()) c.fail("parts", std::string("expected a list, got ") + type_name(parts));
