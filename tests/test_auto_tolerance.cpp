@@ -194,6 +194,7 @@ TEST(AutoTolerance, CommandLineAutoAndBadValues) {
   EXPECT_TRUE(rep["parts"][0].contains("resolution"));
   const CliResult bad = pdcheck(scene + " -q --tolerance automatic");
   EXPECT_EQ(bad.code, 2);
-  EXPECT_NE(bad.err.find("--tolerance: expected a length such as 0.05 or 0.05mm"), std::string::npos)
+  EXPECT_NE(bad.err.find("--tolerance: expected a length such as 0.05 or 0.05mm"),
+            std::string::npos)
       << bad.err;
 }
