@@ -90,6 +90,7 @@ std::vector<Set> all_sets() {
       s.push_back(
           {"contact " + testgen::contact_name(c) + " n=" + std::to_string(n),
            [c = c, n](SphereSampler& r, int k) { return testgen::contact_case(r, c, n, k); }});
+  s.push_back({"hard cases", [](SphereSampler& r, int k) { return testgen::hard_case(r, k); }});
   for (int n : {32, 128, 1000})
     s.push_back({"contained n=" + std::to_string(n),
                  [n](SphereSampler& r, int k) { return testgen::deep_containment(r, n, k); }});

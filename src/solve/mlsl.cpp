@@ -227,7 +227,7 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   // or GJK near a contact) hands its best direction to MLSL as the first sample.
   // Contacts keep MLSL's handling (the settled rule above): the bracket is taken
   // only when its lower end is above the contact resolution.
-  const DepthBracket bracket = epa_bracket(pr, tol::kEpaMaxIterations);
+  const DepthBracket bracket = s.epa ? epa_bracket(pr, tol::kEpaMaxIterations) : DepthBracket{};
   if (bracket.certified() && bracket.lower > tol::kTouch) {
     best = {bracket.direction, bracket.upper};
     return stop(StopReason::kEpaCertificate);
