@@ -1,23 +1,23 @@
 #!/usr/bin/env python3
 """Prints docs/performance.md's side-by-side table of issue 29 from pdbench's JSON
-(one run): the default method against exact and the peers compiled into pdbench
-(FCL, Bullet), medians per pair on the same pairs, and each one's largest error
-against exact. An optional second JSON (the same sets from an earlier pdbench)
-adds its default as the "before" column.
+(one run): the default method against exact, the default without its EPA bracket
+("mlsl sampling only", the method before issue 29) and the peers compiled into
+pdbench (FCL, Bullet), medians per pair on the same pairs, and each one's largest
+error against exact.
 
-usage: peer_table.py corpus.json [before.json] [default method name]
+usage: peer_table.py corpus.json [default method name]
 """
 import json
 import sys
 
 
-def table_lines(rows, before=(), mlsl="mlsl tau=0.9"):
+def table_lines(rows, mlsl="mlsl tau=0.9", before="mlsl sampling only"):
     """The table's markdown lines (no peers in the run: exact and default only)."""
     out = []
     by = {(r["set"], r["method"]): r for r in rows}
-    old = {r["set"]: r for r in before if r["method"] == mlsl}
+    old = {r["set"]: r for r in rows if r["method"] == before}
     peers = [p for p in ("fcl", "bullet") if any(r["method"] == p for r in rows)]
-    head = "| set | pairs | exact µs |" + (" before µs |" if old else "") + " default µs |"
+    head = "| set | pairs | exact µs |" + (" sampling only µs |" if old else "") + " default µs |"
     head += "".join(f" {p} µs |" for p in peers) + " default / exact |"
     head += "".join(f" default / {p} |" for p in peers) + " max rel. err: default |"
     head += "".join(f" {p} |" for p in peers) + " default stop reasons |"
@@ -46,9 +46,8 @@ def table_lines(rows, before=(), mlsl="mlsl tau=0.9"):
 
 def main():
     rows = json.load(open(sys.argv[1]))
-    before = json.load(open(sys.argv[2])) if len(sys.argv) > 2 and sys.argv[2] else []
-    mlsl = sys.argv[3] if len(sys.argv) > 3 else "mlsl tau=0.9"
-    print("\n".join(table_lines(rows, before, mlsl)))
+    mlsl = sys.argv[2] if len(sys.argv) > 2 else "mlsl tau=0.9"
+    print("\n".join(table_lines(rows, mlsl)))
 
 
 if __name__ == "__main__":

@@ -49,6 +49,10 @@ std::vector<Config> all_configs() {
     k.settings.tau = tau;
     c.push_back(k);
   }
+  // The default without its GJK + EPA bracket (issue 29): what the bracket bought.
+  Config sampling = make("mlsl sampling only", Method::kMlsl);
+  sampling.settings.epa = false;
+  c.push_back(sampling);
   c.push_back(make("mlsl-paper", Method::kMlslPaper));
   c.push_back(make("gs-local 3x3", Method::kGsLocal));
   for (int k : {10, 40, 180}) {
