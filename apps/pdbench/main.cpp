@@ -323,7 +323,7 @@ int main(int argc, char** argv) {
         if (cfg.peer) {
           // The peer's own clock times its query alone; a failure is counted
           // with the fallbacks and scored with the depth it gave (0).
-          const pdbench::PeerRun pr = cfg.peer->run(cases[k].a, cases[k].b);
+          const pdbench::PeerRun pr = pdbench::run_isolated(*cfg.peer, cases[k].a, cases[k].b);
           s.depth = pr.depth;
           s.fallback = pr.failure;
           ms.push_back(pr.ms);

@@ -28,4 +28,8 @@ struct Peer {
 /// The peers compiled into this pdbench (none, FCL, Bullet or both).
 std::vector<Peer> available_peers();
 
+/// Runs one query in a child process: FCL's libccd aborts on an assertion on
+/// some contacts, which must cost only that pair (counted as failed, depth 0).
+PeerRun run_isolated(const Peer& peer, const pd::Points& a, const pd::Points& b);
+
 }  // namespace pdbench
