@@ -65,6 +65,22 @@ inline constexpr long kSubdivisionCells = 4000;
 /// this: ~20 µs of work, qhull's fixed cost per call on this class of machine.
 inline constexpr double kCandidateFacetWork = 20000;
 
+/// The EPA bracket (solve/epa.h), unit frame, absolute. kEpaRounding bounds the
+/// rounding of a face's lower bound min(n·a, n·b, n·c): the differences a = p − q
+/// (|a| <= 2, <= 2^-53·|a| per coordinate), the three-term dot products (<= 3·2^-53
+/// ·Σ|n_k a_k|) and the normalisation of n (|n| = 1 to 4·2^-53): about 20·2^-53·2
+/// = 4.4e-15 together, taken as 1e-14. Each face's bound is lowered by it, and a
+/// face or step is used only when the origin is inside it by more than it.
+/// kEpaBracket: the bracket is certified (the answer final) when upper − lower is
+/// at most this: the nearest face is a facet of P − Q to rounding, and the depth
+/// reported (upper) is within it of the exact one, far below kTouch.
+inline constexpr double kEpaRounding = 1e-14;
+inline constexpr double kEpaBracket = 2 * kEpaRounding;
+/// Effort, not accuracy: GJK's support evaluations and EPA's expansions per
+/// pair. Past them the bracket so far seeds MLSL, which decides as before.
+inline constexpr int kGjkMaxIterations = 64;
+inline constexpr int kEpaMaxIterations = 400;
+
 /// A vertex counts as active at a direction v when its support value is within
 /// this of the extreme value; used to read the optimal facet off a local solve.
 inline constexpr double kActiveLoose = 1e-7;

@@ -19,18 +19,33 @@ DepthSolution solve(const testgen::PairCase& c, Method m, SolverSettings s = {})
   return solve_convex_pair(c.a, c.b, s, ipopt);
 }
 
+// The sampling path alone (no EPA bracket first): these tests are about MLSL's
+// own stops, which decide every pair the bracket does not close.
+SolverSettings sampling_only() {
+  SolverSettings s;
+  s.epa = false;
+  return s;
+}
+
 // Depths at or below the contact resolution are contact for both methods;
 // above it mlsl must equal exact to 1e-9 relative (pdbench's measure).
+// Both with the EPA bracket first (the default) and with the sampling alone.
 void expect_same_depth(const testgen::PairCase& c, const std::string& what) {
-  const DepthSolution e = solve(c, Method::kExact), m = solve(c, Method::kMlsl);
+  const DepthSolution e = solve(c, Method::kExact);
   const double touch = tol::kTouch * pair_frame(c.a, c.b).scale;
-  SCOPED_TRACE(what + " exact " + std::to_string(e.depth) + " mlsl " + std::to_string(m.depth));
-  EXPECT_TRUE(m.fallback.empty()) << m.fallback;
-  EXPECT_TRUE(std::isfinite(m.depth) && m.direction.allFinite());
-  if (e.depth <= touch) {
-    EXPECT_LE(m.depth, touch);
-  } else {
-    EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
+  for (bool epa : {true, false}) {
+    SolverSettings s;
+    s.epa = epa;
+    const DepthSolution m = solve(c, Method::kMlsl, s);
+    SCOPED_TRACE(what + (epa ? "" : " sampling only") + " exact " + std::to_string(e.depth) +
+                 " mlsl " + std::to_string(m.depth));
+    EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+    EXPECT_TRUE(std::isfinite(m.depth) && m.direction.allFinite());
+    if (e.depth <= touch) {
+      EXPECT_LE(m.depth, touch);
+    } else {
+      EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
+    }
   }
 }
 
@@ -64,20 +79,26 @@ TEST(Contacts, EveryFamilyGivesTheExactDepth) {
 TEST(Contacts, SeparatedPairStopsAsProvenSeparatedAtItsFirstSamples) {
   SphereSampler r(4);
   for (int k = 0; k < 5; ++k) {
-    const DepthSolution m = solve(testgen::apart_boxes_overlapping(r, 100), Method::kMlsl);
+    const auto c = testgen::apart_boxes_overlapping(r, 100);
+    const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
     EXPECT_EQ(m.depth, 0.0);
     EXPECT_STREQ(stop_reason_name(m.stats.stop_reason), "proven_separated");
     // One batch of samples at most: no descent, no Ipopt, no certificate.
     EXPECT_LE(m.stats.alpha_evaluations, 406);
     EXPECT_EQ(m.stats.local_solves, 0);
     EXPECT_EQ(m.stats.ipopt_calls, 0);
+    // With the bracket first, GJK finds the separating direction.
+    const DepthSolution d = solve(c, Method::kMlsl);
+    EXPECT_EQ(d.depth, 0.0);
+    EXPECT_EQ(d.stats.stop_reason, StopReason::kProvenSeparated);
+    EXPECT_LE(d.stats.alpha_evaluations, tol::kGjkMaxIterations);
   }
 }
 
 TEST(Contacts, AxisAlignedTouchingBoxesStopAtTheOverlapAxis) {
   // The box test's overlap axis is the contact normal: gap 0 there, six evaluations.
   const testgen::PairCase c{box(Vec3::Zero(), Vec3(4, 3, 1)), box(Vec3(1, 1, 1), Vec3(2, 2, 5))};
-  const DepthSolution m = solve(c, Method::kMlsl);
+  const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
   EXPECT_EQ(m.depth, 0.0);
   EXPECT_EQ(m.stats.stop_reason, StopReason::kProvenSeparated);
   EXPECT_LE(m.stats.alpha_evaluations, 6);
@@ -88,7 +109,7 @@ TEST(Contacts, RotatedTouchingPlatesNeedNoIpopt) {
   SphereSampler r(8);
   for (int k = 0; k < 4; ++k) {
     const auto c = testgen::place(r, testgen::plates_touching(r, 30), testgen::Placement::kRotated);
-    const DepthSolution m = solve(c, Method::kMlsl);
+    const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
     SCOPED_TRACE(k);
     EXPECT_LE(m.depth, tol::kTouch * pair_frame(c.a, c.b).scale);
     EXPECT_TRUE(m.stats.stop_reason == StopReason::kProvenSeparated ||
@@ -106,7 +127,7 @@ TEST(Contacts, InterferingShaftIsCertifiedAfterItsFirstBasin) {
   int certified = 0;
   for (int k = 0; k < 6; ++k) {
     const auto c = testgen::shaft_in_bore(r, 64, -0.05);
-    const DepthSolution e = solve(c, Method::kExact), m = solve(c, Method::kMlsl);
+    const DepthSolution e = solve(c, Method::kExact), m = solve(c, Method::kMlsl, sampling_only());
     ASSERT_GT(e.depth, 0.04);
     EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
     if (m.stats.stop_reason == StopReason::kCertificate) {
@@ -131,7 +152,7 @@ TEST(Contacts, StopReasonsOfTheSamplingRules) {
   SphereSampler z(1);
   const testgen::PairCase s{testgen::sphere_polytope(z, 300, Vec3::Zero(), 10),
                             testgen::sphere_polytope(z, 300, Vec3(1e-3, 0, 0), 10)};
-  SolverSettings one;
+  SolverSettings one = sampling_only();
   one.max_iterations = 1;
   const DepthSolution m = solve(s, Method::kMlsl, one);
   EXPECT_EQ(m.stats.stop_reason, StopReason::kCap);
@@ -140,7 +161,8 @@ TEST(Contacts, StopReasonsOfTheSamplingRules) {
 
 TEST(Contacts, StopReasonCrossesTheWorkerPipe) {
   for (StopReason why : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
-                         StopReason::kCertificate, StopReason::kBayesian, StopReason::kCap}) {
+                         StopReason::kEpaCertificate, StopReason::kCertificate,
+                         StopReason::kBayesian, StopReason::kCap}) {
     PairResult r;
     r.stats.stop_reason = why;
     EXPECT_EQ(decode_pair_result(encode_pair_result(r)).stats.stop_reason, why);
@@ -166,7 +188,7 @@ TEST(Contacts, BumpyFloat32FacesAreCertifiedWithoutTheExactHull) {
       const auto c = testgen::contact_case(r, family, 300, k);
       SCOPED_TRACE(testgen::contact_name(family) + " pair " + std::to_string(k));
       expect_same_depth(c, "float32");
-      const DepthSolution m = solve(c, Method::kMlsl);
+      const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
       EXPECT_TRUE(m.fallback.empty()) << m.fallback;
       EXPECT_EQ(m.stats.ipopt_calls, 0);
     }
@@ -285,7 +307,7 @@ TEST(Contacts, TouchingRotatedBoxOnABoardIsSettledInOneCertificate) {
   testgen::PairCase c;
   for (int k = 0; k <= 13; ++k) c = testgen::contact_case(r, Contact::kSeated, 1000, k);
   expect_same_depth(c, "seated pair 13");
-  const DepthSolution m = solve(c, Method::kMlsl);
+  const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
   EXPECT_EQ(m.stats.local_solves, 1);
   // Since a contact stop verifies its gap with the certificate instead of
   // stopping at the first cap within kTouch (the touching-pair fix of issue

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "batch/pair_solve.h"
+#include "bracket_check.h"
 #include "corpus/generators.h"
 #include "solve/methods.h"
 
@@ -57,6 +58,7 @@ double gap_world(const Points& a, const Points& b, const Vec3& v) {
 /// expected one, and a direction that achieves the depth (when it is positive).
 void expect_case(const std::string& what, const Points& a, const Points& b, double expected,
                  double abs_tol, Status status, double tolerance = 0.1) {
+  pd::testing::expect_bracket_holds(what, a, b);
   for (Method m : {Method::kExact, Method::kMlsl}) {
     const PairResult r = check(a, b, m, tolerance);
     SCOPED_TRACE(what + " / " + method_name(m));
@@ -75,6 +77,7 @@ void expect_case(const std::string& what, const Points& a, const Points& b, doub
 
 /// No analytic value: mlsl must equal exact within 1e-9 relative.
 void expect_mlsl_equals_exact(const std::string& what, const Points& a, const Points& b) {
+  pd::testing::expect_bracket_holds(what, a, b);
   const PairResult e = check(a, b, Method::kExact, 0.1), m = check(a, b, Method::kMlsl, 0.1);
   SCOPED_TRACE(what);
   ASSERT_NE(m.status, Status::kError) << m.error;
@@ -226,6 +229,7 @@ TEST(HardCases, TouchingPairsAtRandomPosesGiveTheExactDepth) {
     for (double far : {0.0, 30.0, 2000.0, 35000.0})
       for (int k = 0; k < 12; ++k) {
         const testgen::PairCase c = posed(r, touching_pair(r, t), far);
+        pd::testing::expect_bracket_holds(touch_name(t), c.a, c.b);
         const PairResult e = check(c.a, c.b, Method::kExact, 0.01);
         const PairResult m = check(c.a, c.b, Method::kMlsl, 0.01);
         const double floor = 1e-12 * pair_size(part("a", c.a), part("b", c.b));

@@ -20,6 +20,7 @@
 #include "corpus/contacts.h"
 #include "corpus/generators.h"
 #include "geometry/frame.h"
+#include "peers.h"
 #include "solve/methods.h"
 #include "tolerances.h"
 
@@ -31,6 +32,7 @@ using nlohmann::ordered_json;
 struct Config {
   std::string name;
   SolverSettings settings;
+  const pdbench::Peer* peer = nullptr;  ///< a library run instead of pdcheck (peers.h)
 };
 
 std::vector<Config> all_configs() {
@@ -47,6 +49,10 @@ std::vector<Config> all_configs() {
     k.settings.tau = tau;
     c.push_back(k);
   }
+  // The default without its GJK + EPA bracket (issue 29): what the bracket bought.
+  Config sampling = make("mlsl sampling only", Method::kMlsl);
+  sampling.settings.epa = false;
+  c.push_back(sampling);
   c.push_back(make("mlsl-paper", Method::kMlslPaper));
   c.push_back(make("gs-local 3x3", Method::kGsLocal));
   for (int k : {10, 40, 180}) {
@@ -54,6 +60,8 @@ std::vector<Config> all_configs() {
     g.settings.grid = k;
     c.push_back(g);
   }
+  static const std::vector<pdbench::Peer> peers = pdbench::available_peers();
+  for (const pdbench::Peer& p : peers) c.push_back({p.name, SolverSettings{}, &p});
   return c;
 }
 
@@ -86,6 +94,10 @@ std::vector<Set> all_sets() {
       s.push_back(
           {"contact " + testgen::contact_name(c) + " n=" + std::to_string(n),
            [c = c, n](SphereSampler& r, int k) { return testgen::contact_case(r, c, n, k); }});
+  s.push_back({"hard cases", [](SphereSampler& r, int k) { return testgen::hard_case(r, k); }});
+  for (int n : {32, 128, 1000})
+    s.push_back({"contained n=" + std::to_string(n),
+                 [n](SphereSampler& r, int k) { return testgen::deep_containment(r, n, k); }});
   s.push_back({"apart 100+100",
                [](SphereSampler& r, int) { return testgen::apart_boxes_overlapping(r, 100); }});
   return s;
@@ -307,10 +319,23 @@ int main(int argc, char** argv) {
       for (size_t k = 0; k < cases.size(); ++k) {
         const double c0 = thread_cpu_ms();
         const auto t0 = std::chrono::steady_clock::now();
-        const DepthSolution s = solve_convex_pair(cases[k].a, cases[k].b, cfg.settings, ipopt);
+        DepthSolution s;
+        if (cfg.peer) {
+          // The peer's own clock times its query alone; a failure is counted
+          // with the fallbacks and scored with the depth it gave (0).
+          const pdbench::PeerRun pr = pdbench::run_isolated(*cfg.peer, cases[k].a, cases[k].b);
+          s.depth = pr.depth;
+          s.fallback = pr.failure;
+          ms.push_back(pr.ms);
+          cpu_ms.push_back(pr.ms);
+        } else {
+          s = solve_convex_pair(cases[k].a, cases[k].b, cfg.settings, ipopt);
+        }
         const auto t1 = std::chrono::steady_clock::now();
-        cpu_ms.push_back(thread_cpu_ms() - c0);
-        ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        if (!cfg.peer) {
+          cpu_ms.push_back(thread_cpu_ms() - c0);
+          ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        }
         err.push_back(depth_error(s.depth, exact[k], touch[k]));
         evals.push_back(double(s.stats.alpha_evaluations));
         calls.push_back(s.stats.ipopt_calls);

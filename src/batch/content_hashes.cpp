@@ -88,6 +88,9 @@ struct AddSetting {
 
 void add_solver_settings(Hasher& h, const SolverSettings& s) {
   for_each_setting(s, AddSetting{h});
+  // Not in for_each_setting (no scene, CLI or report key; off only in tests),
+  // and hashed only when off, so the default's hashes stay what they were.
+  if (!s.epa) h.add("no-epa");
 }
 
 std::string settings_hash(const SolverSettings& s, double tolerance, const Checks& checks,

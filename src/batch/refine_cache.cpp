@@ -16,7 +16,8 @@ namespace {
 // 5: the result as results/codec.h's complete encoding alone.
 // 6: the settings keyed as the settings hash keys them (the seed as an integer,
 //    not a double that merged seeds differing above 2^53).
-constexpr CacheKind kKind{"pdcheck-refinement-6", ".pdr"};
+// 7: StopReason gained epa-certificate before certificate (enum values moved).
+constexpr CacheKind kKind{"pdcheck-refinement-7", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));

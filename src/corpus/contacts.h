@@ -171,6 +171,26 @@ inline PairCase apart_boxes_overlapping(SphereSampler& r, int n) {
   }
 }
 
+/// Deep containment (issue 29), n vertices a part: for even k a shaft of n/2
+/// segments (radius 10, 120 long) through the hull of a pulley hub (n/2 segments,
+/// radius 30, 20 long), off its axis by up to 5; for odd k a ball of n points
+/// (radius 5) deep inside an ellipsoid of n points (radius 50). Placed like the
+/// contacts (axes, rotated, float32 far from the origin) by k / 2.
+inline PairCase deep_containment(SphereSampler& r, int n, int k) {
+  const int seg = std::max(3, n / 2);
+  PairCase pc;
+  if (k % 2 == 0) {
+    const Vec3 off = 5 * r.uniform() * Vec3(r.direction().x(), r.direction().y(), 0);
+    Points shaft = ngon_prism(seg, 10, -60, 60, 2 * M_PI * r.uniform());
+    shaft.colwise() += off;
+    pc = {ngon_prism(seg, 30, -10, 10, 2 * M_PI * r.uniform()), shaft};
+  } else {
+    pc = {ellipsoid_polytope(r, n, Vec3::Zero(), 50),
+          sphere_polytope(r, n, 10 * r.uniform() * r.direction(), 5)};
+  }
+  return place(r, pc, static_cast<Placement>((k / 2) % 3));
+}
+
 /// The contact families, for pdbench's set names.
 enum class Contact { kPlates, kSeated, kShaft, kBall, kHairGap };
 

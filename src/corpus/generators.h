@@ -95,4 +95,64 @@ inline PairCase zhou_spheres(SphereSampler& r, int m) {
   return {sphere_polytope(r, m, Vec3::Zero(), 10), sphere_polytope(r, m, c2.normalized() * d, 10)};
 }
 
+/// The hard cases of tests/test_hard_cases.cpp as a benchmark set (issue 29):
+/// case k % 8 of identical cubes, cubes overlapping by 1e-9 of their size,
+/// coplanar faces with tied optima, a cube inside a cube, 1000×1000×1 plates
+/// overlapping by 0.01, a flat square in a cube, two identical random
+/// polytopes, a 1 mm pin in a 10 m panel; rotated at random when k / 8 is odd.
+inline PairCase hard_case(SphereSampler& r, int k) {
+  auto box = [](const Vec3& lo, const Vec3& hi) {
+    Points p(3, 8);
+    for (int c = 0; c < 8; ++c)
+      p.col(c) = Vec3(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z());
+    return p;
+  };
+  const Vec3 o = Vec3::Zero(), one = Vec3::Ones();
+  PairCase c;
+  switch (k % 8) {
+    case 0:
+      c = {box(o, one), box(o, one)};
+      break;
+    case 1:
+      c = {box(o, one), box(Vec3(1 - 1e-9, 0, 0), Vec3(2 - 1e-9, 1, 1))};
+      break;
+    case 2:
+      c = {box(o, one), box(Vec3(0.5, 0.5, 0), Vec3(1.5, 1.5, 1))};
+      break;
+    case 3:
+      c = {box(o, one), box(Vec3::Constant(0.4), Vec3::Constant(0.6))};
+      break;
+    case 4:
+      c = {box(o, Vec3(1000, 1000, 1)), box(Vec3(0, 0, 0.99), Vec3(1000, 1000, 1.99))};
+      break;
+    case 5: {
+      Points sq(3, 4);
+      sq << 0.2, 0.8, 0.8, 0.2, 0.2, 0.2, 0.8, 0.8, 0.5, 0.5, 0.5, 0.5;
+      c = {box(o, one), sq};
+      break;
+    }
+    case 6: {
+      const Points p = ball_polytope(r, 40, Vec3(3, 4, 5), 10);
+      c = {p, p};
+      break;
+    }
+    default: {
+      Points pin(3, 48);
+      for (int s = 0; s < 24; ++s) {
+        const double t = 2 * M_PI * s / 24;
+        pin.col(s) = Vec3(5000 + 0.5 * std::cos(t), 5000 + 0.5 * std::sin(t), 4.9);
+        pin.col(24 + s) = Vec3(5000 + 0.5 * std::cos(t), 5000 + 0.5 * std::sin(t), 24.9);
+      }
+      c = {box(o, Vec3(10000, 10000, 5)), pin};
+    }
+  }
+  if ((k / 8) % 2) {
+    const Eigen::Matrix3d rot =
+        Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
+    c.a = rot * c.a;
+    c.b = rot * c.b;
+  }
+  return c;
+}
+
 }  // namespace pd::testgen

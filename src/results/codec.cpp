@@ -16,7 +16,8 @@ namespace {
 
 StopReason stop_reason_from_name(const std::string& name) {
   for (StopReason r : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
-                       StopReason::kCertificate, StopReason::kBayesian, StopReason::kCap})
+                       StopReason::kEpaCertificate, StopReason::kCertificate, StopReason::kBayesian,
+                       StopReason::kCap})
     if (name == stop_reason_name(r)) return r;
   throw std::invalid_argument("unknown stop_reason \"" + name + "\"");
 }

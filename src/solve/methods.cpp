@@ -42,6 +42,8 @@ const char* stop_reason_name(StopReason r) {
       return "proven_separated";
     case StopReason::kContact:
       return "contact";
+    case StopReason::kEpaCertificate:
+      return "epa-certificate";
     case StopReason::kCertificate:
       return "certificate";
     case StopReason::kBayesian:

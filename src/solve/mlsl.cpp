@@ -8,6 +8,7 @@
 
 #include "solve/cap_subdivision.h"
 #include "solve/certificate.h"
+#include "solve/epa.h"
 #include "solve/facet_snap.h"
 #include "solve/local_search.h"
 #include "solve/neighbourhood.h"
@@ -221,6 +222,22 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
     stats.stop_reason = why;
     return finish(pr, best, static_cast<int>(basins.size()), stats);
   };
+  // GJK + EPA first (solve/epa.h): a closed bracket is the depth, proved, and
+  // the solve ends there. An open one (EPA stopped on a face it could not close,
+  // or GJK near a contact) hands its best direction to MLSL as the first sample.
+  // Contacts keep MLSL's handling (the settled rule above): the bracket is taken
+  // only when its lower end is above the contact resolution.
+  const DepthBracket bracket = s.epa ? epa_bracket(pr, tol::kEpaMaxIterations) : DepthBracket{};
+  if (bracket.certified() && bracket.lower > tol::kTouch) {
+    best = {bracket.direction, bracket.upper};
+    return stop(StopReason::kEpaCertificate);
+  }
+  if (std::isfinite(bracket.upper)) {
+    x.push_back(bracket.direction);
+    f.push_back(bracket.upper);
+    started.push_back(0);
+    consider(x.back(), f.back());
+  }
   // The broad phase's overlap axes: gap(±e_k) is the overlap of the pair's boxes
   // along axis k, so the box test's best axis is the first sample. On contacts
   // of axis-aligned parts it is the contact normal.

@@ -33,6 +33,9 @@ class PairProblem {
   /// gap(v) in O(n + m); counts one evaluation.
   double gap(const Vec3& v) const;
   double alpha(const Vec3& v) const { return std::max(0.0, gap(v)); }
+  /// gap(v), bit for bit, and the support point p_i − q_j of P − Q at v (the
+  /// first extreme vertices, as gap finds them); counts one evaluation.
+  double support(const Vec3& v, Vec3& point) const;
   /// gap(v[k]) for k < count into out, bit for bit; counts `count` evaluations.
   void gaps(const Vec3* v, size_t count, double* out) const;
   long evaluations() const { return evaluations_; }

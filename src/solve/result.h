@@ -15,6 +15,7 @@ enum class StopReason {
   kNone,             ///< the method has no stop rule (exact, grid, gs-local)
   kProvenSeparated,  ///< a direction with gap <= 0 was found: depth 0, proved
   kContact,          ///< a direction with gap <= kTouch: depth within contact resolution
+  kEpaCertificate,   ///< the GJK + EPA bracket closed: its facet is the depth (no sampling)
   kCertificate,      ///< the certificate proved the best direction global (sampling stopped early)
   kBayesian,         ///< the Bayesian rule stopped the sampling (then certified)
   kCap,              ///< a cap on iterations, local solves or time stopped the sampling

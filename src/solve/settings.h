@@ -27,6 +27,11 @@ struct SolverSettings {
   double link_scale =
       0.3;  ///< multiplies r_k in the start rule (1 = Rinnooy Kan & Timmer; docs/solver.md)
   int max_iterations = 50;  ///< hard caps: MLSL always stops
+  /// mlsl: start with the GJK + EPA bracket (solve/epa.h), final when it closes.
+  /// No scene, CLI or report key: the tests of the sampling path itself turn it
+  /// off. The one setting outside for_each_setting: add_solver_settings
+  /// (batch/content_hashes.h) hashes it when off, so the default's hashes hold.
+  bool epa = true;
   int max_local_solves = 60;
   double max_seconds = 30.0;
 

@@ -1,0 +1,201 @@
+#include "solve/epa.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "solve/gjk.h"
+#include "tolerances.h"
+
+namespace pd {
+
+bool DepthBracket::certified() const {
+  return upper - lower <= tol::kEpaBracket;
+}
+
+namespace {
+
+// A face of the polytope: vertices counter-clockwise seen from outside; edge k
+// runs from v[k] to v[k+1] and is shared with face adj[k] (its edge adj_edge[k]).
+struct Face {
+  std::array<int, 3> v;
+  std::array<int, 3> adj{-1, -1, -1};
+  std::array<int, 3> adj_edge{-1, -1, -1};
+  Vec3 n;      // unit outward normal (rounded: the bound below does not trust it)
+  double low;  // min over the three vertices of n·x: the face's distance bound
+  bool alive = true;
+  int pass = -1;  // the expansion that removed or reached it
+};
+
+class Polytope {
+ public:
+  std::vector<Vec3> x;
+  std::vector<Face> faces;
+  // Scratch of one expansion, kept across expansions (allocations were a tenth
+  // of a 30+30 pair's time under perf).
+  std::vector<int> removed, from, to;
+  std::vector<std::pair<int, int>> horizon;
+
+  Polytope() {
+    x.reserve(64);
+    faces.reserve(128);
+  }
+
+  // A face through vertices (a, b, c) in that order; false when the origin is
+  // not inside it by more than the rounding (or the triangle is degenerate).
+  bool add_face(int a, int b, int c) {
+    Face f;
+    f.v = {a, b, c};
+    const Vec3 n = (x[b] - x[a]).cross(x[c] - x[a]);
+    const double len = n.norm();
+    if (!(len > 0)) return false;
+    f.n = n / len;
+    f.low = std::min({f.n.dot(x[a]), f.n.dot(x[b]), f.n.dot(x[c])});
+    faces.push_back(f);
+    return f.low > tol::kEpaRounding;
+  }
+
+  int nearest() const {
+    int best = -1;
+    for (int k = 0; k < static_cast<int>(faces.size()); ++k)
+      if (faces[k].alive && (best < 0 || faces[k].low < faces[best].low)) best = k;
+    return best;
+  }
+
+  // The removed region seen from w: faces whose plane has w beyond it by more
+  // than the rounding, connected to `start`; the horizon is the edges from a
+  // removed face to a kept one, as (kept face, its edge).
+  bool visible(const Face& f, const Vec3& w) const {
+    return f.n.dot(w) > f.low + tol::kEpaRounding;
+  }
+  void silhouette(int f, int e, const Vec3& w, int pass) {
+    Face& g = faces[f];
+    if (g.pass == pass) {
+      if (!g.alive || std::find(removed.begin(), removed.end(), f) != removed.end()) return;
+    }
+    if (g.pass != pass && visible(g, w)) {
+      g.pass = pass;
+      removed.push_back(f);
+      for (int k = 1; k <= 2; ++k) {
+        const int ek = (e + k) % 3;
+        silhouette(g.adj[ek], g.adj_edge[ek], w, pass);
+      }
+      return;
+    }
+    g.pass = pass;
+    horizon.emplace_back(f, e);
+  }
+
+  // Replaces the faces visible from w (starting at face `start`) by the cone from
+  // w over their boundary. False when the step cannot keep the origin enclosed:
+  // the polytope may then be partly rebuilt and is not used again.
+  bool expand(int start, const Vec3& w, int pass) {
+    removed.assign(1, start);
+    horizon.clear();
+    faces[start].pass = pass;
+    for (int e = 0; e < 3; ++e) silhouette(faces[start].adj[e], faces[start].adj_edge[e], w, pass);
+    // The horizon must be one simple cycle: each vertex starts one edge and ends one.
+    const size_t h = horizon.size();
+    if (h < 3) return false;
+    from.resize(h);
+    to.resize(h);
+    for (size_t i = 0; i < h; ++i) {
+      const Face& g = faces[horizon[i].first];
+      from[i] = g.v[horizon[i].second];
+      to[i] = g.v[(horizon[i].second + 1) % 3];
+    }
+    for (size_t i = 0; i < h; ++i)
+      for (size_t j = i + 1; j < h; ++j)
+        if (from[i] == from[j] || to[i] == to[j]) return false;
+    for (int f : removed) faces[f].alive = false;
+    const int wi = static_cast<int>(x.size());
+    x.push_back(w);
+    const int first = static_cast<int>(faces.size());
+    bool ok = true;
+    for (size_t i = 0; i < h; ++i) {
+      // The kept face's edge (from → to) is (to → from) in the new face.
+      ok = add_face(to[i], from[i], wi) && ok;
+      Face& nf = faces.back();
+      Face& g = faces[horizon[i].first];
+      nf.adj[0] = horizon[i].first;
+      nf.adj_edge[0] = horizon[i].second;
+      g.adj[horizon[i].second] = first + static_cast<int>(i);
+      g.adj_edge[horizon[i].second] = 0;
+    }
+    // New face i: edge 1 (from_i → w) meets the new face j with edge 2 (w → to_j),
+    // to_j = from_i.
+    for (size_t i = 0; i < h; ++i) {
+      size_t j = 0;
+      while (j < h && to[j] != from[i]) ++j;
+      if (j == h) return false;
+      Face &fi = faces[first + i], &fj = faces[first + j];
+      fi.adj[1] = first + static_cast<int>(j);
+      fi.adj_edge[1] = 2;
+      fj.adj[2] = first + static_cast<int>(i);
+      fj.adj_edge[2] = 1;
+    }
+    return ok;
+  }
+};
+
+// The four faces of GJK's tetrahedron, outward; false when the origin is not
+// inside each by more than the rounding.
+bool start_polytope(Polytope& poly, const std::array<Vec3, 4>& t) {
+  poly.x.assign(t.begin(), t.end());
+  if ((t[1] - t[0]).cross(t[2] - t[0]).dot(t[3] - t[0]) > 0) std::swap(poly.x[1], poly.x[2]);
+  // Now vertex 3 lies below face (0, 1, 2): every face below is outward.
+  static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+  for (const auto& f : kFaces)
+    if (!poly.add_face(f[0], f[1], f[2])) return false;
+  // Adjacency: the face holding each edge reversed.
+  for (int f = 0; f < 4; ++f)
+    for (int e = 0; e < 3; ++e) {
+      const int a = poly.faces[f].v[e], b = poly.faces[f].v[(e + 1) % 3];
+      for (int g = 0; g < 4; ++g)
+        for (int k = 0; k < 3; ++k)
+          if (poly.faces[g].v[k] == b && poly.faces[g].v[(k + 1) % 3] == a) {
+            poly.faces[f].adj[e] = g;
+            poly.faces[f].adj_edge[e] = k;
+          }
+    }
+  return true;
+}
+
+}  // namespace
+
+DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
+  DepthBracket b;
+  const GjkResult g = gjk_enclose_origin(pr, tol::kGjkMaxIterations);
+  b.upper = g.gap;
+  b.direction = g.direction;
+  if (g.outcome == GjkResult::Outcome::kSeparated) {
+    b.separated = true;
+    return b;
+  }
+  if (g.outcome != GjkResult::Outcome::kEnclosed) return b;
+  Polytope poly;
+  if (!start_polytope(poly, g.tetrahedron)) return b;
+  for (int it = 0; it < max_iterations; ++it) {
+    const int f = poly.nearest();
+    const Face face = poly.faces[f];
+    // Every face's bound, lowered by the rounding, bounds the distance from the
+    // origin to the surface, and so the depth: the nearest face's is the least.
+    b.lower = std::max(b.lower, face.low - tol::kEpaRounding);
+    Vec3 w;
+    const double h = pr.support(face.n, w);
+    if (h < b.upper) {
+      b.upper = h;
+      b.direction = face.n;
+    }
+    if (b.certified()) return b;
+    // w must lie beyond the nearest face for the polytope to grow towards D's
+    // boundary; otherwise the face is a facet up to a normal too rounded to
+    // close the bracket, and MLSL takes over from here.
+    if (!poly.visible(face, w)) return b;
+    b.iterations = it + 1;
+    if (!poly.expand(f, w, it)) return b;
+  }
+  return b;
+}
+
+}  // namespace pd

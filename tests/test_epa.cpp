@@ -1,0 +1,199 @@
+// The GJK + EPA bracket (solve/epa.h) and the default method's certified path,
+// against the exact reference on generated pairs: random classes, deep
+// containment, and near-degenerate pairs (touching, coplanar, 1e-9 offsets,
+// float32 far from the origin, flat parts). The bracket must hold the exact depth
+// on every pair; the default method must equal exact within 1e-9 relative.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "bracket_check.h"
+#include "corpus/contacts.h"
+#include "corpus/generators.h"
+#include "geometry/frame.h"
+#include "solve/gjk.h"
+#include "solve/methods.h"
+
+using namespace pd;
+using pd::testing::BracketTally;
+using pd::testing::expect_bracket_holds;
+
+namespace {
+
+Points box(const Vec3& lo, const Vec3& hi) {
+  Points p(3, 8);
+  for (int k = 0; k < 8; ++k)
+    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  return p;
+}
+
+// The pair rotated at random and moved `far` away, optionally rounded to float32
+// as a mesh file stores it.
+testgen::PairCase posed(SphereSampler& r, testgen::PairCase c, double far, bool f32) {
+  const Eigen::Matrix3d rot =
+      Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
+  const Vec3 shift = far * r.direction();
+  for (Points* x : {&c.a, &c.b}) {
+    *x = (rot * *x).colwise() + shift;
+    if (f32) *x = x->cast<float>().cast<double>();
+  }
+  return c;
+}
+
+// The default method end to end against exact, as pdbench scores it: within 1e-9
+// relative, depths at or below the contact resolution counting as contact. A
+// certified depth is exact to kEpaBracket of the frame, which is more than 1e-9
+// of depths below 2e-5 of the frame (where exact's own rounding is as large).
+struct DefaultTally {
+  int pairs = 0, epa = 0;
+};
+void expect_default_equals_exact(const std::string& what, const testgen::PairCase& c,
+                                 DefaultTally& t) {
+  static IpoptLocalSolver ipopt;
+  SolverSettings exact_settings;
+  exact_settings.method = Method::kExact;
+  const DepthSolution e = solve_convex_pair(c.a, c.b, exact_settings, ipopt);
+  const DepthSolution m = solve_convex_pair(c.a, c.b, SolverSettings{}, ipopt);
+  const double scale = pair_frame(c.a, c.b).scale, touch = tol::kTouch * scale;
+  const double rounding = (tol::kEpaBracket + pd::testing::kExactRounding) * scale;
+  char text[200];
+  std::snprintf(text, sizeof text, "%s: exact %.17g, mlsl %.17g (%s)", what.c_str(), e.depth,
+                m.depth, stop_reason_name(m.stats.stop_reason));
+  SCOPED_TRACE(text);
+  EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+  if (e.depth > touch || m.depth > touch) {
+    EXPECT_LE(std::abs(m.depth - e.depth), std::max(1e-9 * std::max(e.depth, touch), rounding));
+  }
+  ++t.pairs;
+  t.epa += m.stats.stop_reason == StopReason::kEpaCertificate;
+}
+
+void check_both(const std::string& what, const testgen::PairCase& c, BracketTally& bt,
+                DefaultTally& dt) {
+  expect_bracket_holds(what, c.a, c.b, &bt);
+  expect_default_equals_exact(what, c, dt);
+}
+
+}  // namespace
+
+TEST(Epa, RandomClassesAreCertifiedAndExact) {
+  SphereSampler r(29);
+  BracketTally bt;
+  DefaultTally dt;
+  for (int n : {4, 8, 30, 100})
+    for (int k = 0; k < 15; ++k)
+      check_both("n=" + std::to_string(n) + " #" + std::to_string(k), testgen::vertex_class(r, n),
+                 bt, dt);
+  for (int k = 0; k < 15; ++k) check_both("paper-like", testgen::paper_like(r), bt, dt);
+  for (int m : {30, 300})
+    for (int k = 0; k < 8; ++k) check_both("zhou", testgen::zhou_spheres(r, m), bt, dt);
+  // Every overlapping random pair tried so far closes its bracket; a few may not
+  // (then MLSL decides), but most must, or the fast path is not being tested.
+  EXPECT_GE(bt.certified, bt.pairs * 9 / 10);
+  EXPECT_GE(dt.epa, dt.pairs * 9 / 10);
+}
+
+TEST(Epa, DeepContainmentIsCertified) {
+  SphereSampler r(2929);
+  BracketTally bt;
+  DefaultTally dt;
+  for (int n : {32, 128})
+    for (int k = 0; k < 12; ++k)
+      check_both("contained n=" + std::to_string(n) + " #" + std::to_string(k),
+                 testgen::deep_containment(r, n, k), bt, dt);
+  EXPECT_GE(bt.certified, bt.pairs * 9 / 10);
+}
+
+TEST(Epa, ContactSetsFloat32FarFromTheOrigin) {
+  // Every contact family of pdbench, each placement (axes, rotated, float32 at
+  // x ≈ 20,000 mm), every fit: touching, clearance, interference, hair gaps.
+  SphereSampler r(12);
+  BracketTally bt;
+  DefaultTally dt;
+  using testgen::Contact;
+  for (Contact c :
+       {Contact::kPlates, Contact::kSeated, Contact::kShaft, Contact::kBall, Contact::kHairGap})
+    for (int n : {8, 64})
+      for (int k = 0; k < 15; ++k)
+        check_both(testgen::contact_name(c) + " n=" + std::to_string(n) + " #" + std::to_string(k),
+                   testgen::contact_case(r, c, std::max(n, c == Contact::kBall ? 30 : 8), k), bt,
+                   dt);
+  EXPECT_GT(bt.certified, 0);
+  EXPECT_GT(bt.separated, 0);
+}
+
+TEST(Epa, TouchingCoplanarAndTinyOffsets) {
+  // Boxes face on face, edge on face and corner on face, overlapping or apart
+  // by 0, 1e-12, 1e-9 or 1e-6 of their size; coplanar side faces; identical
+  // boxes; every pose at the origin and far from it, in double and float32.
+  SphereSampler r(1e9);
+  BracketTally bt;
+  DefaultTally dt;
+  const Points a = box(Vec3::Zero(), Vec3::Ones());
+  for (double eps : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6})
+    for (double far : {0.0, 30.0, 20000.0})
+      for (bool f32 : {false, true}) {
+        const std::string tag =
+            "eps " + std::to_string(eps) + " far " + std::to_string(far) + (f32 ? " f32" : "");
+        testgen::PairCase face{a, box(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8))};
+        check_both("face " + tag, posed(r, face, far, f32), bt, dt);
+        testgen::PairCase coplanar{a, box(Vec3(1 - eps, 0, 0), Vec3(2 - eps, 1, 1))};
+        check_both("coplanar " + tag, posed(r, coplanar, far, f32), bt, dt);
+        const Eigen::Matrix3d tilt = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
+        Points edge = tilt * box(Vec3::Zero(), Vec3::Ones());
+        edge.colwise() += Vec3(1 - eps - edge.row(0).minCoeff(), 0.1, 0.1);
+        check_both("edge " + tag, posed(r, {a, edge}, far, f32), bt, dt);
+        const Eigen::Matrix3d corner =
+            Eigen::AngleAxisd(0.6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+        Points v = corner * box(Vec3::Zero(), Vec3::Ones());
+        v.colwise() += Vec3(1 - eps - v.row(0).minCoeff(), 0.3, 0.3);
+        check_both("corner " + tag, posed(r, {a, v}, far, f32), bt, dt);
+        check_both("identical " + tag, posed(r, {a, a}, far, f32), bt, dt);
+      }
+  EXPECT_GT(bt.certified, bt.pairs / 4);
+  EXPECT_GT(bt.separated, 0);
+}
+
+TEST(Epa, FlatParts) {
+  // A square, a segment and a triangle inside or across a cube, two crossing
+  // squares (their difference is flat: no interior, never an enclosing simplex).
+  SphereSampler r(3);
+  BracketTally bt;
+  DefaultTally dt;
+  const Points cube = box(Vec3::Zero(), Vec3::Ones());
+  Points square(3, 4), segment(3, 2), triangle(3, 3), square2(3, 4);
+  square << 0.2, 0.8, 0.8, 0.2, 0.2, 0.2, 0.8, 0.8, 0.5, 0.5, 0.5, 0.5;
+  segment << 0.2, 0.8, 0.5, 0.5, 0.3, 0.3;
+  triangle << -0.5, 1.5, 0.5, 0.3, 0.3, 0.3, 0.1, 0.1, 0.9;
+  square2 << 0.1, 0.9, 0.9, 0.1, 0.3, 0.3, 0.7, 0.7, 0.5, 0.5, 0.5, 0.5;
+  for (double far : {0.0, 20000.0})
+    for (bool f32 : {false, true})
+      for (int k = 0; k < 3; ++k) {
+        const std::string tag = " far " + std::to_string(far) + (f32 ? " f32" : "");
+        check_both("square" + tag, posed(r, {cube, square}, far, f32), bt, dt);
+        check_both("segment" + tag, posed(r, {cube, segment}, far, f32), bt, dt);
+        check_both("triangle" + tag, posed(r, {cube, triangle}, far, f32), bt, dt);
+        check_both("squares" + tag, posed(r, {square, square2}, far, f32), bt, dt);
+      }
+  EXPECT_GT(bt.certified, 0);
+}
+
+TEST(Epa, GjkSeparatesApartPairsAndEnclosesOverlappingOnes) {
+  SphereSampler r(5);
+  for (int k = 0; k < 20; ++k) {
+    const testgen::PairCase apart = testgen::apart_boxes_overlapping(r, 30);
+    const PairProblem pa(apart.a, apart.b);
+    const GjkResult ga = gjk_enclose_origin(pa, tol::kGjkMaxIterations);
+    EXPECT_EQ(ga.outcome, GjkResult::Outcome::kSeparated);
+    EXPECT_LE(pa.gap(ga.direction), 0.0);
+    const testgen::PairCase over = testgen::vertex_class(r, 30);
+    const PairProblem po(over.a, over.b);
+    const GjkResult go = gjk_enclose_origin(po, tol::kGjkMaxIterations);
+    ASSERT_EQ(go.outcome, GjkResult::Outcome::kEnclosed);
+    // The origin is inside the tetrahedron: a convex combination with weights > 0.
+    Eigen::Matrix4d m;
+    for (int c = 0; c < 4; ++c) m.col(c) << go.tetrahedron[c], 1.0;
+    const Eigen::Vector4d w = m.fullPivLu().solve(Eigen::Vector4d(0, 0, 0, 1));
+    EXPECT_GT(w.minCoeff(), 0.0);
+  }
+}
