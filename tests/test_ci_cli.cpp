@@ -223,6 +223,8 @@ TEST(CiLoop, StaleSuppressionsFailUnlessAllowed) {
   const CliResult r = pdcheck(assembly("stale_scene.json", 10.0) + " --suppressions " + sup);
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("$.suppressions[1] (frame / bolt): unmatched"), std::string::npos) << r.err;
+  // The review says how many findings the file suppressed.
+  EXPECT_NE(r.err.find(sup + ": 1 finding(s) suppressed"), std::string::npos) << r.err;
   EXPECT_EQ(pdcheck(assembly("stale_scene.json", 10.0) + " -q --suppressions " + sup +
                     " --allow-stale-suppressions")
                 .code,

@@ -262,6 +262,26 @@ TEST(Cli, EmptyInputIsAnError) {
 }
 
 // A mesh file given where a scene is expected: the message suggests the part-list form.
+TEST(Cli, UsageErrorsSayPdcheckAndSuggestTheNearestOption) {
+  const std::string scene = kSource + "/testdata/examples/zhou-m100.json";
+  const CliRun typo = pdcheck(scene + " --tolerence 0.1");
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_EQ(typo.err.rfind("pdcheck: error: ", 0), 0u) << typo.err;
+  EXPECT_NE(typo.err.find("did you mean --tolerance (for --tolerence)?"), std::string::npos)
+      << typo.err;
+  // An option of a subcommand is known too; nothing near: no suggestion.
+  EXPECT_NE(pdcheck("merge a.json --outptu x.json").err.find("did you mean --output"),
+            std::string::npos);
+  const CliRun far = pdcheck(scene + " --zzzzzzzz");
+  EXPECT_EQ(far.code, 2);
+  EXPECT_EQ(far.err.rfind("pdcheck: error: ", 0), 0u) << far.err;
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+  // A validator's message gets the same prefix.
+  const CliRun range = pdcheck(scene + " --load-timeout -3");
+  EXPECT_EQ(range.code, 2);
+  EXPECT_EQ(range.err.rfind("pdcheck: error: --load-timeout", 0), 0u) << range.err;
+}
+
 TEST(Cli, AMeshFileForASceneSuggestsAPartList) {
   const CliRun r = pdcheck(kSource + "/testdata/formats/box_ascii.stl -q");
   EXPECT_EQ(r.code, 2);

@@ -163,6 +163,10 @@ TEST(CliNumbers, ADepthBelowTheResolvableScaleIsFlagged) {
     EXPECT_NE(p["warnings"][0].get<std::string>().find("below the resolvable scale"),
               std::string::npos)
         << p.dump();
+    // Every length with its unit (the scene's: mm by default).
+    EXPECT_NE(p["warnings"][0].get<std::string>().find("the tolerance 0.1 mm is smaller"),
+              std::string::npos)
+        << p.dump();
   }
   const std::string unit = write_temp("num_unit2.json", overlapping_pair(""));
   const CliRun r = pdcheck(unit + " --quiet -j 1");

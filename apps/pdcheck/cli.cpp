@@ -13,6 +13,7 @@
 #include "merge_command.h"
 #include "say.h"
 #include "termination.h"
+#include "usage_error.h"
 #include "user_error.h"
 
 namespace {
@@ -46,7 +47,10 @@ int run_cli(int argc, char** argv, const pd::FaultHooks& faults) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? pd::kExitClean : pd::kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? pd::kExitClean : pd::kExitBadInput;
+    // Like every other message: "pdcheck: error: …", a typo's nearest option.
+    say("error", usage_message(e, app) + " (pdcheck --help lists the options)");
+    return pd::kExitBadInput;
   }
   // Write errors are reported as errors (EPIPE), not a silent death; a
   // terminated run takes its workers and temporary files with it.

@@ -77,14 +77,15 @@ double rounding_scale(const Aabb& box) {
 // (a 1-unit part against one 1e30 units large): when the tolerance is below
 // that, a shallow interference reads as separated or a false positive, and the
 // report must say the depth was not resolvable.
-std::optional<std::string> unresolved_tolerance(double tolerance, double size, Status status) {
+std::optional<std::string> unresolved_tolerance(double tolerance, double size, Status status,
+                                                const std::string& units) {
   const double resolution = tol::kTouch * size;
   if (!(tolerance < resolution) || status == Status::kInterference) return std::nullopt;
   std::ostringstream w;
   w << std::setprecision(3) << "depth below the resolvable scale: the pair's coordinates span "
-    << size << ", so depths up to " << resolution
-    << " (1e-11 of that) cannot be told from contact, and the tolerance " << tolerance
-    << " is smaller: an interference this shallow is not seen";
+    << size << " " << units << ", so depths up to " << resolution << " " << units
+    << " (1e-11 of that) cannot be told from contact, and the tolerance " << tolerance << " "
+    << units << " is smaller: an interference this shallow is not seen";
   return w.str();
 }
 
@@ -156,7 +157,8 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
           "reaches beyond 1e307)");
     r.status = classify(r.depth, tolerance, size);
     r.margin = tolerance - r.depth;
-    if (const auto w = unresolved_tolerance(tolerance, size, r.status)) r.warnings.push_back(*w);
+    if (const auto w = unresolved_tolerance(tolerance, size, r.status, checks.units))
+      r.warnings.push_back(*w);
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
       if (!checks.motion) static_distance(a, b, s, ipopt, r);

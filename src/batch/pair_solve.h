@@ -15,6 +15,7 @@ struct PairChecks {
   std::optional<double> clearance;         ///< the required clearance
   const MotionCheck* motion = nullptr;     ///< set when a part of the pair moves
   std::optional<PairTolerance> tolerance;  ///< tolerance auto: the pair's own band
+  std::string units = "mm";                ///< the scene's, for lengths in messages
 };
 
 /// The tolerance the pair is decided against: its own band under auto, else `scene`.

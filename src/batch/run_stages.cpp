@@ -99,6 +99,7 @@ std::function<PairChecks(int, int)> pair_checks_of(
       own_clearance[{std::min(e.a, e.b), std::max(e.a, e.b)}] = e.min;
   return [&parts, &checks, own_clearance, auto_tolerance, units](int a, int b) {
     PairChecks pc;
+    pc.units = units;
     if (auto_tolerance && parts[a].sag && parts[b].sag)
       pc.tolerance = pair_tolerance(parts[a], parts[b], *auto_tolerance, units);
     if (checks.clearance) {

@@ -22,6 +22,9 @@ std::string review_lines(const ReportInput& in) {
     out += std::string("pdcheck: ") + (i.fails ? "error" : "warning") + ": " +
            in.review_options.suppressions->path + " " + i.entry->where + " (" + i.entry->a + " / " +
            i.entry->b + "): " + i.kind + ": " + i.detail + "\n";
+  if (rv.suppressions_used)
+    out += "pdcheck: suppressions " + in.review_options.suppressions->path + ": " +
+           std::to_string(rv.suppressed) + " finding(s) suppressed (not failing the run)\n";
   if (rv.baseline_used) {
     out += "pdcheck: baseline " + in.review_options.baseline->path + ":";
     for (BaselineState s : kBaselineStates)
