@@ -28,9 +28,11 @@ export LSAN_OPTIONS="suppressions=$ROOT/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LS
 # Also left out: tests whose outcome depends on wall time (time-boxed decompositions: under ASan's
 # 3-10x slowdown they hit their time box and give other pieces), the contact-family test (clang -O1
 # rounds a 7e-15 contact depth differently from the release build), and the HTML report's browser
-# test (its pdcheck code runs under ASan in the HtmlCli tests; a browser start costs seconds). All of
-# them run in the release build's suite.
-SLOW="^(html_report_browser|Decompose\..*|Nonconvex\..*|Contacts\.EveryFamilyGivesTheExactDepth|Exact\.BoundedByDenseDirectionSampling|Cli\.JobsDoNotChangeALargerReport|Checks\.WarmStartGivesTheColdValues|Checks\.IpoptDistanceMatchesTheExactDistance|Methods\.EveryMethodIsAnUpperBoundOnExact|Mlsl\.PaperLikePairsMatchExact|HardCases\.TwoThousandVerticesPerPart)$"
+# test (its pdcheck code runs under ASan in the HtmlCli tests; a browser start costs seconds), and
+# the mixed-tessellation assembly (seven whole pdcheck runs with refinement, a minute each under
+# ASan; its code runs under ASan in the AutoTolerance tests). All of them run in the release
+# build's suite.
+SLOW="^(html_report_browser|auto_tolerance_mixed_assembly|Decompose\..*|Nonconvex\..*|Contacts\.EveryFamilyGivesTheExactDepth|Exact\.BoundedByDenseDirectionSampling|Cli\.JobsDoNotChangeALargerReport|Checks\.WarmStartGivesTheColdValues|Checks\.IpoptDistanceMatchesTheExactDistance|Methods\.EveryMethodIsAnUpperBoundOnExact|Mlsl\.PaperLikePairsMatchExact|HardCases\.TwoThousandVerticesPerPart)$"
 exclude=(-E "$SLOW")
 [ "${PDCHECK_SANITIZE_ALL:-0}" = 1 ] && exclude=()
 (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" "${exclude[@]}" "$@")
