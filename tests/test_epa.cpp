@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include "box_points.h"
 #include "bracket_check.h"
 #include "corpus/contacts.h"
 #include "corpus/generators.h"
@@ -21,10 +22,7 @@ using pd::testing::expect_bracket_holds;
 namespace {
 
 Points box(const Vec3& lo, const Vec3& hi) {
-  Points p(3, 8);
-  for (int k = 0; k < 8; ++k)
-    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  return p;
+  return pd_test::box_points(lo, hi);
 }
 
 // The pair rotated at random and moved `far` away, optionally rounded to float32

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "batch/pair_solve.h"
+#include "box_points.h"
 #include "bracket_check.h"
 #include "corpus/generators.h"
 #include "solve/methods.h"
@@ -16,10 +17,7 @@ using namespace pd;
 namespace {
 
 Points box(const Vec3& lo, const Vec3& hi) {
-  Points p(3, 8);
-  for (int k = 0; k < 8; ++k)
-    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  return p;
+  return pd_test::box_points(lo, hi);
 }
 
 Points shifted(Points p, const Vec3& d) {
