@@ -45,6 +45,9 @@ struct FacePlane {
 ///   complement then holds the intersection of their outer sides, and
 ///   sd(x) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread), since
 ///   moving x along m by that much leaves every outer side's boundary behind.
+///   Where the normals spread wider (a small hole wholly near the box), m is
+///   the mean of those facing the box, `hole` keeps only the planes within 60°
+///   of it, and the others are checked to stay behind every foot.
 /// - wedges, where the other faces bound no convex hole (a pin's shank meeting
 ///   its head's underside: the complement is the union of one wedge per shank
 ///   facet): two planes whose outer sides' intersection W holds no face within
