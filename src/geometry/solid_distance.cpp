@@ -286,33 +286,34 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
 // With `witness` (a union of shells, where just outside one shell's face may
 // be inside another), the hole's own foot point from c must also be outside.
 template <class Outside>
-bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
-                 double cap, const Vec3& c, double r, double reach, bool witness,
-                 const Outside& outside, LocalPlanes& out) {
+std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& groups,
+                                             const std::vector<const PlaneGroup*>& hole,
+                                             double slack, double cap, const Vec3& c, double r,
+                                             double reach, bool witness, const Outside& outside) {
   using Group = PlaneGroup;
   const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
     double m = INFINITY;
     for (const Vec3& p : face) m = std::min(m, sign * q.at(p));
     return m;
   };
-  double hole_slack = out.slack;
+  double hole_slack = slack;
   for (const Group* g : hole) {
     for (const auto& t : g->faces) hole_slack = std::max(hole_slack, -least(t, g->plane, 1.0));
     for (const Group* h : hole) {
       if (g == h) continue;
       for (const auto& t : g->faces) {
         const double m = least(t, h->plane, -1.0);
-        if (m < -cap) return false;
+        if (m < -cap) return std::nullopt;
         hole_slack = std::max(hole_slack, -m);
       }
     }
   }
   for (const Group& g : groups) {
-    if (!g.supporting) continue;
+    if (std::find(hole.begin(), hole.end(), &g) != hole.end()) continue;
     for (const auto& t : g.faces) {
       double best = -INFINITY;
       for (const Group* h : hole) best = std::max(best, least(t, h->plane, 1.0));
-      if (best < -cap) return false;
+      if (best < -cap) return std::nullopt;
       hole_slack = std::max(hole_slack, -best);
     }
   }
@@ -342,7 +343,7 @@ bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const 
   std::vector<const Group*> near, far;
   for (const Group* g : hole)
     (g->plane.normal.dot(mean) * tol::kLocalPlanesMaxKappa >= 1.0 ? near : far).push_back(g);
-  if (near.empty() || !mean.allFinite()) return false;
+  if (near.empty() || !mean.allFinite()) return std::nullopt;
   double cos_spread = 1.0, sigma = -INFINITY;
   for (const Group* g : near) {
     cos_spread = std::min(cos_spread, g->plane.normal.dot(mean));
@@ -350,27 +351,192 @@ bool convex_hole(const std::vector<PlaneGroup>& groups, const std::vector<const 
   }
   const double kappa = 1.0 / cos_spread;
   const double longest = kappa * std::max(sigma + r + hole_slack, 0.0);  // the farthest foot step
-  if (r + longest > reach) return false;  // a foot could leave the ball
+  if (r + longest > reach) return std::nullopt;  // a foot could leave the ball
   for (const Group* g : far)
     if (g->plane.at(c) + r + longest * std::max(0.0, -g->plane.normal.dot(mean)) > -hole_slack)
-      return false;
+      return std::nullopt;
   if (witness) {
     const double margin = 0.5 * r + 1e-3 * cap;
     const Vec3 z = c + kappa * std::max(sigma + hole_slack + margin, margin) * mean;
-    if ((z - c).norm() >= reach || !outside(z)) return false;
+    if ((z - c).norm() >= reach || !outside(z)) return std::nullopt;
     for (const Group* g : hole)
-      if (!(g->plane.at(z) < -hole_slack)) return false;
+      if (!(g->plane.at(z) < -hole_slack)) return std::nullopt;
   }
-  out.kappa = kappa;
-  out.slack = hole_slack;
-  for (const Group* g : near) out.hole.push_back(g->plane);
-  return true;
+  LocalPlanes::Hole out{{}, kappa, hole_slack};
+  for (const Group* g : near) out.planes.push_back(g->plane);
+  return out;
+}
+
+// The non-supporting groups split into holes: groups joined when each one's
+// faces lie on the other's outer side (a convex hole's facets face each
+// other; two holes' facets lie behind each other's planes).
+std::vector<std::vector<const PlaneGroup*>> separate_holes(
+    const std::vector<const PlaneGroup*>& hole, double cap) {
+  const auto outer = [&](const PlaneGroup* g, const PlaneGroup* h) {
+    for (const auto& t : g->faces)
+      for (const Vec3& p : t)
+        if (h->plane.at(p) > cap) return false;
+    return true;
+  };
+  std::vector<int> root(hole.size());
+  for (size_t i = 0; i < hole.size(); ++i) root[i] = static_cast<int>(i);
+  const auto find = [&](int i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (size_t i = 0; i < hole.size(); ++i)
+    for (size_t j = i + 1; j < hole.size(); ++j)
+      if (outer(hole[i], hole[j]) && outer(hole[j], hole[i]))
+        root[find(static_cast<int>(i))] = find(static_cast<int>(j));
+  std::vector<std::vector<const PlaneGroup*>> out;
+  std::vector<int> slot(hole.size(), -1);
+  for (size_t i = 0; i < hole.size(); ++i) {
+    int& k = slot[find(static_cast<int>(i))];
+    if (k < 0) k = static_cast<int>(out.size()), out.emplace_back();
+    out[k].push_back(hole[i]);
+  }
+  return out;
+}
+
+// The faces of `mesh` meeting the ball of radius `reach` about c, clipped to
+// its box and grouped by plane (within `cap`); nullopt when a face has no
+// normal (degenerate).
+std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
+                                                   const std::vector<int>& faces, const Vec3& c,
+                                                   double reach, double cap) {
+  const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
+  std::vector<PlaneGroup> groups;
+  for (int f : faces) {
+    const std::array<Vec3, 3> t = mesh.face(f);
+    if (point_triangle_distance(c, t[0], t[1], t[2]) > reach) continue;
+    const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+    if (!n.allFinite()) return std::nullopt;
+    std::vector<Vec3> part = clip_to_box(t, box_lo, box_hi);
+    if (part.empty()) continue;
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const PlaneGroup& q) {
+      return q.plane.normal.dot(n) > 0.999 &&
+             std::all_of(part.begin(), part.end(),
+                         [&](const Vec3& p) { return std::abs(q.plane.at(p)) <= cap; });
+    });
+    if (g == groups.end()) {
+      groups.push_back({{n, n.dot(t[0])}, {}, true});
+      g = groups.end() - 1;
+    }
+    g->faces.push_back(std::move(part));
+  }
+  return groups;
+}
+
+// How the groups' faces lie against each other's planes: crossing[k], how far
+// any face lies beyond plane k; crosses(k, h), a face of group h beyond plane
+// k by more than cap. A group crossed so is not supporting.
+struct Crossings {
+  std::vector<double> crossing;
+  std::vector<char> crossed;
+  size_t n = 0;
+  bool crosses(size_t k, size_t h) const { return crossed[k * n + h] != 0; }
+};
+Crossings measure_crossings(std::vector<PlaneGroup>& groups, double cap) {
+  Crossings x{std::vector<double>(groups.size(), 0.0),
+              std::vector<char>(groups.size() * groups.size(), 0), groups.size()};
+  for (size_t k = 0; k < x.n; ++k)
+    for (size_t h = 0; h < x.n; ++h)
+      for (const auto& t : groups[h].faces) {
+        double m = INFINITY;  // the least s over the face: < -cap, beyond the plane
+        for (const Vec3& p : t) m = std::min(m, groups[k].plane.at(p));
+        x.crossing[k] = std::max(x.crossing[k], -m);
+        if (m < -cap) x.crossed[k * x.n + h] = 1, groups[k].supporting = false;
+      }
+  return x;
+}
+
+// Each supporting plane bounds sd on its own: the nearest ones (at most
+// kLocalPlanesMaxPlanes, every foot point within the reach) bound it best.
+// With `witness`, a point beyond the plane's crossings must be outside.
+template <class Outside>
+void add_supporting(const std::vector<PlaneGroup>& groups, const Crossings& x, const Vec3& c,
+                    double r, double reach, double cap, bool witness, const Outside& outside,
+                    LocalPlanes& out) {
+  std::vector<std::pair<double, size_t>> nearest;  // by s(c)
+  for (size_t k = 0; k < groups.size(); ++k)
+    if (groups[k].supporting && groups[k].plane.at(c) + 2.0 * r <= reach)
+      nearest.push_back({groups[k].plane.at(c), k});
+  std::sort(nearest.begin(), nearest.end());
+  if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
+    nearest.resize(tol::kLocalPlanesMaxPlanes);
+  for (const auto& [s_c, k] : nearest) {
+    if (witness) {
+      const double step = std::max(s_c, 0.0) + x.crossing[k] + 0.5 * r + 1e-3 * cap;
+      const Vec3 z = c + step * groups[k].plane.normal;
+      if (step >= reach || !outside(z)) continue;
+    }
+    out.supporting.push_back(groups[k].plane);
+    out.slack = std::max(out.slack, x.crossing[k]);
+  }
+}
+
+// One convex hole, else several apart (each holds on its own). Returns
+// whether every hole plane is explained. Too many planes in one (a whole
+// small hole within the reach): that hole is left out.
+template <class Outside>
+bool add_holes(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
+               double cap, const Vec3& c, double r, double reach, bool witness,
+               const Outside& outside, LocalPlanes& out) {
+  const auto one_hole = [&](const std::vector<const PlaneGroup*>& planes) {
+    if (planes.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
+      return std::optional<LocalPlanes::Hole>();
+    return convex_hole(groups, planes, out.slack, cap, c, r, reach, witness, outside);
+  };
+  if (auto h = one_hole(hole)) {
+    out.holes.push_back(std::move(*h));
+    return true;
+  }
+  const auto apart = separate_holes(hole, cap);
+  if (apart.size() < 2) return false;
+  std::vector<LocalPlanes::Hole> found;
+  for (const auto& planes : apart)
+    if (auto h = one_hole(planes)) found.push_back(std::move(*h));
+  const bool all = found.size() == apart.size();
+  for (auto& h : found) out.holes.push_back(std::move(h));
+  return all;
+}
+
+// Wedges among the hole planes that bound no convex hole, the pairs with the
+// smallest bound at c first. Only planes whose faces cross each other's outer
+// side can make one (a concave edge's two sides; a cylinder's facets never
+// cross each other).
+template <class Outside>
+void add_wedges(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
+                const Crossings& x, double cap, const Vec3& c, double r, double reach,
+                const Outside& outside, LocalPlanes& out) {
+  std::vector<std::pair<double, std::pair<const PlaneGroup*, const PlaneGroup*>>> pairs;
+  const auto index = [&](const PlaneGroup* g) { return static_cast<size_t>(g - groups.data()); };
+  for (size_t i = 0; i < hole.size(); ++i)
+    for (size_t j = i + 1; j < hole.size(); ++j) {
+      const size_t gi = index(hole[i]), gj = index(hole[j]);
+      if (!x.crosses(gi, gj) && !x.crosses(gj, gi)) continue;
+      const Vec3 mean = (hole[i]->plane.normal + hole[j]->plane.normal).normalized();
+      const double cos_spread = hole[i]->plane.normal.dot(mean);
+      if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) continue;
+      const double at_c = std::max(hole[i]->plane.at(c), hole[j]->plane.at(c)) / cos_spread;
+      pairs.push_back({at_c, {hole[i], hole[j]}});
+    }
+  std::sort(pairs.begin(), pairs.end(),
+            [](const auto& p, const auto& q) { return p.first < q.first; });
+  int tries = 0;
+  for (const auto& [at_c, gh] : pairs) {
+    if (tries++ >= tol::kLocalPlanesWedgeTries ||
+        out.wedges.size() >= static_cast<size_t>(tol::kLocalPlanesMaxWedges))
+      break;
+    if (auto w = wedge_of(*gh.first, *gh.second, groups, cap, c, r, reach, outside))
+      out.wedges.push_back(*w);
+  }
 }
 
 // The plane model of one oriented closed mesh about a box
 // (SolidDistance::local_planes); `outside(p)`: p strictly outside the solid.
 // Faces within reach = reach_kappa·(d + r + noise) + r count; `complete` tells
-// whether every face there was explained (no hole, or a convex one), so that
+// whether every face there was explained (no hole, or convex ones), so that
 // a larger reach could not do better.
 template <class Outside>
 LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r,
@@ -392,102 +558,16 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
   std::vector<int> near;
   mesh.faces_in_box(c.array() - reach, c.array() + reach, near);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
-  // The faces meeting the ball, grouped by plane.
-  using Group = PlaneGroup;
-  const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
-  std::vector<Group> groups;
-  for (int f : near) {
-    const std::array<Vec3, 3> t = mesh.face(f);
-    if (point_triangle_distance(c, t[0], t[1], t[2]) > reach) continue;
-    const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
-    if (!n.allFinite()) return out;
-    std::vector<Vec3> part = clip_to_box(t, box_lo, box_hi);
-    if (part.empty()) continue;
-    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& q) {
-      return q.plane.normal.dot(n) > 0.999 &&
-             std::all_of(part.begin(), part.end(),
-                         [&](const Vec3& p) { return std::abs(q.plane.at(p)) <= cap; });
-    });
-    if (g == groups.end()) {
-      groups.push_back({{n, n.dot(t[0])}, {}, true});
-      g = groups.end() - 1;
-    }
-    g->faces.push_back(std::move(part));
-  }
-  double slack = 0.0;
-  // The least s over a face's corners (sign +1) or minus the largest (sign -1):
-  // ≥ -cap means the face lies on that side up to rounding.
-  const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
-    double m = INFINITY;
-    for (const Vec3& p : face) m = std::min(m, sign * q.at(p));
-    return m;
-  };
-  // Supporting: every face in the ball on the plane's inner side.
-  // crosses[k·n + h]: a face of group h lies beyond plane k by more than cap.
-  const size_t n = groups.size();
-  std::vector<double> crossing(n, 0.0);
-  std::vector<char> crosses(n * n, 0);
-  for (size_t k = 0; k < n; ++k)
-    for (size_t h = 0; h < n; ++h)
-      for (const auto& t : groups[h].faces) {
-        const double m = least(t, groups[k].plane, 1.0);
-        crossing[k] = std::max(crossing[k], -m);
-        if (m < -cap) crosses[k * n + h] = 1, groups[k].supporting = false;
-      }
-  std::vector<const Group*> hole;
-  std::vector<std::pair<double, size_t>> nearest;  // supporting planes by s(c)
-  for (size_t k = 0; k < groups.size(); ++k) {
-    const Group& g = groups[k];
-    if (!g.supporting)
-      hole.push_back(&g);
-    else if (g.plane.at(c) + 2.0 * r <= reach)  // every foot point within the ball
-      nearest.push_back({g.plane.at(c), k});
-  }
-  // Each supporting plane bounds sd on its own: the nearest ones bound it best.
-  std::sort(nearest.begin(), nearest.end());
-  if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
-    nearest.resize(tol::kLocalPlanesMaxPlanes);
-  for (const auto& [s_c, k] : nearest) {
-    if (witness) {  // a point beyond the plane's crossings, within the reach, outside
-      const double step = std::max(s_c, 0.0) + crossing[k] + 0.5 * r + 1e-3 * cap;
-      const Vec3 z = c + step * groups[k].plane.normal;
-      if (step >= reach || !outside(z)) continue;
-    }
-    out.supporting.push_back(groups[k].plane);
-    slack = std::max(slack, crossing[k]);
-  }
-  out.slack = slack;
-  // Too many other planes (a whole small hole within the reach): the
-  // supporting planes hold on their own.
-  if (hole.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes)) return out;
-  complete = hole.empty() || convex_hole(groups, hole, cap, c, r, reach, witness, outside, out);
-  if (complete) return out;
-  // No convex hole: pairs of its planes whose wedge is complement, the pairs
-  // with the smallest bound at c first.
-  // Only planes whose faces cross each other's outer side can make one (a
-  // concave edge's two sides; a cylinder's facets never cross each other).
-  std::vector<std::pair<double, std::pair<const Group*, const Group*>>> pairs;
-  const auto index = [&](const Group* g) { return static_cast<size_t>(g - groups.data()); };
-  for (size_t i = 0; i < hole.size(); ++i)
-    for (size_t j = i + 1; j < hole.size(); ++j) {
-      const size_t gi = index(hole[i]), gj = index(hole[j]);
-      if (!crosses[gi * n + gj] && !crosses[gj * n + gi]) continue;
-      const Vec3 mean = (hole[i]->plane.normal + hole[j]->plane.normal).normalized();
-      const double cos_spread = hole[i]->plane.normal.dot(mean);
-      if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) continue;
-      const double at_c = std::max(hole[i]->plane.at(c), hole[j]->plane.at(c)) / cos_spread;
-      pairs.push_back({at_c, {hole[i], hole[j]}});
-    }
-  std::sort(pairs.begin(), pairs.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
-  int tries = 0;
-  for (const auto& [at_c, gh] : pairs) {
-    if (tries++ >= tol::kLocalPlanesWedgeTries ||
-        out.wedges.size() >= static_cast<size_t>(tol::kLocalPlanesMaxWedges))
-      break;
-    if (auto w = wedge_of(*gh.first, *gh.second, groups, cap, c, r, reach, outside))
-      out.wedges.push_back(*w);
-  }
+  auto groups = groups_near(mesh, near, c, reach, cap);
+  if (!groups) return out;
+  const Crossings x = measure_crossings(*groups, cap);
+  add_supporting(*groups, x, c, r, reach, cap, witness, outside, out);
+  std::vector<const PlaneGroup*> hole;
+  for (const PlaneGroup& g : *groups)
+    if (!g.supporting) hole.push_back(&g);
+  complete = hole.empty() || add_holes(*groups, hole, cap, c, r, reach, witness, outside, out);
+  if (!complete && hole.size() <= static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
+    add_wedges(*groups, hole, x, cap, c, r, reach, outside, out);
   return out;
 }
 

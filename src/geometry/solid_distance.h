@@ -46,8 +46,11 @@ struct FacePlane {
 ///   sd(x) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread), since
 ///   moving x along m by that much leaves every outer side's boundary behind.
 ///   Where the normals spread wider (a small hole wholly near the box), m is
-///   the mean of those facing the box, `hole` keeps only the planes within 60°
-///   of it, and the others are checked to stay behind every foot.
+///   the mean of those facing the box, the hole keeps only the planes within 60°
+///   of it, and the others are checked to stay behind every foot. Where the
+///   other faces bound several holes (their planes grouped by facing each
+///   other), each that passes these checks holds on its own: the solid near
+///   the box lies outside each of them.
 /// - wedges, where the other faces bound no convex hole (a pin's shank meeting
 ///   its head's underside: the complement is the union of one wedge per shank
 ///   facet): two planes whose outer sides' intersection W holds no face within
@@ -57,19 +60,26 @@ struct FacePlane {
 /// All empty: nothing could be certified (degenerate faces, no orientation,
 /// too many faces); the Lipschitz bound still holds.
 struct LocalPlanes {
+  /// One convex hole: sd(x) ≤ kappa · (max_k s_k(x) + slack) over its planes.
+  struct Hole {
+    std::vector<FacePlane> planes;
+    double kappa = 1.0;
+    double slack = 0.0;  ///< as `slack` below, measured for this hole
+  };
   struct Wedge {
     FacePlane p, q;
     double kappa = 1.0;
     double slack = 0.0;  ///< as `slack` below, measured for this wedge
   };
   std::vector<FacePlane> supporting;
-  std::vector<FacePlane> hole;
+  /// Usually one; several where separate holes lie near the box (a drilled
+  /// board's row of holes), each of which holds on its own.
+  std::vector<Hole> holes;
   std::vector<Wedge> wedges;
-  double kappa = 1.0;
-  /// How far faces were measured to cross the planes they should lie behind (the
+  /// How far faces were measured to cross the supporting planes they should lie behind (the
   /// coordinates' rounding; accepted up to noise()): added to the bound, so it holds exactly.
   double slack = 0.0;
-  bool empty() const { return supporting.empty() && hole.empty() && wedges.empty(); }
+  bool empty() const { return supporting.empty() && holes.empty() && wedges.empty(); }
 };
 
 /// A closed triangle mesh as a solid. Vertices with equal coordinates are one

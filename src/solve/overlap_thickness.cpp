@@ -47,16 +47,22 @@ std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& 
   const auto bound = [](const FacePlane& q, double kappa, double slack) {
     return Affine{kappa * (q.offset + slack), -kappa * q.normal};
   };
-  std::vector<std::vector<Affine>> alts;
-  if (m.hole.empty()) alts.push_back(base);
-  for (const FacePlane& q : m.hole) {
-    if (!can_lead(q, m.slack)) continue;
-    alts.push_back(base);
-    alts.back().push_back(bound(q, m.kappa, m.slack));
+  std::vector<std::vector<Affine>> alts{base}, next;
+  // Each hole and each wedge holds on its own: every alternative so far meets
+  // one plane of each.
+  for (const LocalPlanes::Hole& h : m.holes) {
+    next.clear();
+    for (const auto& alt : alts)
+      for (const FacePlane& q : h.planes) {
+        if (!can_lead(q, h.slack)) continue;
+        next.push_back(alt);
+        next.back().push_back(bound(q, h.kappa, h.slack));
+      }
+    alts.swap(next);
+    if (alts.size() > static_cast<size_t>(tol::kLocalPlanesMaxChoices)) return alts;
   }
-  // Each wedge holds on its own: every alternative so far meets one of its two.
   for (const LocalPlanes::Wedge& w : m.wedges) {
-    std::vector<std::vector<Affine>> next;
+    next.clear();
     for (const auto& alt : alts)
       for (const FacePlane* q : {&w.p, &w.q}) {
         if (!can_lead(*q, w.slack)) continue;
