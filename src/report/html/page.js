@@ -86,8 +86,8 @@
       tr.append(st, el('td', { class: 'num' }, f.status === 'error' ? '—' : num(f.depth)),
         el('td', { class: 'num' }, f.status === 'error' ? '—' : num(f.margin)),
         el('td', { class: 'id', title: f.a }, f.a), el('td', { class: 'id', title: f.b }, f.b),
-        el('td', {}, f.baseline_state || ''), el('td', { class: 'group', title: f.group || '' }, groupLabel(f.group)),
-        el('td', { class: 'fp', title: f.fingerprint }, f.fingerprint.slice(0, 8) + '…'));
+        el('td', {}, f.baseline_state || ''), el('td', { class: 'fp', title: f.fingerprint }, f.fingerprint.slice(0, 8) + '…'),
+        el('td', { class: 'group', title: f.group || '' }, groupLabel(f.group)));
       tr.addEventListener('click', () => select(k, true, true));
       rows.push(tr);
       body.append(tr);
@@ -427,6 +427,7 @@
     // the depth arrow starts there and the first view is centred on it.
     gl.atPoint = null;
     gl.marker = null;
+    gl.centre = centre;
     if (f.at) {
       gl.atPoint = new THREE.Vector3(f.at[0] - centre[0], f.at[1] - centre[1], f.at[2] - centre[2]);
       arrowAt = gl.atPoint.clone();
@@ -526,6 +527,9 @@
     gl.camera.updateProjectionMatrix();
     gl.controls.target.copy(centre);
     gl.controls.update();
+    // Where the view is centred, in scene units (tests read it back).
+    api.target = [centre.x + gl.centre[0], centre.y + gl.centre[1], centre.z + gl.centre[2]];
+    api.marker = !!gl.marker;
     render();
   }
 
