@@ -177,8 +177,9 @@ TEST(Shard, MergedShardsEqualTheUnshardedReport) {
   EXPECT_GT(several, 0u) << want["groups"].dump();
   for (const auto& p : want["pairs"]) {
     const std::string st = p["status"];
-    if (st == "false_positive" || st == "interference" || st == "clearance_violation")
+    if (st == "false_positive" || st == "interference" || st == "clearance_violation") {
       EXPECT_TRUE(p.contains("at")) << p.dump();
+    }
     EXPECT_EQ(p.contains("group"), st == "interference" || st == "clearance_violation") << p.dump();
   }
 
