@@ -225,9 +225,10 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
                 {"b", p.value("b", "")},
                 {"fingerprint", p.value("fingerprint", "")},
                 {"status", p.value("status", "")}};
-    for (const char* key : {"depth", "direction", "margin", "depth_source", "pieces", "confirmed",
-                            "error", "baseline_state", "suppressed", "warnings", "hull_depth",
-                            "depth_bounds", "distance", "clearance", "motion", "at", "reason", "group"})
+    for (const char* key :
+         {"depth", "direction", "margin", "depth_source", "pieces", "confirmed", "error",
+          "baseline_state", "suppressed", "warnings", "hull_depth", "depth_bounds", "distance",
+          "clearance", "motion", "at", "reason", "group"})
       if (p.contains(key)) row[key] = p[key];
     if (row.contains("motion")) row["motion"].erase("series");
     row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));

@@ -434,9 +434,13 @@
       const marker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12), material('at', COLORS.at, 0.9,
         () => new THREE.MeshBasicMaterial({ color: COLORS.at, transparent: true, opacity: 0.9, depthTest: false })));
       marker.position.copy(gl.atPoint);
-      marker.renderOrder = 11;
-      marker.name = 'at';
-      gl.group.add(marker);
+      // In a Group of its own: a Group's renderOrder orders it against the others
+      // (the overlap's), so the marker is drawn over everything, last.
+      const onTop = new THREE.Group();
+      onTop.renderOrder = 11;
+      onTop.name = 'at';
+      onTop.add(marker);
+      gl.group.add(onTop);
       gl.marker = marker;
     }
     let dir = null;
@@ -511,8 +515,8 @@
     const centre = at ? at.clone() : box.getCenter(new THREE.Vector3());
     let radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-9);
     if (at) radius = Math.max(radius, box.distanceToPoint(at) + radius * 0.5);
-    // The marker keeps a constant size on screen: 1/80 of the view's radius.
-    if (gl.marker) gl.marker.scale.setScalar(radius / 80);
+    // The marker keeps its size on screen: 1/30 of the view's radius.
+    if (gl.marker) gl.marker.scale.setScalar(radius / 30);
     let side = new THREE.Vector3(1, 0.6, 0.8);
     if (dir) {
       const up = Math.abs(dir.z) < 0.9 ? new THREE.Vector3(0, 0, 1) : new THREE.Vector3(1, 0, 0);
