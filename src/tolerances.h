@@ -193,6 +193,23 @@ inline constexpr size_t kHtmlPageTriangles = 300000;
 /// its pair (as faint boxes, the nearest first).
 inline constexpr size_t kHtmlContextParts = 24;
 
+/// Where a finding is (geometry/depth_witness.h): the points of a convex set
+/// within this fraction of the pair's size of its support plane along the
+/// depth direction form the face the witness patch is taken on. The witness is
+/// a place to look, not a measure: wide enough that a face or edge is found
+/// whole when the direction is off by up to 5e-5 rad (an edge–edge optimum's
+/// direction is known only to about the square root of the objective's
+/// accuracy, √kIpoptTol = 1e-5); on a finely tessellated curved surface it
+/// takes the few vertices around the true support point.
+inline constexpr double kWitnessFace = 1e-4;
+
+/// Finding groups (report/finding_groups.h): two findings that share a part
+/// and need a fix are one group when the moves of that part that clear them
+/// (each finding's direction, oriented as a move of the part) are at most this
+/// angle apart (absolute, radians). Within 30° a move along one clears the
+/// other's overlap with at most 1/cos 30° = 1.155 times its depth.
+inline constexpr double kGroupMoveAngle = 0.5235987755982988;  // 30°
+
 /// Sharding (batch/shard.h). A shard's plan box of a part (its placed vertices'
 /// box) is widened by this fraction of its largest coordinate, so it contains the
 /// hull's box whatever rounding the hull's placement took; wider boxes only add

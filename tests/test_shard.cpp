@@ -169,6 +169,19 @@ TEST(Shard, MergedShardsEqualTheUnshardedReport) {
   for (const char* k : {"separated", "false_positive", "interference", "error",
                         "clearance_violation", "part_errors", "unchecked", "culled"})
     EXPECT_GT(sum[k].get<long>(), 0) << k << " missing from the test scene: " << sum.dump();
+  // Every finding says where it is; groups of several findings (the chains of
+  // three cubes: two of them ask the top cube to move up) are recomputed by the
+  // merge from the merged set (compared below with the rest of the report).
+  size_t several = 0;
+  for (const auto& g : want["groups"]) several += g["members"].size() > 1 ? 1 : 0;
+  EXPECT_GT(several, 0u) << want["groups"].dump();
+  for (const auto& p : want["pairs"]) {
+    const std::string st = p["status"];
+    if (st == "false_positive" || st == "interference" || st == "clearance_violation") {
+      EXPECT_TRUE(p.contains("at")) << p.dump();
+    }
+    EXPECT_EQ(p.contains("group"), st == "interference" || st == "clearance_violation") << p.dump();
+  }
 
   for (int n : {1, 2, 3, 7}) {
     const std::vector<std::string> shards = run_shards(s, n, "eq");

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "batch/piece_pairs.h"
+#include "geometry/depth_witness.h"
 #include "solve/signed_distance.h"
 
 namespace pd {
@@ -44,17 +45,22 @@ MotionSweep sweep_pair(const Part& a, const Part& b, const MotionCheck& check,
     if (!c.fallback.empty()) out.fallback = c.fallback;
     const double value = c.value;
     const Vec3 dir = c.direction;
+    const auto witness = [&] {
+      return c.solved ? std::optional<Vec3>(depth_witness(pa[c.piece_a], pb[c.piece_b], dir))
+                      : std::nullopt;
+    };
     if (check.series) tr.series.emplace_back(t, value);
     if (value > 0 && (!any_overlap || value > tr.max_depth)) {
       any_overlap = true;
       tr.max_depth = value;
       tr.t_max_depth = t;
       out.direction_at_max = dir;
+      out.at = witness();
     }
     if (value <= 0 && (!tr.min_distance || -value < *tr.min_distance)) {
       tr.min_distance = -value;
       tr.t_min_distance = t;
-      if (!any_overlap) out.direction_at_max = dir;
+      if (!any_overlap) out.direction_at_max = dir, out.at = witness();
     }
   }
   return out;

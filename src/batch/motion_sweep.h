@@ -14,6 +14,9 @@ namespace pd {
 struct MotionSweep {
   MotionTrace trace;
   Vec3 direction_at_max = Vec3::UnitZ();
+  /// Where: the witness (geometry/depth_witness.h) of the deepest step's
+  /// realising piece pair, else of the closest step's.
+  std::optional<Vec3> at;
   SolveStats stats;
   std::string fallback;
 };

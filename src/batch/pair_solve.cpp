@@ -9,6 +9,7 @@
 
 #include "batch/motion_sweep.h"
 #include "batch/piece_pairs.h"
+#include "geometry/depth_witness.h"
 #include "solve/methods.h"
 #include "solve/signed_distance.h"
 #include "tolerances.h"
@@ -23,9 +24,20 @@ std::vector<Aabb> piece_boxes(const Part& p) {
   return boxes;
 }
 
+// Where a pair's depth (or gap) is: the witness of its realising piece pair
+// along that pair's direction (geometry/depth_witness.h).
+struct WitnessInputs {
+  int piece_a = -1, piece_b = -1;
+  Vec3 direction = Vec3::UnitZ();
+  std::optional<Vec3> at(const Part& a, const Part& b) const {
+    if (piece_a < 0 || piece_b < 0) return std::nullopt;
+    return depth_witness(a.pieces[piece_a].vertices, b.pieces[piece_b].vertices, direction);
+  }
+};
+
 // The static check: the deepest piece pair counts (combine_piece_outcomes).
-void solve_static(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt,
-                  PairResult& r) {
+WitnessInputs solve_static(const Part& a, const Part& b, const SolverSettings& s,
+                           IpoptLocalSolver& ipopt, PairResult& r) {
   const PiecePairsResult c = solve_piece_pairs(piece_boxes(a), piece_boxes(b), [&](int i, int j) {
     const DepthSolution d = solve_convex_pair(a.pieces[i].vertices, b.pieces[j].vertices, s, ipopt);
     PieceOutcome o = make_outcome(i, j, d.depth, d.direction, d.distance);
@@ -39,12 +51,13 @@ void solve_static(const Part& a, const Part& b, const SolverSettings& s, IpoptLo
   r.direction = c.direction;
   r.distance = c.distance;
   if (a.pieces.size() * b.pieces.size() > 1) r.pieces = {c.piece_a, c.piece_b};
+  return {c.solved ? c.piece_a : -1, c.solved ? c.piece_b : -1, c.direction};
 }
 
 // The separation distance of a separated pair: the smallest over its piece
 // pairs, each warm-started from the static solve's separating direction.
-void static_distance(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt,
-                     PairResult& r) {
+WitnessInputs static_distance(const Part& a, const Part& b, const SolverSettings& s,
+                              IpoptLocalSolver& ipopt, PairResult& r) {
   const Vec3 warm = r.direction;
   const PiecePairsResult c = solve_piece_pairs(piece_boxes(a), piece_boxes(b), [&](int i, int j) {
     const SignedSolution d =
@@ -62,6 +75,9 @@ void static_distance(const Part& a, const Part& b, const SolverSettings& s, Ipop
     r.direction = c.direction;
     r.pieces = {c.piece_a, c.piece_b};
   }
+  // The closest piece pair's own direction: the static one (kept above for a
+  // single piece pair) separates, but need not be where the gap is smallest.
+  return {c.solved ? c.piece_a : -1, c.solved ? c.piece_b : -1, c.direction};
 }
 
 // The largest coordinate plus the box diagonal, without overflow in the
@@ -96,6 +112,7 @@ const char* non_finite_field(const PairResult& r) {
   if (!r.direction.allFinite()) return "direction";
   if (!std::isfinite(r.margin)) return "margin";
   if (r.distance && !std::isfinite(*r.distance)) return "distance";
+  if (r.at && !r.at->allFinite()) return "witness point";
   if (r.motion) {
     const MotionTrace& m = *r.motion;
     if (!std::isfinite(m.max_depth) || !std::isfinite(m.t_max_depth) ||
@@ -137,6 +154,7 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
   }
   try {
     r.clearance_min = checks.clearance;
+    WitnessInputs witness;
     if (checks.motion) {  // the sweep replaces the static solve
       const MotionSweep sw = sweep_pair(a, b, *checks.motion, s, ipopt);
       r.motion = sw.trace;
@@ -145,8 +163,9 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
       r.distance = sw.trace.min_distance;
       r.fallback = sw.fallback;
       r.stats += sw.stats;
+      r.at = sw.at;  // the deepest step's (else the closest step's)
     } else {
-      solve_static(a, b, s, ipopt, r);
+      witness = solve_static(a, b, s, ipopt, r);
     }
     // Rounding scale of the pair: input coordinates were rounded at their absolute
     // magnitude, so the box's distance from the origin counts as well as its size.
@@ -161,11 +180,16 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
       r.warnings.push_back(*w);
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
-      if (!checks.motion) static_distance(a, b, s, ipopt, r);
+      if (!checks.motion) witness = static_distance(a, b, s, ipopt, r);
       // Touching (distance within rounding of 0) is contact, as for depths.
       if (r.distance && *r.distance > tol::kTouch * size && *r.distance < *checks.clearance)
         r.status = Status::kClearanceViolation;
     }
+    // Every finding says where it is; a clean pair needs no place.
+    if (r.status == Status::kSeparated)
+      r.at.reset();
+    else if (!checks.motion)
+      r.at = witness.at(a, b);
     if (const char* bad = non_finite_field(r)) {
       r.status = Status::kError;
       r.error = std::string("the solve gave a non-finite ") + bad +

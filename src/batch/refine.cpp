@@ -48,11 +48,13 @@ PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const
     r.depth_source = "mesh-test";
     r.confirmed = true;
     r.status = Status::kSeparated;
+    r.at.reset();
     if (pieces) {  // a clearance check measured the gap over the pieces
       r.direction = pieces->direction;
       r.pieces = pieces->pieces;
       r.distance = pieces->distance;
-      if (pieces->status == Status::kClearanceViolation) r.status = pieces->status;
+      if (pieces->status == Status::kClearanceViolation)
+        r.status = pieces->status, r.at = pieces->at;
     }
     r.margin = tolerance - r.depth;
     return r;
@@ -63,12 +65,19 @@ PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const
   r.depth_source = by_vertex ? "vertex" : "pieces";
   r.direction = by_vertex || !pieces ? mesh.vertex_direction : pieces->direction;
   if (pieces && !by_vertex) r.pieces = pieces->pieces;
+  // Where: the realising vertex's, else the piece pair's witness (else the hull's).
+  if (by_vertex && mesh.vertex_at)
+    r.at = mesh.vertex_at;
+  else if (pieces && pieces->at)
+    r.at = pieces->at;
   if (mesh.vertex_depth != hull.depth) r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
   r.status = classify(r.depth, tolerance, pair_size);
   if (pieces && pieces->status == Status::kClearanceViolation && r.status == Status::kSeparated) {
     r.status = pieces->status;
     r.distance = pieces->distance;
+    r.at = pieces->at;
   }
+  if (r.status == Status::kSeparated) r.at.reset();
   // Pieces from a decomposition that ran out of time are coarse hulls: their depth
   // decides nothing. Only the vertex bound can still confirm an interference;
   // short of it the pair is not quietly passed.
@@ -104,7 +113,7 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
     r.depth_source = "surface";
     r.direction = mesh.vertex_direction;
     r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
-    r.at.reset();
+    r.at = mesh.vertex_at;
   } else if (t.outcome == Outcome::kAbove) {
     r.status = Status::kInterference;
   } else if (t.outcome == Outcome::kBelow) {
@@ -119,6 +128,7 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
       r.depth = mesh.vertex_depth;
       r.depth_source = "surface";
       r.depth_bounds = {{mesh.vertex_depth, hull.depth}};
+      if (mesh.vertex_at) r.at = mesh.vertex_at;
       r.reason = why_not + ": only the surfaces' meeting and the deepest surface point are known";
     } else {
       r.reason = std::string(t.outcome == Outcome::kTime ? "time box" : "work budget") +
@@ -126,6 +136,7 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
                  " distance evaluations with the bracket still around the tolerance";
     }
   }
+  if (r.status == Status::kSeparated) r.at.reset();  // a finding's place only
   r.margin = tolerance - r.depth;
   return r;
 }
@@ -180,6 +191,10 @@ MeshVerdict mesh_verdict(const PreparedMesh* a, const PreparedMesh* b, bool vert
     const MeshDepthBound bound = deepest_vertex_depth(*a, *b);
     v.vertex_depth = bound.depth;
     v.vertex_direction = bound.direction;
+    // The vertex p and its nearest point q: direction is (p − q) for p of a, (q − p) for p of b.
+    if (bound.vertex >= 0)
+      v.vertex_at =
+          bound.surface_point + (bound.vertex_of_a ? 0.5 : -0.5) * bound.depth * bound.direction;
   }
   return v;
 }
@@ -285,6 +300,9 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
   const SurfaceDepth ba = surface_depth(b.mesh(), a);
   v.vertex_depth = std::max(ab.depth, ba.depth);
   v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
+  // The middle of the deepest sample p and its nearest point q = p − depth·direction.
+  const SurfaceDepth& deeper = ab.depth >= ba.depth ? ab : ba;
+  if (deeper.depth > 0) v.vertex_at = deeper.at - 0.5 * deeper.depth * deeper.direction;
   ThicknessResult t = overlap_thickness(a, b, tolerance, r.depth);
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();

@@ -29,6 +29,9 @@ struct MeshVerdict {
   bool intersect = true;      ///< the surfaces meet or one contains the other
   double vertex_depth = 0.0;  ///< the deepest-vertex lower bound of the depth
   Vec3 vertex_direction = Vec3::UnitZ();
+  /// Where: the middle of the deepest vertex (or surface sample) and its
+  /// nearest point on the other surface, when one lies inside.
+  std::optional<Vec3> vertex_at;
 };
 
 /// Whether the hull stage's result `r` of parts a, b needs the refinement.

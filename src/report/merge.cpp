@@ -4,6 +4,7 @@
 #include <map>
 
 #include "batch/broad_phase.h"
+#include "report/groups_json.h"
 #include "report/json_input.h"
 #include "report/report_json.h"
 #include "report/review.h"
@@ -266,6 +267,7 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
     pairs.push_back(std::move(p));
   }
   out.doc["pairs"] = std::move(pairs);
+  out.doc["groups"] = groups_json(out.review.groups, run);  // the merged set's, as one run's
   add_run_review(out.doc, out.doc["summary"], out.review, out.review_options);
   out.context.scene_path = first.at("scene").get<std::string>();
   out.context.units = first.at("units").get<std::string>();

@@ -84,6 +84,11 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
     }
     rv.pairs.push_back(std::move(pr));
   }
+  std::vector<std::string> ids;
+  for (const Part& p : run.parts) ids.push_back(p.id);
+  rv.groups = group_findings(run.pairs, ids);
+  for (size_t k = 0; k < run.pairs.size(); ++k)
+    if (rv.groups.group_of[k] >= 0) rv.pairs[k].group = rv.groups.groups[rv.groups.group_of[k]].id;
   if (options.baseline) {
     rv.gone = gone_findings(*options.baseline, run, options.listed);
     for (const GoneFinding& g : rv.gone) ++rv.state_count[static_cast<int>(g.state)];

@@ -11,6 +11,7 @@
 #include "exit_code.h"
 #include "report/baseline.h"
 #include "report/fail_on.h"
+#include "report/finding_groups.h"
 #include "report/suppressions.h"
 
 namespace pd {
@@ -37,6 +38,7 @@ struct PairReview {
   const Suppression* suppressed = nullptr;      ///< the entry that holds for it
   std::optional<Hold> not_holding;              ///< a matching entry that expired or was exceeded
   bool fails = false;                           ///< at or above the bar, not suppressed
+  std::string group;                            ///< its finding group's id (finding_groups.h)
 };
 
 /// A suppressions entry that needs attention.
@@ -55,6 +57,7 @@ struct Review {
   std::vector<SuppressionIssue> suppression_issues;
   long state_count[5] = {0, 0, 0, 0, 0};  ///< by BaselineState, gone ones included
   long suppressed = 0, failing = 0;
+  FindingGroups groups;  ///< findings that share a fix (finding_groups.h)
   /// Every part failed (unless allow_empty): bad input; else incomplete wins,
   /// else a finding that fails or a stale suppression (run_exit_code).
   ExitCode exit_code = kExitClean;

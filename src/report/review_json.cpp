@@ -19,6 +19,11 @@ json suppression_json(const Suppression& s) {
 void add_pair_review(json& pair, const PairReview& review) {
   if (review.baseline_state) pair["baseline_state"] = baseline_state_name(*review.baseline_state);
   if (review.suppressed) pair["suppressed"] = suppression_json(*review.suppressed);
+  // Set, or cleared: a merged shard pair carries its shard's group.
+  if (!review.group.empty())
+    pair["group"] = review.group;
+  else
+    pair.erase("group");
 }
 
 void add_run_review(json& doc, json& summary, const Review& review, const ReviewOptions& options) {

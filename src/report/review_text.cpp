@@ -1,6 +1,7 @@
 #include "report/review_text.h"
 
 #include "report/finding_text.h"
+#include "report/group_text.h"
 
 namespace pd {
 
@@ -18,6 +19,7 @@ std::string review_lines(const ReportInput& in) {
   }
   if (shown > 20)
     out += "pdcheck: … and " + std::to_string(shown - 20) + " more failing findings\n";
+  out += group_lines(in);
   for (const SuppressionIssue& i : rv.suppression_issues)
     out += std::string("pdcheck: ") + (i.fails ? "error" : "warning") + ": " +
            in.review_options.suppressions->path + " " + i.entry->where + " (" + i.entry->a + " / " +

@@ -225,9 +225,10 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
                 {"b", p.value("b", "")},
                 {"fingerprint", p.value("fingerprint", "")},
                 {"status", p.value("status", "")}};
-    for (const char* key : {"depth", "direction", "margin", "depth_source", "pieces", "confirmed",
-                            "error", "baseline_state", "suppressed", "warnings", "hull_depth",
-                            "depth_bounds", "distance", "clearance", "motion", "at", "reason"})
+    for (const char* key :
+         {"depth", "direction", "margin", "depth_source", "pieces", "confirmed", "error",
+          "baseline_state", "suppressed", "warnings", "hull_depth", "depth_bounds", "distance",
+          "clearance", "motion", "at", "reason", "group"})
       if (p.contains(key)) row[key] = p[key];
     if (row.contains("motion")) row["motion"].erase("series");
     row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));
@@ -295,6 +296,7 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
       {"caps",
        {{"part_triangles", tol::kHtmlPartTriangles}, {"page_triangles", tol::kHtmlPageTriangles}}}};
   if (report.contains("stage_seconds")) data["stage_seconds"] = report["stage_seconds"];
+  if (report.contains("groups")) data["groups"] = report["groups"];
   if (report.contains("baseline")) data["baseline_file"] = report["baseline"].value("file", "");
 
   const std::string title = "pdcheck: " + report.value("scene", std::string("report"));

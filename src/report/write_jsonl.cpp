@@ -1,5 +1,6 @@
 // --format jsonl: a line per pair in report order, then a summary line (the
 // streamed form on stdout is written by the CLI as pairs finish).
+#include "report/groups_json.h"
 #include "report/review_json.h"
 #include "report/writer.h"
 
@@ -22,6 +23,7 @@ std::string jsonl_tail(const ReportInput& in) {
                                  {"part_errors", nlohmann::ordered_json::array()}};
   for (const auto& p : in.run.parts)
     if (p.error) tail["part_errors"].push_back({{"id", p.id}, {"error", *p.error}});
+  tail["groups"] = groups_json(in.review.groups, in.run);
   add_run_review(tail, tail["summary"], in.review, in.review_options);
   return tail.dump();
 }

@@ -107,6 +107,22 @@ def main():
         check(stats is not None and stats["red"] > 50,
               "the interference's overlap is drawn (red pixels: %s)" % (stats and stats["red"]))
         b.screenshot(os.path.join(binary, "html-report-demo.png"))
+        # Where: the first finding's `at` is marked and the view centred on it.
+        first = next(p for p in findings if p["fingerprint"] == rows[0][2])
+        target = b.evaluate("pdcheck.target")
+        check("at" in first and b.evaluate("pdcheck.marker") is True,
+              "the first finding's `at` is marked: %s" % first.get("at"))
+        check(target is not None and "at" in first and
+              max(abs(t - a) for t, a in zip(target, first["at"])) <= 1e-6 * (1 + max(map(abs, first["at"]))),
+              "the view is centred on `at`: %s vs %s" % (target, first.get("at")))
+        # Groups: one line each, every grouped finding's row names its group.
+        with open(report) as f:
+            groups = json.load(f)["groups"]
+        check(len(groups) >= 1 and b.evaluate("document.querySelectorAll('#group-list li').length") == len(groups),
+              "the page lists the report's %d groups" % len(groups))
+        labels = b.evaluate(ROWS + ".map(r => [r.cells[6].title, r.cells[7].title])")
+        check(all((p.get("group") or "") == dict(labels)[p["fingerprint"]] for p in findings),
+              "each row names its finding's group")
         bars = b.evaluate("document.querySelectorAll('#histogram-plot rect.bar').length")
         over = b.evaluate("document.querySelectorAll('#histogram-plot rect.bar.over').length")
         n_over = sum(p["status"] == "interference" for p in findings)

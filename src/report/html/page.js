@@ -18,6 +18,11 @@
   const rank = (s) => { const k = STATUS_ORDER.indexOf(s); return k < 0 ? STATUS_ORDER.length : k; };
   const units = data.units || '';
   const findings = data.findings;
+  // Finding groups (findings that share a fix): "G1" for the deepest, with the member count.
+  const groups = data.groups || [];
+  const groupIndex = new Map(groups.map((g, n) => [g.id, n]));
+  const groupLabel = (id) => (groupIndex.has(id) ? 'G' + (groupIndex.get(id) + 1) +
+    ' (' + groups[groupIndex.get(id)].members.length + ')' : '');
 
   function el(tag, attrs, text) {
     const e = document.createElement(tag);
@@ -81,7 +86,8 @@
       tr.append(st, el('td', { class: 'num' }, f.status === 'error' ? '—' : num(f.depth)),
         el('td', { class: 'num' }, f.status === 'error' ? '—' : num(f.margin)),
         el('td', { class: 'id', title: f.a }, f.a), el('td', { class: 'id', title: f.b }, f.b),
-        el('td', {}, f.baseline_state || ''), el('td', { class: 'fp', title: f.fingerprint }, f.fingerprint.slice(0, 8) + '…'));
+        el('td', {}, f.baseline_state || ''), el('td', { class: 'fp', title: f.fingerprint }, f.fingerprint.slice(0, 8) + '…'),
+        el('td', { class: 'group', title: f.group || '' }, groupLabel(f.group)));
       tr.addEventListener('click', () => select(k, true, true));
       rows.push(tr);
       body.append(tr);
@@ -98,12 +104,44 @@
     body.addEventListener('keydown', onKey);
   }
 
+  // ---- Groups: one line each, a click lists its members ----
+  function groupSentence(g) {
+    const m = g.move || {};
+    return g.members.length + (g.members.length === 1 ? ' finding' : ' findings') + ' · move ' + m.part + ' by ' +
+      len(m.length) + ' along (' + (m.direction || []).map((x) => num(x, 3)).join(', ') + ') clears ' +
+      (m.covers || []).length + ' · deepest ' + num(g.depth) + ' ' + units;
+  }
+  function buildGroups() {
+    if (!groups.length) return;
+    $('groups').hidden = false;
+    const several = groups.filter((g) => g.members.length > 1).length;
+    $('groups-title').textContent = 'Groups: ' + groups.length + ' (' + several + ' of several findings sharing a fix)';
+    const list = $('group-list');
+    groups.forEach((g, n) => {
+      const b = el('button', { type: 'button', title: 'list this group\'s findings (' + g.id + ')' },
+        'G' + (n + 1) + ': ' + g.parts.join(', '));
+      b.addEventListener('click', () => {
+        $('search').value = g.id;
+        applyFilter();
+        if (visible.length) select(visible[0], true, true);
+      });
+      const li = el('li');
+      li.append(b, document.createTextNode(' ' + groupSentence(g)));
+      list.append(li);
+    });
+  }
+
   function compare(key) {
     if (key === 'status') return (x, y) => rank(findings[x].status) - rank(findings[y].status) ||
       (findings[y].depth || 0) - (findings[x].depth || 0);
     if (key === 'depth' || key === 'margin') return (x, y) => {
       const u = findings[x][key], v = findings[y][key];
       return (u === undefined ? -Infinity : u) - (v === undefined ? -Infinity : v);
+    };
+    if (key === 'group') return (x, y) => {  // by group rank, the ungrouped last; members together
+      const u = groupIndex.has(findings[x].group) ? groupIndex.get(findings[x].group) : Infinity;
+      const v = groupIndex.has(findings[y].group) ? groupIndex.get(findings[y].group) : Infinity;
+      return u === v ? 0 : u < v ? -1 : 1;
     };
     return (x, y) => String(findings[x][key] || '').localeCompare(String(findings[y][key] || ''));
   }
@@ -128,7 +166,8 @@
     for (const k of order) {
       const f = findings[k];
       let show = (!status || f.status === status) &&
-        (!q || f.a.toLowerCase().includes(q) || f.b.toLowerCase().includes(q) || f.fingerprint.includes(q));
+        (!q || f.a.toLowerCase().includes(q) || f.b.toLowerCase().includes(q) || f.fingerprint.includes(q) ||
+          (f.group || '').startsWith(q));
       if (show && (isFinite(lo) || isFinite(hi))) {
         const d = f.depth;
         show = d !== undefined && (!isFinite(lo) || d >= lo) && (!isFinite(hi) || d <= hi);
@@ -206,7 +245,11 @@
       if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') + ')');
       add('depth source', f.depth_source || 'hull');
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
-      if (f.at) add('at', '(' + f.at.map((x) => num(x, 7)).join(', ') + ')');
+      if (f.at) add('at', '(' + f.at.map((x) => num(x, 7)).join(', ') + '), the marked point', COLORS.at);
+      if (f.group && groupIndex.has(f.group)) {
+        const g = groups[groupIndex.get(f.group)];
+        add('group', groupLabel(f.group) + ': ' + groupSentence(g) + ' · ' + f.group);
+      }
     }
     const v = f.view;
     const how = (i) => (i === undefined || i === null ? 'no geometry' : data.meshes[i].how);
@@ -226,7 +269,7 @@
   }
 
   // ---- 3D view ----
-  const COLORS = { a: '#3b82f6', b: '#f59e0b', overlap: '#e11d48', piece: '#7c3aed', arrow: '#047857' };
+  const COLORS = { a: '#3b82f6', b: '#f59e0b', overlap: '#e11d48', piece: '#7c3aed', arrow: '#047857', at: '#111827' };
   let gl = null;  // { renderer, scene, camera, controls, group, boxes }
   const geometryCache = new Map(), edgeCache = new Map(), materialCache = new Map();
   function material(kind, color, opacity, make) {
@@ -380,6 +423,26 @@
       arrowAt = gl.overlapBox.getCenter(new THREE.Vector3());
     }
     const size = fit.getSize(new THREE.Vector3()).length() || 1;
+    // Where the finding is (the report's `at`): a marker drawn over everything;
+    // the depth arrow starts there and the first view is centred on it.
+    gl.atPoint = null;
+    gl.marker = null;
+    gl.centre = centre;
+    if (f.at) {
+      gl.atPoint = new THREE.Vector3(f.at[0] - centre[0], f.at[1] - centre[1], f.at[2] - centre[2]);
+      arrowAt = gl.atPoint.clone();
+      const marker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12), material('at', COLORS.at, 0.9,
+        () => new THREE.MeshBasicMaterial({ color: COLORS.at, transparent: true, opacity: 0.9, depthTest: false })));
+      marker.position.copy(gl.atPoint);
+      // In a Group of its own: a Group's renderOrder orders it against the others
+      // (the overlap's), so the marker is drawn over everything, last.
+      const onTop = new THREE.Group();
+      onTop.renderOrder = 11;
+      onTop.name = 'at';
+      onTop.add(marker);
+      gl.group.add(onTop);
+      gl.marker = marker;
+    }
     let dir = null;
     if (f.direction && f.depth > 0) {
       dir = new THREE.Vector3(f.direction[0], f.direction[1], f.direction[2]).normalize();
@@ -442,14 +505,18 @@
       focusBox = small.clone().union(gl.overlapBox);
     }
     gl.focusBox = focusBox;
-    fitTo(focusBox, dir);
+    fitTo(focusBox, dir, gl.atPoint);
   }
 
   // Looks at `box` from across `dir` (so the depth arrow is seen side-on).
-  function fitTo(box, dir) {
+  // Centred on `at` when given (the finding's point), else on the box.
+  function fitTo(box, dir, at) {
     if (!gl || !box) return;
-    const centre = box.getCenter(new THREE.Vector3());
-    const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-9);
+    const centre = at ? at.clone() : box.getCenter(new THREE.Vector3());
+    let radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-9);
+    if (at) radius = Math.max(radius, box.distanceToPoint(at) + radius * 0.5);
+    // The marker keeps its size on screen: 1/30 of the view's radius.
+    if (gl.marker) gl.marker.scale.setScalar(radius / 30);
     let side = new THREE.Vector3(1, 0.6, 0.8);
     if (dir) {
       const up = Math.abs(dir.z) < 0.9 ? new THREE.Vector3(0, 0, 1) : new THREE.Vector3(1, 0, 0);
@@ -464,6 +531,9 @@
     gl.camera.updateProjectionMatrix();
     gl.controls.target.copy(centre);
     gl.controls.update();
+    // Where the view is centred, in scene units (tests read it back).
+    api.target = [centre.x + gl.centre[0], centre.y + gl.centre[1], centre.z + gl.centre[2]];
+    api.marker = !!gl.marker;
     render();
   }
 
@@ -540,6 +610,7 @@
   api.ms.script_start = Math.round(t0);
   summary();
   buildTable();
+  buildGroups();
   applyFilter();
   lap('table');
   histogram();
@@ -549,7 +620,7 @@
   lap('webgl');
   api.webgl = !!gl;
   $('fit').addEventListener('click', () => gl && fitTo(gl.fitBox, gl.viewDir));
-  $('zoom-overlap').addEventListener('click', () => gl && fitTo(gl.overlapBox || gl.fitBox, gl.viewDir));
+  $('zoom-overlap').addEventListener('click', () => gl && fitTo(gl.overlapBox || gl.fitBox, gl.viewDir, gl.atPoint));
   $('show-a').addEventListener('change', (e) => toggle('a', e.target.checked));
   $('show-b').addEventListener('change', (e) => toggle('b', e.target.checked));
   $('show-context').addEventListener('change', (e) => toggle('context', e.target.checked));
