@@ -17,7 +17,9 @@ namespace {
 // 6: the settings keyed as the settings hash keys them (the seed as an integer,
 //    not a double that merged seeds differing above 2^53).
 // 7: StopReason gained epa-certificate before certificate (enum values moved).
-constexpr CacheKind kKind{"pdcheck-refinement-7", ".pdr"};
+// 8: every finding has `at` (pieces and vertex pairs had none); several holes
+//    per plane model.
+constexpr CacheKind kKind{"pdcheck-refinement-8", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
