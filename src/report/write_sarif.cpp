@@ -121,8 +121,10 @@ std::string render_sarif(const ReportInput& in) {
         {"partialFingerprints", {{"pdcheckPair/v1", pr.fingerprint}}}};
     if (pr.baseline_state) res["baselineState"] = baseline_state_name(*pr.baseline_state);
     if (pr.suppressed) {
-      json props = {{"file", in.review_options.suppressions->path},
+      json props = {{"file", pr.suppressed->rule.empty() ? in.review_options.suppressions->path
+                                                         : in.context.scene_path},
                     {"entry", pr.suppressed->where}};
+      if (!pr.suppressed->rule.empty()) props["rule"] = pr.suppressed->rule;
       if (!pr.suppressed->owner.empty()) props["owner"] = pr.suppressed->owner;
       if (!pr.suppressed->expires.empty()) props["expires"] = pr.suppressed->expires;
       if (pr.suppressed->max_depth) props["max_depth"] = *pr.suppressed->max_depth;
