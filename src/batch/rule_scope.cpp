@@ -1,5 +1,6 @@
 #include "batch/rule_scope.h"
 
+#include <chrono>
 #include <numeric>
 #include <unordered_map>
 
@@ -25,10 +26,12 @@ std::vector<int> every_part(const SceneSpec& scene, std::vector<int> loaded) {
 }  // namespace
 
 RuleScope::RuleScope(const SceneSpec& scene, std::vector<int> loaded)
-    : rules_(std::make_shared<const Rules>(*scene.rules)),
+    : start_(std::chrono::steady_clock::now()),
+      rules_(std::make_shared<const Rules>(*scene.rules)),
       index_(*rules_, scene.parts),
       loaded_(every_part(scene, std::move(loaded))) {
   coverage_.rules = rules_;
+  coverage_.hash = rules_hash(scene);
   if (scene.checks.clearance) {
     std::unordered_map<std::string, int> index;
     for (size_t k = 0; k < scene.parts.size(); ++k) index.emplace(scene.parts[k].id, int(k));
@@ -39,9 +42,12 @@ RuleScope::RuleScope(const SceneSpec& scene, std::vector<int> loaded)
   coverage_.test_pairs.assign(rules_->tests.size(), 0);
   coverage_.ignore_pairs.assign(rules_->ignore.size(), 0);
   coverage_.expected_pairs.assign(rules_->expected.size(), 0);
+  coverage_.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
 void RuleScope::apply(CandidatePairs& c) {
+  const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<int, int>> kept;
   kept.reserve(c.pairs.size());
   decisions_.reserve(c.pairs.size());
@@ -62,6 +68,8 @@ void RuleScope::apply(CandidatePairs& c) {
     decisions_.emplace(key(a, b), std::move(d));
   }
   c.pairs = std::move(kept);
+  coverage_.seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 const PairDecision* RuleScope::decision(int a, int b) const {

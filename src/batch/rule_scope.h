@@ -7,6 +7,7 @@
 // is solved, neither counts as culled or clean.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <unordered_map>
@@ -45,6 +46,7 @@ class RuleScope {
 
  private:
   const PairDecision* decision(int a, int b) const;
+  std::chrono::steady_clock::time_point start_;  ///< resolution timed from here
   std::shared_ptr<const Rules> rules_;
   RuleIndex index_;
   std::vector<int> loaded_;

@@ -96,6 +96,22 @@ std::vector<PartLabels> part_labels(const SceneSpec& scene, const std::vector<in
   return out;
 }
 
+// The rules on the candidates: out-of-scope and ignored pairs dropped, each
+// kept pair's tolerance and clearance its rules', a streamed pair named as the
+// report names it.
+void scope_candidates(RuleScope& rules, CandidatePairs& candidates,
+                      std::function<PairChecks(int, int)>& pair_checks, const RunOptions& options,
+                      RunOptions& run_options) {
+  rules.apply(candidates);
+  pair_checks = rules.pair_checks(std::move(pair_checks));
+  if (options.on_pair)
+    run_options.on_pair = [&rules, &options](const PairResult& r, const std::vector<Part>& p) {
+      PairResult named = r;
+      rules.note(named);
+      options.on_pair(named, p);
+    };
+}
+
 }  // namespace
 
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
@@ -130,13 +146,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   // Rules resolved once, against every part of the scene (a shard's too), before
   // any mesh is read: a set that selects nothing is bad input (exit 2).
   std::optional<RuleScope> rules;
-  if (scene.rules) {
-    const auto r0 = Clock::now();
-    rules.emplace(scene, loaded);
-    out.rules = rules->coverage();
-    out.rules->hash = rules_hash(scene);
-    out.rules->seconds = std::chrono::duration<double>(Clock::now() - r0).count();
-  }
+  if (scene.rules) rules.emplace(scene, loaded);
   const SceneSpec& to_load = plan || !shard_scene.parts.empty() ? shard_scene : scene;
   {
     Progress progress(to_load.parts.size(), options.quiet, "parts");
@@ -171,22 +181,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     candidates = broad_phase_pairs(parts, checks);
   }
   RunOptions run_options = options;
-  if (rules) {
-    const auto r0 = Clock::now();
-    rules->apply(candidates);
-    pair_checks = rules->pair_checks(std::move(pair_checks));
-    if (options.on_pair)  // a streamed pair names its rules as the report does
-      run_options.on_pair = [&](const PairResult& r, const std::vector<Part>& p) {
-        PairResult named = r;
-        rules->note(named);
-        options.on_pair(named, p);
-      };
-    const double seconds = std::chrono::duration<double>(Clock::now() - r0).count();
-    const double resolved = out.rules->seconds;
-    out.rules = rules->coverage();
-    out.rules->hash = rules_hash(scene);
-    out.rules->seconds = resolved + seconds;
-  }
+  if (rules) scope_candidates(*rules, candidates, pair_checks, options, run_options);
   const std::vector<std::pair<int, int>>& pairs = candidates.pairs;
   out.all_pairs = candidates.all_pairs;
   out.culled = candidates.culled;
@@ -202,8 +197,10 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);
-  if (rules)
+  if (rules) {
     for (PairResult& r : out.pairs) rules->note(r);
+    out.rules = rules->coverage();
+  }
   warn_tolerance_covers_part(out.parts, options.tolerance, units, out.pairs);
   out.stages.refine = lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();
