@@ -1,5 +1,6 @@
 #include "batch/rule_scope.h"
 
+#include <algorithm>
 #include <chrono>
 #include <numeric>
 #include <unordered_map>
@@ -50,9 +51,9 @@ void RuleScope::apply(CandidatePairs& c) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<int, int>> kept;
   kept.reserve(c.pairs.size());
-  decisions_.reserve(c.pairs.size());
+  PairDecision d;  // one decision's storage for every pair
   for (const auto& [a, b] : c.pairs) {
-    PairDecision d = index_.decide(loaded_[a], loaded_[b]);
+    index_.decide(loaded_[a], loaded_[b], d);
     if (d.scope == PairDecision::Scope::kOutOfScope) {
       ++coverage_.out_of_scope;
       continue;
@@ -64,28 +65,56 @@ void RuleScope::apply(CandidatePairs& c) {
     }
     for (int t : d.tests) ++coverage_.test_pairs[t];
     if (d.expected >= 0) ++coverage_.expected_pairs[d.expected];
+    Kept k{d.tolerance,
+           d.clearance,
+           d.tolerance_test,
+           d.tolerance_pair,
+           d.clearance_rank,
+           d.expected,
+           std::uint32_t(tests_.size()),
+           0};
+    tests_.insert(tests_.end(), d.tests.begin(), d.tests.end());
+    k.tests_end = std::uint32_t(tests_.size());
     kept.emplace_back(a, b);
-    decisions_.emplace(key(a, b), std::move(d));
+    keys_.push_back(key(a, b));
+    kept_.push_back(k);
   }
   c.pairs = std::move(kept);
+  // Candidates come sorted by (a, b), so keys_ is; sorted again for any other caller.
+  if (!std::is_sorted(keys_.begin(), keys_.end())) {
+    std::vector<size_t> order(keys_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return keys_[x] < keys_[y]; });
+    std::vector<std::uint64_t> keys;
+    std::vector<Kept> decisions;
+    for (size_t o : order) keys.push_back(keys_[o]), decisions.push_back(kept_[o]);
+    keys_ = std::move(keys);
+    kept_ = std::move(decisions);
+  }
   coverage_.seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-const PairDecision* RuleScope::decision(int a, int b) const {
-  const auto it = decisions_.find(key(a, b));
-  return it == decisions_.end() ? nullptr : &it->second;
+const RuleScope::Kept* RuleScope::decision(int a, int b) const {
+  const std::uint64_t k = key(a, b);
+  const auto it = std::lower_bound(keys_.begin(), keys_.end(), k);
+  return it == keys_.end() || *it != k ? nullptr : &kept_[size_t(it - keys_.begin())];
 }
 
 std::function<PairChecks(int, int)> RuleScope::pair_checks(
     std::function<PairChecks(int, int)> base) const {
   return [this, base = std::move(base)](int a, int b) {
     PairChecks pc = base(a, b);
-    const PairDecision* d = decision(a, b);
+    const Kept* d = decision(a, b);
     if (!d) return pc;
     // Scene -> test -> pair: a rule's tolerance replaces the scene's (or its
     // auto band); the pair's own was already preferred by decide().
-    if (d->tolerance) pc.tolerance = PairTolerance{*d->tolerance, "rule", d->tolerance_rule};
+    if (d->tolerance) {
+      PairDecision named;
+      named.tolerance_test = d->tolerance_test;
+      named.tolerance_pair = d->tolerance_pair;
+      pc.tolerance = PairTolerance{*d->tolerance, "rule", index_.tolerance_rule(named)};
+    }
     // checks.clearance.pairs names a pair as rules.pairs does (pair rank):
     // between the two the larger minimum wins; over a test's, the pair's.
     if (d->clearance && pc.clearance) {
@@ -100,10 +129,11 @@ std::function<PairChecks(int, int)> RuleScope::pair_checks(
 }
 
 void RuleScope::note(PairResult& r) const {
-  const PairDecision* d = decision(r.a, r.b);
+  const Kept* d = decision(r.a, r.b);
   if (!d) return;
   r.tests.clear();
-  for (int t : d->tests) r.tests.push_back(rules_->tests[t].name);
+  for (auto t = d->tests_begin; t < d->tests_end; ++t)
+    r.tests.push_back(rules_->tests[tests_[t]].name);
   r.expected = d->expected >= 0 ? rules_->expected[d->expected].name : "";
 }
 

@@ -45,12 +45,20 @@ class RuleScope {
   const RuleIndex& index() const { return index_; }
 
  private:
-  const PairDecision* decision(int a, int b) const;
+  /// A kept pair's decision, compact: its tests are tests_[tests_begin, tests_end).
+  struct Kept {
+    std::optional<double> tolerance, clearance;
+    int tolerance_test = -1, tolerance_pair = -1, clearance_rank = 0, expected = -1;
+    std::uint32_t tests_begin = 0, tests_end = 0;
+  };
+  const Kept* decision(int a, int b) const;
   std::chrono::steady_clock::time_point start_;  ///< resolution timed from here
   std::shared_ptr<const Rules> rules_;
   RuleIndex index_;
   std::vector<int> loaded_;
-  std::unordered_map<std::uint64_t, PairDecision> decisions_;  ///< local (a << 32 | b), a < b
+  std::vector<std::uint64_t> keys_;  ///< kept pairs, local (a << 32 | b), a < b, sorted
+  std::vector<Kept> kept_;           ///< parallel to keys_
+  std::vector<int> tests_;
   RuleCoverage coverage_;
   std::unordered_set<std::uint64_t> own_clearance_;  ///< scene pairs of checks.clearance.pairs
 };

@@ -28,7 +28,9 @@ bool match(std::string_view p, std::string_view t, bool cross_slash) {
   return pi == p.size();
 }
 
-std::vector<std::string_view> segments(std::string_view s) {
+}  // namespace
+
+std::vector<std::string_view> group_segments(std::string_view s) {
   std::vector<std::string_view> out;
   size_t b = 0;
   for (size_t k = 0; k <= s.size(); ++k)
@@ -38,6 +40,8 @@ std::vector<std::string_view> segments(std::string_view s) {
     }
   return out;
 }
+
+namespace {
 
 // Pattern segments [p, ...) against path segments [g, ...); the path may go
 // on past the pattern's end (a prefix of segments matches).
@@ -60,7 +64,13 @@ bool glob_match(std::string_view pattern, std::string_view text) {
 
 bool group_glob_match(std::string_view pattern, std::string_view group) {
   if (group.empty()) return false;
-  return match_segments(segments(pattern), 0, segments(group), 0);
+  return match_segments(group_segments(pattern), 0, group_segments(group), 0);
+}
+
+bool group_segments_match(const std::vector<std::string_view>& pattern,
+                          const std::vector<std::string_view>& group) {
+  if (group.empty() || (group.size() == 1 && group[0].empty())) return false;
+  return match_segments(pattern, 0, group, 0);
 }
 
 bool has_wildcard(std::string_view pattern) {

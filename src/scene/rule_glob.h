@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 namespace pd {
 
@@ -15,6 +16,13 @@ bool glob_match(std::string_view pattern, std::string_view text);
 /// matches the path: selecting an assembly selects what is under it
 /// ("wing/rib-*" matches "wing/rib-7/bracket").
 bool group_glob_match(std::string_view pattern, std::string_view group);
+
+/// A group path or pattern split at '/', for group_segments_match: split once,
+/// matched against many.
+std::vector<std::string_view> group_segments(std::string_view path);
+/// group_glob_match on paths already split by group_segments (an empty group: no match).
+bool group_segments_match(const std::vector<std::string_view>& pattern,
+                          const std::vector<std::string_view>& group);
 
 /// Whether `pattern` holds a wildcard (`*` or `?`): else it names one string.
 bool has_wildcard(std::string_view pattern);

@@ -13,8 +13,10 @@ namespace {
 /// A set's patterns, split into exact names (hashed) and globs (matched).
 struct Matcher {
   std::unordered_set<std::string> exact_ids, tags;
-  std::vector<std::string> id_globs, groups;
-  explicit Matcher(const RuleSet& s) : tags(s.tags.begin(), s.tags.end()), groups(s.groups) {
+  std::vector<std::string> id_globs;
+  std::vector<std::vector<std::string_view>> groups;  ///< split once (into the set's own strings)
+  explicit Matcher(const RuleSet& s) : tags(s.tags.begin(), s.tags.end()) {
+    for (const std::string& g : s.groups) groups.push_back(group_segments(g));
     for (const std::string& p : s.ids) {
       if (has_wildcard(p))
         id_globs.push_back(p);
@@ -22,14 +24,14 @@ struct Matcher {
         exact_ids.insert(p);
     }
   }
-  bool operator()(const PartSpec& p) const {
+  bool operator()(const PartSpec& p, const std::vector<std::string_view>& group) const {
     if (exact_ids.count(p.id)) return true;
     for (const std::string& g : id_globs)
       if (glob_match(g, p.id)) return true;
     for (const std::string& t : p.tags)
       if (tags.count(t)) return true;
-    for (const std::string& g : groups)
-      if (group_glob_match(g, p.group)) return true;
+    for (const auto& g : groups)
+      if (group_segments_match(g, group)) return true;
     return false;
   }
 };
@@ -46,10 +48,12 @@ RuleIndex::RuleIndex(const Rules& rules, const std::vector<PartSpec>& parts) : r
   words_ = std::max<size_t>(1, (sets + 63) / 64);
   bits_.assign(n * words_, 0);
   set_parts_.assign(sets, 0);
+  std::vector<std::vector<std::string_view>> paths(n);  // each part's group, split once
+  for (size_t k = 0; k < n; ++k) paths[k] = group_segments(parts[k].group);
   for (size_t s = 0; s < sets; ++s) {
     const Matcher m(rules.sets[s]);
     for (size_t k = 0; k < n; ++k)
-      if (m(parts[k])) {
+      if (m(parts[k], paths[k])) {
         bits_[k * words_ + s / 64] |= std::uint64_t(1) << (s % 64);
         ++set_parts_[s];
       }
@@ -85,8 +89,19 @@ bool RuleIndex::covers(const SetPair& s, int i, int j) const {
 }
 
 PairDecision RuleIndex::decide(int i, int j) const {
-  const Rules& r = *rules_;
   PairDecision d;
+  decide(i, j, d);
+  return d;
+}
+
+void RuleIndex::decide(int i, int j, PairDecision& d) const {
+  const Rules& r = *rules_;
+  d.tests.clear();  // its capacity kept: one decision object serves every pair
+  d.scope = PairDecision::Scope::kChecked;
+  d.ignore = d.expected = d.tolerance_test = d.tolerance_pair = -1;
+  d.tolerance.reset();
+  d.clearance.reset();
+  d.clearance_rank = 0;
   for (size_t t = 0; t < r.tests.size(); ++t) {
     const RuleTest& test = r.tests[t];
     if (!covers(test.sets, i, j)) continue;
@@ -94,7 +109,7 @@ PairDecision RuleIndex::decide(int i, int j) const {
     // Equal rank: the stricter wins (the smaller tolerance, the larger clearance).
     if (test.tolerance && (!d.tolerance || *test.tolerance < *d.tolerance)) {
       d.tolerance = test.tolerance;
-      d.tolerance_rule = "tests[\"" + test.name + "\"]";
+      d.tolerance_test = int(t);
     }
     if (test.clearance && (!d.clearance || *test.clearance > *d.clearance)) {
       d.clearance = test.clearance;
@@ -103,7 +118,7 @@ PairDecision RuleIndex::decide(int i, int j) const {
   }
   if (!r.tests.empty() && d.tests.empty()) {
     d.scope = PairDecision::Scope::kOutOfScope;
-    return d;
+    return;
   }
   for (size_t g = 0; g < r.ignore.size(); ++g) {
     const IgnoreRule& rule = r.ignore[g];
@@ -117,7 +132,7 @@ PairDecision RuleIndex::decide(int i, int j) const {
     if (hit) {
       d.scope = PairDecision::Scope::kIgnored;
       d.ignore = int(g);
-      return d;
+      return;
     }
   }
   for (size_t e = 0; e < r.expected.size() && d.expected < 0; ++e)
@@ -128,7 +143,8 @@ PairDecision RuleIndex::decide(int i, int j) const {
       const PairRule& p = r.pairs[it->second];
       if (p.tolerance) {
         d.tolerance = p.tolerance;
-        d.tolerance_rule = "pairs[" + std::to_string(it->second) + "]";
+        d.tolerance_pair = it->second;
+        d.tolerance_test = -1;
       }
       if (p.clearance) {
         d.clearance = p.clearance;
@@ -136,7 +152,12 @@ PairDecision RuleIndex::decide(int i, int j) const {
       }
     }
   }
-  return d;
+}
+
+std::string RuleIndex::tolerance_rule(const PairDecision& d) const {
+  if (d.tolerance_pair >= 0) return "pairs[" + std::to_string(d.tolerance_pair) + "]";
+  if (d.tolerance_test >= 0) return "tests[\"" + rules_->tests[d.tolerance_test].name + "\"]";
+  return "";
 }
 
 std::vector<std::string> RuleIndex::sets_of(int part) const {

@@ -26,8 +26,9 @@ struct PairDecision {
   /// The tolerance and clearance of the most specific level (the pair's, else
   /// the tests': the smallest tolerance, the largest clearance); nullopt: the scene's.
   std::optional<double> tolerance, clearance;
-  std::string tolerance_rule;  ///< which rule gave `tolerance` ("tests[\"x\"]", "pairs[0]")
-  int clearance_rank = 0;      ///< where `clearance` came from: 1 a test, 2 the pair's rule
+  int tolerance_test = -1;  ///< the test that gave `tolerance`, or -1
+  int tolerance_pair = -1;  ///< the pair rule that gave it (the most specific), or -1
+  int clearance_rank = 0;   ///< where `clearance` came from: 1 a test, 2 the pair's rule
 };
 
 class RuleIndex {
@@ -39,6 +40,10 @@ class RuleIndex {
 
   /// The decision for scene parts i and j (i != j; symmetric).
   PairDecision decide(int i, int j) const;
+  /// The same into `out`, reusing its storage (the candidates' loop).
+  void decide(int i, int j, PairDecision& out) const;
+  /// Which rule gave a decision's tolerance: "tests[\"x\"]", "pairs[0]", or "".
+  std::string tolerance_rule(const PairDecision& d) const;
 
   bool in_set(int part, int set) const {
     return (bits_[size_t(part) * words_ + size_t(set) / 64] >> (set % 64)) & 1u;
