@@ -30,7 +30,7 @@ json run(const json& scene) {
   o.quiet = true;
   spec.solver.apply(o.solver);
   const RunResult r = run_scene(spec, o);
-  ReportContext ctx{"test.json", "mm", o.tolerance, o.solver, 0.0, std::nullopt};
+  ReportContext ctx{"test.json", "mm", o.tolerance, o.solver, 0.0, std::nullopt, ""};
   json j = json::parse(report_json(ctx, r).dump());
   j.erase("seconds");
   j.erase("stage_seconds");

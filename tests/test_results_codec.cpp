@@ -263,6 +263,8 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
                                             "tolerance",
                                             "tolerance_source",
                                             "tolerance_basis",
+                                            "tests",
+                                            "expected",
                                             "depth",
                                             "direction",
                                             "margin",

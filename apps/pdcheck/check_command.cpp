@@ -98,6 +98,9 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
   app.add_option("--shard-base", a.shard_base,
                  "--shard auto under Slurm: the array's first index (default "
                  "SLURM_ARRAY_TASK_MIN, else 0)");
+  app.add_option("--rules", a.rules,
+                 "a rules file (sets, tests, ignore, expected, pairs; docs/scene-format.md, "
+                 "\"Rules\"): the scene's \"rules\" key given apart");
   app.add_option("--reuse", a.reuse,
                  "an earlier JSON report: pairs whose parts and settings are unchanged keep "
                  "their results (marked reused) instead of being solved again (a report in another "
@@ -141,9 +144,13 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
     throw pd::UserError(std::string(e.what()) + "; the run stopped", e.exit_code());
   }
   const pd::Summary summary = pd::summarize(result);
-  const pd::ReportContext ctx{config.scene.path,       config.scene.units.value_or("mm"),
-                              *config.scene.tolerance, opt.solver,
-                              config.load_seconds,     config.scene.auto_tolerance};
+  const pd::ReportContext ctx{config.scene.path,
+                              config.scene.units.value_or("mm"),
+                              *config.scene.tolerance,
+                              opt.solver,
+                              config.load_seconds,
+                              config.scene.auto_tolerance,
+                              result.rules ? result.rules->hash : ""};
   const pd::Review review = pd::review_run(result, review_opt, summary.incomplete());
   const pd::ReportInput report{ctx, result, review, review_opt};
   // Streamed lines are out already; a file gets the same lines in report order.

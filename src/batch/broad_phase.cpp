@@ -46,6 +46,7 @@ double broad_phase_reach(const Checks& checks) {
   if (checks.clearance) {
     reach = checks.clearance->min;
     for (const auto& e : checks.clearance->pairs) reach = std::max(reach, e.min);
+    reach = std::max(reach, checks.clearance->rules_reach);
   }
   return reach;
 }

@@ -8,6 +8,7 @@
 #include "batch/content_hashes.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
+#include "batch/rule_scope.h"
 #include "batch/run_stages.h"
 #include "scene/setup_warnings.h"
 
@@ -78,6 +79,39 @@ void warn_tolerance_covers_part(const std::vector<Part>& parts, double tolerance
   }
 }
 
+// Each part's tags and group, and under rules the sets it belongs to.
+std::vector<PartLabels> part_labels(const SceneSpec& scene, const std::vector<int>& loaded,
+                                    size_t count, const RuleScope* rules) {
+  std::vector<PartLabels> out(count);
+  bool any = rules != nullptr;
+  for (size_t k = 0; k < count; ++k) {
+    const int at = loaded.empty() ? int(k) : loaded[k];
+    const PartSpec& p = scene.parts[at];
+    out[k].tags = p.tags;
+    out[k].group = p.group;
+    if (rules) out[k].sets = rules->index().sets_of(at);
+    any = any || !p.tags.empty() || !p.group.empty();
+  }
+  if (!any) out.clear();
+  return out;
+}
+
+// The rules on the candidates: out-of-scope and ignored pairs dropped, each
+// kept pair's tolerance and clearance its rules', a streamed pair named as the
+// report names it.
+void scope_candidates(RuleScope& rules, CandidatePairs& candidates,
+                      std::function<PairChecks(int, int)>& pair_checks, const RunOptions& options,
+                      RunOptions& run_options) {
+  rules.apply(candidates);
+  pair_checks = rules.pair_checks(std::move(pair_checks));
+  if (options.on_pair)
+    run_options.on_pair = [&rules, &options](const PairResult& r, const std::vector<Part>& p) {
+      PairResult named = r;
+      rules.note(named);
+      options.on_pair(named, p);
+    };
+}
+
 }  // namespace
 
 RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
@@ -109,6 +143,10 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     shard_scene = scene;  // every part is loaded: every list read again
     read_inline_vertices(shard_scene);
   }
+  // Rules resolved once, against every part of the scene (a shard's too), before
+  // any mesh is read: a set that selects nothing is bad input (exit 2).
+  std::optional<RuleScope> rules;
+  if (scene.rules) rules.emplace(scene, loaded);
   const SceneSpec& to_load = plan || !shard_scene.parts.empty() ? shard_scene : scene;
   {
     Progress progress(to_load.parts.size(), options.quiet, "parts");
@@ -119,6 +157,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   }
   for (size_t k = 0; k < out.parts.size(); ++k)
     out.part_hashes.push_back(hashes[plan ? loaded[k] : k]);
+  out.labels = part_labels(scene, loaded, out.parts.size(), rules ? &*rules : nullptr);
   const std::string units = scene.units.value_or("mm");
   warn_units_like_sizes(out.parts, plan ? &*plan : nullptr, loaded, units);
   out.stages.parts = lap(t);
@@ -127,7 +166,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   out.simulated = {"interference"};
   if (checks.clearance) out.simulated.push_back("clearance");
   if (checks.motion) out.simulated.push_back("motion");
-  const auto pair_checks =
+  auto pair_checks =
       pair_checks_of(parts, checks, scene.auto_tolerance, scene.units.value_or("mm"));
 
   CandidatePairs candidates;
@@ -141,6 +180,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   } else {
     candidates = broad_phase_pairs(parts, checks);
   }
+  RunOptions run_options = options;
+  if (rules) scope_candidates(*rules, candidates, pair_checks, options, run_options);
   const std::vector<std::pair<int, int>>& pairs = candidates.pairs;
   out.all_pairs = candidates.all_pairs;
   out.culled = candidates.culled;
@@ -150,12 +191,16 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   out.pairs.resize(pairs.size());
   // --reuse: an unchanged pair keeps its old result (nonconvex parts' pairs are
   // solved again: their refinement runs after the hull stage).
-  const std::vector<size_t> to_solve =
-      reuse_results(parts, pairs, out.part_hashes, out.settings_hash, options, out.pairs);
+  const std::vector<size_t> to_solve = reuse_results(
+      parts, pairs, out.part_hashes, out.settings_hash, run_options, out.pairs, pair_checks);
   out.reused = static_cast<long>(pairs.size() - to_solve.size());
-  solve_pairs(parts, pairs, to_solve, options, pair_checks, out.pairs);
+  solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
-  refine_nonconvex_pairs(out.parts, pairs, out.pairs, options, pair_checks);
+  refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);
+  if (rules) {
+    for (PairResult& r : out.pairs) rules->note(r);
+    out.rules = rules->coverage();
+  }
   warn_tolerance_covers_part(out.parts, options.tolerance, units, out.pairs);
   out.stages.refine = lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();

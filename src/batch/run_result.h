@@ -2,12 +2,14 @@
 // report layer reads this without the pipeline that made it (batch/run.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "results/pair_result.h"
 #include "scene/parts.h"
+#include "scene/rules.h"
 
 namespace pd {
 
@@ -38,6 +40,26 @@ struct ShardManifest {
   long vertices_loaded = 0, vertices_total = 0;
 };
 
+/// What the rules (scene/rules.h) did in a run: each rule's coverage, the
+/// pairs they kept out of the check (docs/report-format.md, "rules").
+struct RuleCoverage {
+  std::shared_ptr<const Rules> rules;
+  std::string hash;                  ///< hashes.rules: the rules and every part's labels
+  std::vector<long> set_parts;       ///< per set: the scene's parts it selects
+  std::vector<long> test_pairs;      ///< per test: checked pairs it covers
+  std::vector<long> ignore_pairs;    ///< per ignore rule: pairs it took out of the check
+  std::vector<long> expected_pairs;  ///< per expected rule: checked pairs it covers
+  long out_of_scope = 0;             ///< broad-phase candidates no test covers
+  long ignored = 0;                  ///< candidates an ignore rule took out
+  double seconds = 0.0;              ///< resolving the rules and deciding the candidates
+};
+
+/// A part's labels (scene/scene.h) and the rule sets it belongs to.
+struct PartLabels {
+  std::vector<std::string> tags, sets;
+  std::string group;
+};
+
 struct RunResult {
   std::vector<Part> parts;
   std::vector<PairResult> pairs;  ///< in (a, b) order: deterministic whatever the jobs
@@ -51,6 +73,8 @@ struct RunResult {
   std::string scene_hash, settings_hash;
   long reused = 0;                     ///< pairs taken from --reuse
   std::optional<ShardManifest> shard;  ///< set by a --shard run
+  std::optional<RuleCoverage> rules;   ///< when the run has rules
+  std::vector<PartLabels> labels;      ///< per part, when any part has labels or rules
 };
 
 }  // namespace pd

@@ -116,7 +116,8 @@ std::vector<size_t> reuse_results(const std::vector<Part>& parts,
                                   const std::vector<std::pair<int, int>>& pairs,
                                   const std::vector<std::string>& part_hashes,
                                   const std::string& settings_hash, const RunOptions& options,
-                                  std::vector<PairResult>& results) {
+                                  std::vector<PairResult>& results,
+                                  const std::function<PairChecks(int, int)>& checks) {
   std::vector<size_t> to_solve;
   for (size_t k = 0; k < pairs.size(); ++k) {
     const auto [a, b] = pairs[k];
@@ -124,6 +125,12 @@ std::vector<size_t> reuse_results(const std::vector<Part>& parts,
     if (options.reuse && !parts[a].refinable() && !parts[b].refinable())
       prior = prior_result(*options.reuse, settings_hash, a, parts[a].id, part_hashes[a], b,
                            parts[b].id, part_hashes[b]);
+    if (prior && checks) {  // decided against another tolerance or clearance: solve again
+      const PairChecks pc = checks(a, b);
+      const std::optional<double> tolerance =
+          pc.tolerance ? std::optional<double>(pc.tolerance->value) : std::nullopt;
+      if (prior->tolerance != tolerance || prior->clearance_min != pc.clearance) prior.reset();
+    }
     if (!prior) {
       to_solve.push_back(k);
       continue;

@@ -49,14 +49,17 @@ std::function<PairChecks(int, int)> pair_checks_of(
     const std::string& units = "mm");
 
 /// --reuse (options.reuse): each pair whose old result stands (batch/reuse.h;
-/// never a pair of a nonconvex part, which the refinement takes on) gets it in
+/// never a pair of a nonconvex part, which the refinement takes on; never one
+/// whose tolerance or clearance, e.g. from rules, is not the one it was decided
+/// against, as `checks` gives them now) gets it in
 /// `results` (one per pair), reported to options.on_pair. Returns the indices
 /// of the other pairs, in order: those still to solve.
 std::vector<size_t> reuse_results(const std::vector<Part>& parts,
                                   const std::vector<std::pair<int, int>>& pairs,
                                   const std::vector<std::string>& part_hashes,
                                   const std::string& settings_hash, const RunOptions& options,
-                                  std::vector<PairResult>& results);
+                                  std::vector<PairResult>& results,
+                                  const std::function<PairChecks(int, int)>& checks = {});
 
 /// Solves the pairs `to_solve` (indices into `pairs`) in worker processes into
 /// `results`, largest first (by the work of one support evaluation: no worker

@@ -58,14 +58,21 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
   }
   // Under tolerance auto, say what the band rests on: a false positive is
   // explained by the features whose tessellation can make that much overlap.
-  if (r.tolerance && (r.status == Status::kFalsePositive || r.status == Status::kInterference ||
-                      r.status == Status::kUndecided))
+  if (r.tolerance && r.tolerance_source == "rule") {
+    t += "; tolerance from rule " + r.tolerance_basis;
+  } else if (r.tolerance && (r.status == Status::kFalsePositive ||
+                             r.status == Status::kInterference || r.status == Status::kUndecided))
     t += (r.status == Status::kFalsePositive ? "; a tessellation artefact within the band of "
                                              : "; band from ") +
          r.tolerance_source + " sag (" + r.tolerance_basis + ")";
   if (review.baseline_state)
     t += "; baseline: " + std::string(baseline_state_name(*review.baseline_state));
-  if (review.suppressed) t += "; suppressed: " + review.suppressed->reason;
+  if (review.suppressed)
+    t += "; suppressed" +
+         (review.suppressed->rule.empty() ? "" : " by rule " + review.suppressed->rule) + ": " +
+         review.suppressed->reason;
+  else if (review.expected_exceeded)
+    t += "; deeper than its expected-contact rule " + r.expected + " allows";
   return t;
 }
 

@@ -9,6 +9,7 @@
 #include "report/report_json.h"
 #include "report/review.h"
 #include "report/review_json.h"
+#include "report/rules_report.h"
 #include "results/codec.h"
 #include "results/fingerprint.h"
 
@@ -61,6 +62,9 @@ void check_same_run(const std::vector<ShardReport>& shards) {
          [](const json& d) { return d.at("hashes").at("scene"); });
     same(shards, "the settings hash ($.hashes.settings)",
          [](const json& d) { return d.at("hashes").at("settings"); });
+    same(shards, "the rules hash ($.hashes.rules)", [](const json& d) {
+      return d.at("hashes").contains("rules") ? d["hashes"]["rules"] : json();
+    });
     same(shards, "the shard count ($.shard.total)",
          [](const json& d) { return d.at("shard").at("total"); });
     same(shards, "$.units", [](const json& d) { return d.at("units"); });
@@ -197,16 +201,38 @@ RunResult merged_run(const json& first, const std::vector<json>& parts,
 // The summary as one run counts it: from the scene's totals, the pairs of
 // unusable parts are unchecked and the rest culled or checked (a pair list has
 // no broad phase).
-Summary merged_summary(const json& first, const RunResult& run, long n) {
+Summary merged_summary(const json& first, const RunResult& run, long n,
+                       const std::optional<json>& rules) {
   Summary s = summarize(run);
   s.all_pairs = first["shard"]["pairs_total"].get<long>();
+  if (rules) {  // the shards' candidates the rules kept out, summed
+    s.rules_given = true;
+    s.out_of_scope = rules->at("out_of_scope").get<long>();
+    s.ignored = rules->at("ignored").get<long>();
+  }
   if (!first["shard"].value("listed", false)) {
     const long usable = n - s.part_errors;
     const long usable_pairs = pair_count(usable);
     s.unchecked = s.all_pairs - usable_pairs;
-    s.culled = usable_pairs - s.candidates;
+    s.culled = usable_pairs - s.candidates - s.out_of_scope - s.ignored;
   }
   return s;
+}
+
+// The shards' rules sections as one run's (report/rules_report.h), when they have rules.
+std::optional<json> merged_rules(const std::vector<ShardReport>& shards) {
+  if (!shards[0].doc.contains("rules")) return std::nullopt;
+  std::vector<const json*> sections;
+  for (const ShardReport& s : shards) {
+    if (!s.doc.contains("rules"))
+      throw MergeError(s.path + ": $.rules: missing, but " + shards[0].path + " has rules");
+    sections.push_back(&s.doc["rules"]);
+  }
+  try {
+    return merge_rules_sections(sections);
+  } catch (const nlohmann::json::exception& e) {
+    throw MergeError(std::string("$.rules: not a rules section of this version: ") + e.what());
+  }
 }
 
 // The shards' times summed into the merged report's `seconds` and
@@ -240,9 +266,15 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   Merged out;
   out.run = merged_run(first, parts, entries);
   RunResult& run = out.run;
-  const Summary s = merged_summary(first, run, n);
+  const std::optional<json> rules = merged_rules(shards);
+  const Summary s = merged_summary(first, run, n, rules);
   const bool listed = first["shard"].value("listed", false);
   out.review_options = review;
+  if (rules) {  // the expected-contact rules, as the shards' reports give them
+    out.expected =
+        std::make_shared<ExpectedRules>(expected_rules_of_report(*rules, shards[0].path));
+    out.review_options.expected = out.expected.get();
+  }
   out.review_options.tolerance = first.at("tolerance").get<double>();
   out.review_options.units = first.at("units").get<std::string>();
   if (listed) {
@@ -256,6 +288,7 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
 
   out.doc = first;
   out.doc.erase("shard");
+  if (rules) out.doc["rules"] = *rules;
   out.doc["summary"] = summary_json(s);
   const double seconds = add_shard_times(shards, out.doc);
   run.seconds = seconds;

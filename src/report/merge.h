@@ -2,6 +2,7 @@
 // (docs/scale-out.md). Refuses anything that would make it another report.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -39,6 +40,8 @@ struct Merged {
   RunResult run;  ///< parts (id, source, vertices, warnings, error; no geometry) and pairs
   ReviewOptions review_options;  ///< the caller's, with the report's tolerance and pair list
   Review review;                 ///< its exit_code is the merge's: as one run's
+  /// The reports' expected-contact rules, which review_options points to.
+  std::shared_ptr<const ExpectedRules> expected;
 };
 
 /// Shards 1..N of one scene, settings and tool version, each exactly once, in any

@@ -25,6 +25,15 @@ std::vector<std::string> check_prior_settings(const std::string& option, const s
                          ", this run uses " + now.dump() +
                          ": a depth may differ by the method alone");
   }
+  if (prior.rules_hash && *prior.rules_hash != run.rules_hash)
+    warnings.push_back(
+        who + ": written " +
+        (prior.rules_hash->empty() ? std::string("without rules")
+                                   : "under other rules (hashes.rules " + *prior.rules_hash + ")") +
+        ", this run " +
+        (run.rules_hash.empty() ? std::string("has none") : "has hashes.rules " + run.rules_hash) +
+        ": which pairs are checked, their tolerances and expected contacts may differ by the "
+        "rules alone (a pair decided against another tolerance is solved again)");
   return warnings;
 }
 

@@ -17,6 +17,8 @@ struct PriorSettings {
   std::optional<std::string> units;      ///< the report's `units`
   std::optional<double> tolerance;       ///< its `tolerance`, in its units
   std::optional<nlohmann::json> method;  ///< its `method` object
+  /// Its `hashes.rules` ("" when it has hashes but no rules; nullopt: no hashes).
+  std::optional<std::string> rules_hash;
 };
 
 /// The fields of a report document (absent ones stay unset: nothing to compare).
@@ -30,13 +32,19 @@ PriorSettings prior_settings_of(const Json& report) {
     s.tolerance = report["tolerance"].template get<double>();
   if (report.contains("method") && report["method"].is_object())
     s.method = nlohmann::json::parse(report["method"].dump());  // small: the settings only
+  if (report.contains("hashes") && report["hashes"].is_object()) {
+    const auto& h = report["hashes"];
+    s.rules_hash = h.contains("rules") && h["rules"].is_string()
+                       ? h["rules"].template get<std::string>()
+                       : std::string();
+  }
   return s;
 }
 
 /// Compares the report `path`, given as `option` ("--baseline"), with the run's
 /// context. A report in another unit throws ReportInputError naming both units:
 /// its depths, and the run's, are numbers in different units. A different
-/// tolerance or method is returned as warnings: the comparison stands, but a
+/// tolerance, method or rules (hashes.rules) is returned as warnings: the comparison stands, but a
 /// finding's state may come from the settings rather than from the geometry.
 std::vector<std::string> check_prior_settings(const std::string& option, const std::string& path,
                                               const PriorSettings& prior, const ReportContext& run);

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <type_traits>
 
+#include "report/rules_report.h"
 #include "results/codec.h"
 
 namespace pd {
@@ -19,6 +20,11 @@ Summary summarize(const RunResult& r) {
   s.candidates = static_cast<long>(r.pairs.size());
   for (const auto& what : r.simulated) s.clearance_checked |= what == "clearance";
   for (const PairResult& p : r.pairs) s.add(p.status);
+  if (r.rules) {
+    s.rules_given = true;
+    s.out_of_scope = r.rules->out_of_scope;
+    s.ignored = r.rules->ignored;
+  }
   return s;
 }
 
@@ -55,6 +61,18 @@ json summary_json(const Summary& s) {
             {"clearance_violation", s.clearance_violation},
             {"exit_code", s.exit_code()}};
   if (!s.clearance_checked) j.erase("clearance_violation");
+  if (s.rules_given) {
+    // After the culled pairs: the candidates the rules kept out of the check.
+    json k;
+    for (auto& [key, v] : j.items()) {
+      k[key] = v;
+      if (key == "culled") {
+        k["out_of_scope"] = s.out_of_scope;
+        k["ignored"] = s.ignored;
+      }
+    }
+    j = std::move(k);
+  }
   return j;
 }
 
@@ -92,6 +110,12 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
       j["cached"] = p.decomposition->cached;
       if (!p.decomposition->complete) j["decomposition_note"] = p.decomposition->note;
     }
+    if (k < r.labels.size()) {
+      const PartLabels& l = r.labels[k];
+      if (!l.tags.empty()) j["tags"] = l.tags;
+      if (!l.group.empty()) j["group"] = l.group;
+      if (r.rules) j["sets"] = l.sets;
+    }
     if (p.error) j["error"] = *p.error;
     parts.push_back(j);
   }
@@ -127,7 +151,12 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
   }
   if (!r.scene_hash.empty())
     doc["hashes"] = {{"scene", r.scene_hash}, {"settings", r.settings_hash}};
+  if (r.rules) {
+    if (doc.contains("hashes")) doc["hashes"]["rules"] = r.rules->hash;
+    doc["stage_seconds"]["rules"] = r.rules->seconds;
+  }
   if (r.shard) doc["shard"] = shard_json(*r.shard);
+  if (r.rules) doc["rules"] = rules_json(*r.rules);
   doc["parts"] = parts;
   doc["pairs"] = pairs;
   return doc;
@@ -137,9 +166,13 @@ std::string summary_line(const Summary& s, double seconds) {
   char buf[512];
   std::snprintf(
       buf, sizeof buf,
-      "pdcheck: %ld parts, %ld candidate pairs (%ld culled%s): %ld interference, %s%ld "
+      "pdcheck: %ld parts, %ld candidate pairs (%ld culled%s%s): %ld interference, %s%ld "
       "false_positive, %ld separated, %s%ld error%s in %.2f s",
       s.parts, s.candidates, s.culled,
+      s.rules_given ? (", " + std::to_string(s.out_of_scope) + " out of scope, " +
+                       std::to_string(s.ignored) + " ignored")
+                          .c_str()
+                    : "",
       s.unchecked ? (", " + std::to_string(s.unchecked) + " unchecked").c_str() : "",
       s.interference,
       s.clearance_checked

@@ -17,6 +17,7 @@ struct ReportContext {
   SolverSettings solver;
   double load_seconds = 0.0;  ///< reading and parsing the scene (before run_scene)
   std::optional<AutoTolerance> auto_tolerance;  ///< tolerance auto (each pair its own)
+  std::string rules_hash;                       ///< hashes.rules of the run's rules; "" = no rules
 };
 
 /// The run's counts (results/summary.h).

@@ -30,6 +30,18 @@ PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
         pr.not_holding = h;
     }
   }
+  // An expected contact: an overlap up to the rule's max_depth (docs/scene-format.md).
+  if (!pr.suppressed && options.expected && !r.expected.empty() &&
+      r.status == Status::kInterference) {
+    const auto it = options.expected->by_name.find(r.expected);
+    if (it != options.expected->by_name.end()) {
+      const Suppression& s = options.expected->entries[it->second];
+      if (check_suppression(s, r.depth, options.today) == Hold::kHolds)
+        pr.suppressed = &s;
+      else
+        pr.expected_exceeded = true;
+    }
+  }
   bool fails = reaches_bar(bar, r.status) && !pr.suppressed;
   if (bar == FailOn::kNew)
     fails = fails && pr.baseline_state &&
@@ -64,6 +76,8 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
     PairReview pr = review_pair(r, run.parts, options, rv.fail_on);
     if (pr.baseline_state) ++rv.state_count[static_cast<int>(*pr.baseline_state)];
     rv.suppressed += pr.suppressed ? 1 : 0;
+    if (pr.suppressed && !pr.suppressed->rule.empty()) ++rv.expected_counts[r.expected].first;
+    if (pr.expected_exceeded) ++rv.expected_counts[r.expected].second;
     rv.failing += pr.fails ? 1 : 0;
     if (not_decided(r.status)) failed.insert(pr.fingerprint);
     if (pr.not_holding) {

@@ -2,6 +2,7 @@
 // --fail-on bar, and the exit code they imply. docs/ci.md.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -10,6 +11,7 @@
 #include "batch/run_result.h"
 #include "exit_code.h"
 #include "report/baseline.h"
+#include "report/expected_rules.h"
 #include "report/fail_on.h"
 #include "report/finding_groups.h"
 #include "report/suppressions.h"
@@ -20,6 +22,9 @@ struct ReviewOptions {
   std::optional<FailOn> fail_on;  ///< nullopt: default_fail_on
   const Baseline* baseline = nullptr;
   const Suppressions* suppressions = nullptr;
+  /// The run's expected-contact rules: a pair naming one (PairResult::expected)
+  /// is suppressed by it while its depth is at most the rule's max_depth.
+  const ExpectedRules* expected = nullptr;
   bool allow_stale = false;  ///< stale or expired suppressions do not fail the run
   std::string today;         ///< YYYY-MM-DD, for `expires`
   double tolerance = 0.0;    ///< scene units: the `updated` rule
@@ -37,8 +42,9 @@ struct PairReview {
   std::optional<BaselineState> baseline_state;  ///< findings, with --baseline
   const Suppression* suppressed = nullptr;      ///< the entry that holds for it
   std::optional<Hold> not_holding;              ///< a matching entry that expired or was exceeded
-  bool fails = false;                           ///< at or above the bar, not suppressed
-  std::string group;                            ///< its finding group's id (finding_groups.h)
+  bool expected_exceeded = false;  ///< its expected-contact rule's max_depth is exceeded
+  bool fails = false;              ///< at or above the bar, not suppressed
+  std::string group;               ///< its finding group's id (finding_groups.h)
 };
 
 /// A suppressions entry that needs attention.
@@ -58,6 +64,9 @@ struct Review {
   long state_count[5] = {0, 0, 0, 0, 0};  ///< by BaselineState, gone ones included
   long suppressed = 0, failing = 0;
   FindingGroups groups;  ///< findings that share a fix (finding_groups.h)
+  /// Per expected-contact rule (by name): findings it suppressed, and those deeper than its
+  /// max_depth.
+  std::map<std::string, std::pair<long, long>> expected_counts;
   /// Every part failed (unless allow_empty): bad input; else incomplete wins,
   /// else a finding that fails or a stale suppression (run_exit_code).
   ExitCode exit_code = kExitClean;

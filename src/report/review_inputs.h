@@ -30,6 +30,7 @@ struct ReviewArgsError : UserError {
 struct ReviewInputs {
   std::optional<Baseline> baseline;
   std::optional<Suppressions> suppressions;
+  std::optional<ExpectedRules> expected;  ///< the run's expected-contact rules
   ReviewOptions options;
 
   ReviewInputs() = default;

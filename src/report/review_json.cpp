@@ -8,6 +8,7 @@ namespace {
 
 json suppression_json(const Suppression& s) {
   json j = {{"reason", s.reason}};
+  if (!s.rule.empty()) j["rule"] = s.rule;
   if (!s.owner.empty()) j["owner"] = s.owner;
   if (!s.expires.empty()) j["expires"] = s.expires;
   if (s.max_depth) j["max_depth"] = *s.max_depth;
@@ -29,7 +30,7 @@ void add_pair_review(json& pair, const PairReview& review) {
 void add_run_review(json& doc, json& summary, const Review& review, const ReviewOptions& options) {
   summary["fail_on"] = fail_on_name(review.fail_on);
   summary["failing"] = review.failing;
-  if (review.suppressions_used) summary["suppressed"] = review.suppressed;
+  if (review.suppressions_used || options.expected) summary["suppressed"] = review.suppressed;
   if (review.baseline_used) {
     json states;
     for (BaselineState s : kBaselineStates)
@@ -49,6 +50,13 @@ void add_run_review(json& doc, json& summary, const Review& review, const Review
                       {"reason", g.reason}});
     doc["baseline"] = {{"file", options.baseline->path}, {"gone", gone}};
   }
+  if (options.expected && doc.contains("rules") && doc["rules"].contains("expected"))
+    for (json& e : doc["rules"]["expected"]) {  // the review's share of the rules' coverage
+      const auto it = review.expected_counts.find(e["name"].get<std::string>());
+      const bool found = it != review.expected_counts.end();
+      e["suppressed"] = found ? it->second.first : 0;
+      e["exceeded"] = found ? it->second.second : 0;
+    }
   if (review.suppressions_used) {
     json issues = json::array();
     for (const SuppressionIssue& i : review.suppression_issues)

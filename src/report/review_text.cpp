@@ -27,6 +27,10 @@ std::string review_lines(const ReportInput& in) {
   if (rv.suppressions_used)
     out += "pdcheck: suppressions " + in.review_options.suppressions->path + ": " +
            std::to_string(rv.suppressed) + " finding(s) suppressed (not failing the run)\n";
+  for (const auto& [rule, counts] : rv.expected_counts)
+    out += "pdcheck: expected-contact rule " + rule + ": " + std::to_string(counts.first) +
+           " finding(s) suppressed (not failing the run), " + std::to_string(counts.second) +
+           " deeper than its max_depth\n";
   if (rv.baseline_used) {
     out += "pdcheck: baseline " + in.review_options.baseline->path + ":";
     for (BaselineState s : kBaselineStates)

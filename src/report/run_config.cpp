@@ -6,11 +6,13 @@
 #include <istream>
 #include <iterator>
 
+#include "batch/rule_scope.h"
 #include "cache_file.h"
 #include "report/prior_report.h"
 #include "report/prior_settings.h"
 #include "report/report_json.h"
 #include "results/fingerprint.h"
+#include "scene/rule_index.h"
 #include "scene/units.h"
 
 namespace pd {
@@ -76,6 +78,13 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
     scene.tolerance = tolerance;
     scene.auto_tolerance.reset();
   }
+  if (!a.rules.empty()) {
+    if (scene.rules)
+      throw SceneError("--rules " + a.rules + ": the scene " + scene.path +
+                       " has its own \"rules\": give the rules in one place");
+    attach_rules(scene, load_rules_file(a.rules, scene.units.value_or("mm")));
+  }
+  if (scene.rules) RuleIndex check(*scene.rules, scene.parts);  // an empty set: exit 2 now
   if (!scene.tolerance)
     throw SceneError(scene.path + ": no tolerance: give \"tolerance\" in the scene or --tolerance");
   if (const auto empty = empty_scene_problem(scene); empty && !a.allow_empty)
@@ -111,9 +120,13 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
   out.scene = load_scene(a, out.shard.has_value(), in, solver);
   // The CI inputs are read before the run: a malformed file costs no solve. A
   // prior report in another unit is refused; other settings that differ are said.
-  const ReportContext run_settings{
-      out.scene.path,          out.scene.units.value_or("mm"), *out.scene.tolerance, solver, 0.0,
-      out.scene.auto_tolerance};
+  const ReportContext run_settings{out.scene.path,
+                                   out.scene.units.value_or("mm"),
+                                   *out.scene.tolerance,
+                                   solver,
+                                   0.0,
+                                   out.scene.auto_tolerance,
+                                   out.scene.rules ? rules_hash(out.scene) : ""};
   if (!a.reuse.empty()) {
     PriorSettings s;
     out.prior = load_prior_report(a.reuse, &s);
@@ -125,6 +138,10 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
                                               out.review.baseline->settings, run_settings))
       out.prior_warnings.push_back(w);
   out.review.options.units = run_settings.units;
+  if (out.scene.rules) {
+    out.review.expected = expected_rules_of(*out.scene.rules);
+    out.review.options.expected = &*out.review.expected;
+  }
   // A shard's parts are some of the scene's: its merge judges an empty run.
   out.review.options.allow_empty = a.allow_empty || out.shard.has_value();
   if (out.scene.pairs) {

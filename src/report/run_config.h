@@ -31,7 +31,8 @@ struct CheckArgs {
   std::optional<std::string> shard;  ///< K/N or auto
   std::optional<int> shard_total, shard_base;
   std::string reuse;
-  int jobs = 1;  ///< resolved: every core when not given
+  std::string rules;  ///< --rules FILE ("" = the scene's own, if any)
+  int jobs = 1;       ///< resolved: every core when not given
   double pair_timeout = 0.0, load_timeout = kDefaultLoadTimeout, load_memory = kAutoLoadMemory;
   bool quiet = false;
   std::string cache_dir;  ///< "" = the default cache directory

@@ -19,6 +19,9 @@ struct Suppression {
   std::optional<double> max_depth;  ///< holds while depth <= max_depth
   std::string comment;              ///< free text (--write-suppressions fills it in)
   std::string where;                ///< "$.suppressions[2]", for messages
+  /// Set for an expected-contact rule (report/expected_rules.h): its name.
+  /// Such an entry holds for every pair the rule covers, not one fingerprint.
+  std::string rule;
 };
 
 struct Suppressions {

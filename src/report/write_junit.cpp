@@ -54,8 +54,12 @@ std::string render_junit(const ReportInput& in) {
     } else if (pr.suppressed) {
       ++skipped;
       cases += ">\n      <skipped>" +
-               markup_escape("suppressed (" + in.review_options.suppressions->path + " " +
-                             pr.suppressed->where + "): " + text) +
+               markup_escape(
+                   "suppressed (" +
+                   suppression_origin(*pr.suppressed, in.review_options.suppressions
+                                                          ? in.review_options.suppressions->path
+                                                          : "") +
+                   "): " + text) +
                "</skipped>\n    </testcase>\n";
     } else if (pr.fails) {
       ++failures;

@@ -94,6 +94,19 @@ json rule_json(const Rule& r, FailOn bar) {
           {"defaultConfiguration", {{"level", fails ? "error" : r.level}}}};
 }
 
+// A suppressed finding's SARIF suppression: a --suppressions entry, or an
+// expected-contact rule of the scene's rules.
+json suppression_json(const Suppression& s, const ReportInput& in) {
+  json props = {
+      {"file", s.rule.empty() ? in.review_options.suppressions->path : in.context.scene_path},
+      {"entry", s.where}};
+  if (!s.rule.empty()) props["rule"] = s.rule;
+  if (!s.owner.empty()) props["owner"] = s.owner;
+  if (!s.expires.empty()) props["expires"] = s.expires;
+  if (s.max_depth) props["max_depth"] = *s.max_depth;
+  return json::array({{{"kind", "external"}, {"justification", s.reason}, {"properties", props}}});
+}
+
 }  // namespace
 
 std::string render_sarif(const ReportInput& in) {
@@ -120,16 +133,7 @@ std::string render_sarif(const ReportInput& in) {
         {"locations", locations({part_file(a, scene), part_file(b, scene)})},
         {"partialFingerprints", {{"pdcheckPair/v1", pr.fingerprint}}}};
     if (pr.baseline_state) res["baselineState"] = baseline_state_name(*pr.baseline_state);
-    if (pr.suppressed) {
-      json props = {{"file", in.review_options.suppressions->path},
-                    {"entry", pr.suppressed->where}};
-      if (!pr.suppressed->owner.empty()) props["owner"] = pr.suppressed->owner;
-      if (!pr.suppressed->expires.empty()) props["expires"] = pr.suppressed->expires;
-      if (pr.suppressed->max_depth) props["max_depth"] = *pr.suppressed->max_depth;
-      res["suppressions"] = json::array({{{"kind", "external"},
-                                          {"justification", pr.suppressed->reason},
-                                          {"properties", props}}});
-    }
+    if (pr.suppressed) res["suppressions"] = suppression_json(*pr.suppressed, in);
     json props = {{"a", a.id}, {"b", b.id}, {"status", status_name(r.status)}};
     if (r.status != Status::kError) {
       props["depth"] = r.depth;

@@ -48,6 +48,9 @@ auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"tolerance"}, r.tolerance);
   visit(Field{"tolerance_source"}.unless_empty(), r.tolerance_source);
   visit(Field{"tolerance_basis"}.unless_empty(), r.tolerance_basis);
+  // Rules (docs/scene-format.md): the tests covering the pair, its expected contact.
+  visit(Field{"tests"}.unless_empty(), r.tests);
+  visit(Field{"expected"}.unless_empty(), r.expected);
   // The report gives an error pair its error alone, a decided pair its answer.
   const bool decided = r.status != Status::kError;
   visit(Field{"error"}.when(!decided), r.error);

@@ -73,8 +73,11 @@ struct PairResult {
   bool reused = false;     ///< taken from an earlier report (--reuse), not solved
   // tolerance auto (docs/numerics.md): the pair's own band and what it rests on.
   std::optional<double> tolerance;
-  std::string tolerance_source;  ///< "measured" or "declared"
+  std::string tolerance_source;  ///< "measured", "declared" (tolerance auto) or "rule"
   std::string tolerance_basis;   ///< the features, one clause per part
+  // Rules (docs/scene-format.md, "Rules"): what covered the pair.
+  std::vector<std::string> tests;  ///< the tests that check it, in the rules' order
+  std::string expected;            ///< the expected-contact rule covering it, if any
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

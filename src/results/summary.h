@@ -14,6 +14,10 @@ struct Summary {
   long clearance_violation = 0;
   long undecided = 0;  ///< pairs whose depth bracket straddles the tolerance
   bool clearance_checked = false;
+  /// Rules (docs/scene-format.md): broad-phase candidates no test covers, and
+  /// those an ignore rule took out. Neither solved, neither culled nor clean.
+  long out_of_scope = 0, ignored = 0;
+  bool rules_given = false;
 
   /// Counts one pair of this status.
   void add(Status s);

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 #include "scene/scene.h"
 #include "scene/units.h"
@@ -40,8 +41,24 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
       p.id = part_list_id(line);
       p.mesh = line;
     } else {
-      p.id = line.substr(0, tab);
-      p.mesh = line.substr(tab + 1);
+      // id<TAB>path, optionally <TAB>group and <TAB>tags (comma-separated).
+      std::vector<std::string> fields;
+      for (size_t b = 0, e = 0; e != std::string::npos; b = e + 1) {
+        e = line.find('\t', b);
+        fields.push_back(line.substr(b, e == std::string::npos ? e : e - b));
+      }
+      if (fields.size() > 4)
+        throw SceneError(path + ": line " + std::to_string(n) +
+                         ": expected at most 4 fields: id, path, group, tags");
+      p.id = fields[0];
+      p.mesh = fields[1];
+      if (fields.size() > 2) p.group = fields[2];
+      if (fields.size() > 3)
+        for (size_t b = 0, e = 0; e != std::string::npos; b = e + 1) {
+          e = fields[3].find(',', b);
+          const std::string tag = fields[3].substr(b, e == std::string::npos ? e : e - b);
+          if (!tag.empty()) p.tags.push_back(tag);
+        }
     }
     p.where = path + ": line " + std::to_string(n) + " (\"" + p.id + "\")";
     if (p.id.empty() || p.mesh->empty())

@@ -13,6 +13,7 @@
 #include "geometry/aabb.h"
 #include "geometry/motion.h"
 #include "geometry/types.h"
+#include "scene/rules.h"
 #include "solve/settings.h"
 #include "user_error.h"
 
@@ -58,6 +59,10 @@ struct PartSpec {
   /// The concave sag its exporter was set to (scene units): replaces the
   /// measured one under `tolerance: auto`.
   std::optional<double> sag;
+  /// Rules (scene/rules.h) select parts by these: free labels, and a
+  /// `/`-separated product path ("wing/rib-7/bracket"; "" = none).
+  std::vector<std::string> tags;
+  std::string group;
 };
 
 /// `"tolerance": "auto"` (docs/numerics.md, "Tessellation sag"): each pair's
@@ -78,6 +83,7 @@ struct ClearanceCheck {
     double min;
   };
   std::vector<PerPair> pairs;  ///< overrides of `min` for named pairs
+  double rules_reach = 0.0;    ///< the largest clearance a rule asks (attach_rules)
 };
 struct MotionCheck {
   TimeGrid grid;
@@ -111,7 +117,8 @@ struct SceneSpec {
   std::optional<std::vector<std::pair<std::string, std::string>>> pairs;
   SolverOverrides solver;
   Checks checks;
-  bool part_list = false;  ///< read from a plain part list (parse_part_list), not a scene JSON
+  std::optional<Rules> rules;  ///< the scene's `rules`, or --rules FILE
+  bool part_list = false;      ///< read from a plain part list (parse_part_list), not a scene JSON
 };
 
 /// Why the scene gives nothing to check, when it has no part: a scene whose
@@ -179,6 +186,10 @@ SceneSpec parse_stdin_scene(const std::string& text,
 /// The command line's --pieces: every mesh part takes `p` (inline parts are the
 /// hull of their vertices whatever the mode).
 void override_pieces(SceneSpec& s, Pieces p);
+
+/// Gives the scene its rules: a rule's clearance needs checks.clearance (the
+/// check it refines), and widens the broad phase's reach. Throws SceneError.
+void attach_rules(SceneSpec& s, Rules rules);
 
 /// Checks that ids are unique and pairs name known parts (throws SceneError).
 void validate_scene(const SceneSpec& s);

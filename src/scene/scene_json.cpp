@@ -115,13 +115,34 @@ Points vertex_list(const Ctx& c, const json& j, const std::string& at) {
   return p;
 }
 
+/// A part's `tags` (non-empty strings) and `group` (a `/`-separated path of
+/// non-empty names), for rules (scene/rules.h).
+void part_labels(const Ctx& c, const json& j, const std::string& at, PartSpec& p) {
+  if (j.contains("tags")) {
+    const json& t = j["tags"];
+    if (!t.is_array()) c.fail(at + ".tags", "expected a list of strings");
+    for (size_t k = 0; k < t.size(); ++k) {
+      p.tags.push_back(string(c, t[k], at + ".tags[" + std::to_string(k) + "]"));
+      if (p.tags.back().empty()) c.fail(at + ".tags[" + std::to_string(k) + "]", "empty tag");
+    }
+  }
+  if (j.contains("group")) {
+    p.group = string(c, j["group"], at + ".group");
+    const std::string& g = p.group;
+    if (g.empty() || g.front() == '/' || g.back() == '/' || g.find("//") != std::string::npos)
+      c.fail(at + ".group", "expected a path of non-empty names joined by '/' (\"wing/rib-7\")");
+  }
+}
+
 /// `scanned`, when given, is the part's vertex list already read by
 /// scan_vertex_array (its "vertices" value in `j` is then a placeholder); when
 /// it holds nothing, the caller sets the vertices (or their VertexSummary).
 PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
               const std::string& scene_units, std::optional<Points>* scanned) {
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
-  only_keys(c, j, at, {"id", "mesh", "vertices", "units", "transform", "pieces", "motion", "sag"});
+  only_keys(
+      c, j, at,
+      {"id", "mesh", "vertices", "units", "transform", "pieces", "motion", "sag", "tags", "group"});
   PartSpec p;
   p.where = c.file + ": " + at;
   if (!j.contains("id")) c.fail(at, "missing \"id\"");
@@ -150,6 +171,7 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     if (!(v >= 0)) c.fail(at + ".sag", "must be >= 0");
     p.sag = v * p.to_scene_units;  // the part's units, as its vertices
   }
+  part_labels(c, j, at, p);
   if (j.contains("pieces")) {
     const std::string v = string(c, j["pieces"], at + ".pieces");
     const std::optional<Pieces> mode = parse_pieces(v);
@@ -360,8 +382,9 @@ void tolerance(const Ctx& c, const json& j, SceneSpec& s) {
 /// part's conversion needs (units, checks.motion) are read first.
 SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::string>& units) {
   if (!doc.is_object()) c.fail("", "a scene is a JSON object");
-  only_keys(c, doc, "",
-            {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks"});
+  only_keys(
+      c, doc, "",
+      {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks", "rules"});
   SceneSpec s;
   s.path = c.file;
   if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))
@@ -390,6 +413,8 @@ SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::s
   }
   if (doc.contains("solver")) s.solver = solver(c, doc["solver"]);
   if (doc.contains("checks")) s.checks = checks(c, doc["checks"]);
+  if (doc.contains("rules"))
+    attach_rules(s, parse_rules(doc["rules"], c.file, "rules", s.units.value_or("mm")));
   return s;
 }
 
@@ -602,6 +627,27 @@ SceneSpec load_scene_file(const std::string& path, const std::optional<std::stri
                        path + " other.stl | pdcheck - --tolerance 0.05)");
     throw;
   }
+}
+
+void attach_rules(SceneSpec& s, Rules rules) {
+  double reach = 0.0;
+  std::string first;
+  for (const RuleTest& t : rules.tests)
+    if (t.clearance) {
+      reach = std::max(reach, *t.clearance);
+      if (first.empty()) first = t.where;
+    }
+  for (const PairRule& p : rules.pairs)
+    if (p.clearance) {
+      reach = std::max(reach, *p.clearance);
+      if (first.empty()) first = p.where;
+    }
+  if (reach > 0 && !s.checks.clearance)
+    throw SceneError(first +
+                     ": clearance: a rule's clearance refines the scene's clearance check: add "
+                     "\"checks\": {\"clearance\": {\"min\": ...}} to the scene");
+  if (s.checks.clearance) s.checks.clearance->rules_reach = reach;
+  s.rules = std::move(rules);
 }
 
 void validate_scene(const SceneSpec& s) {
