@@ -74,6 +74,10 @@ inline constexpr double kCandidateFacetWork = 20000;
 /// kEpaBracket: the bracket is certified (the answer final) when upper − lower is
 /// at most this: the nearest face is a facet of P − Q to rounding, and the depth
 /// reported (upper) is within it of the exact one, far below kTouch.
+/// GJK (solve/gjk.h) tests "on the simplex" against kEpaRounding too: the origin
+/// within it of a face still counts as held by a tetrahedron, within it of a
+/// segment or triangle makes GJK complete the simplex off its span, and a point
+/// beyond the simplex by no more than it leaves a supporting plane (touching).
 inline constexpr double kEpaRounding = 1e-14;
 inline constexpr double kEpaBracket = 2 * kEpaRounding;
 /// Effort, not accuracy: GJK's support evaluations and EPA's expansions per

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "solve/cap_subdivision.h"
 #include "solve/certificate.h"
@@ -124,6 +125,22 @@ void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<B
   }
 }
 
+// The bracket alone settles the pair when it proves the depth reported:
+// - a separating direction (gap <= 0): depth 0;
+// - a direction whose gap is within rounding of 0 (GJK's supporting plane
+//   through the origin at a contact): the minimum is at or below it, so the
+//   depth is 0 by the rule both exact and mlsl follow (kGapRounding);
+// - a closed bracket above that rounding: the depth is its upper end, exact to
+//   kEpaBracket, contacts (depths up to kTouch) included.
+// A closed bracket straddling kGapRounding could be reported either way by the
+// exact reference, so MLSL decides it as before.
+std::optional<StopReason> bracket_decides(const DepthBracket& b) {
+  if (b.separated || b.upper <= 0) return StopReason::kProvenSeparated;
+  if (b.upper <= tol::kGapRounding) return StopReason::kContact;
+  if (b.certified() && b.lower > tol::kGapRounding) return StopReason::kEpaCertificate;
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& stats) {
@@ -225,12 +242,10 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   // GJK + EPA first (solve/epa.h): a closed bracket is the depth, proved, and
   // the solve ends there. An open one (EPA stopped on a face it could not close,
   // or GJK near a contact) hands its best direction to MLSL as the first sample.
-  // Contacts keep MLSL's handling (the settled rule above): the bracket is taken
-  // only when its lower end is above the contact resolution.
   const DepthBracket bracket = s.epa ? epa_bracket(pr, tol::kEpaMaxIterations) : DepthBracket{};
-  if (bracket.certified() && bracket.lower > tol::kTouch) {
+  if (const auto why = bracket_decides(bracket)) {
     best = {bracket.direction, bracket.upper};
-    return stop(StopReason::kEpaCertificate);
+    return stop(*why);
   }
   if (std::isfinite(bracket.upper)) {
     x.push_back(bracket.direction);
