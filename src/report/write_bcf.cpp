@@ -90,7 +90,9 @@ std::string extensions_xml() {
 
 std::string title(const ExportFinding& f, const std::string& units, size_t members) {
   std::string t = f.a + " / " + f.b + ": " + status_name(f.pair->status);
-  if (f.depth && f.pair->status != Status::kClearanceViolation)
+  // A decided depth only: an undecided pair's is a lower bound (its bracket is in the description).
+  if (f.depth &&
+      (f.pair->status == Status::kInterference || f.pair->status == Status::kFalsePositive))
     t += ", " + depth_meaning(f.pair->depth_source) + " " + short_number(*f.depth) + " " + units;
   if (members > 1) t += " (and " + std::to_string(members - 1) + " more)";
   return t;
