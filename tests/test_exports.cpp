@@ -336,6 +336,72 @@ TEST(Exports, CameraLooksAcrossTheDepthAtTheFinding) {
   EXPECT_GE(m.radius, 0.5 * (pd::Vec3(5, 5, 5) - pd::Vec3(30.5, 0.5, 0.5)).norm());
 }
 
+// In process: every status through the BCF writer, each file valid; the
+// topics are exactly the pairs that need a person.
+TEST(Exports, EveryStatusGivesAValidBcf) {
+  pd::RunResult run;
+  for (const std::string id : {"a <&>", "b", "c", "d", "e", "f", "g"}) {
+    pd::Part p;
+    p.id = id;
+    p.source = "inline";
+    const int k = static_cast<int>(run.parts.size());
+    p.box = {pd::Vec3(3.0 * k, 0, 0), pd::Vec3(3.0 * k + 4, 1, 1)};
+    run.parts.push_back(p);
+  }
+  const pd::Status statuses[] = {pd::Status::kSeparated,    pd::Status::kFalsePositive,
+                                 pd::Status::kInterference, pd::Status::kClearanceViolation,
+                                 pd::Status::kUndecided,    pd::Status::kError};
+  for (int k = 0; k < 6; ++k) {
+    pd::PairResult r;
+    r.a = k;
+    r.b = k + 1;
+    r.status = statuses[k];
+    r.depth = k == 3 ? 0.0 : 0.02 * k;
+    r.margin = 0.1 - r.depth;
+    r.direction = pd::Vec3(0, 0, k % 2 ? 1 : -1);
+    if (r.status == pd::Status::kClearanceViolation) {
+      r.clearance_min = 0.5;
+      r.distance = 0.2;
+    }
+    if (r.status == pd::Status::kUndecided) {
+      r.depth_bounds = std::array<double, 2>{0.05, 0.2};
+      r.reason = "work box exhausted";
+      r.depth_source = "thickness";
+      r.at = pd::Vec3(13.5, 0.5, 0.5);
+    }
+    if (r.status == pd::Status::kError) r.error = "worker timed out";
+    run.pairs.push_back(r);
+  }
+  pd::ReportContext ctx;
+  ctx.scene_path = "scene.json";
+  ctx.units = "in";
+  ctx.tolerance = 0.1;
+  pd::ReviewOptions opt;
+  opt.tolerance = 0.1;
+  const pd::Review review = pd::review_run(run, opt, true);
+  const std::string path = tmp("exports_statuses.bcf");
+  std::ofstream(path, std::ios::binary) << pd::render_bcf({ctx, run, review, opt});
+  const std::string dir = testing::TempDir() + "exports_statuses";
+  const std::vector<std::string> topics = check_bcf(path, dir);
+  std::vector<std::string> want;  // interference, clearance violation, undecided, error
+  for (int k = 2; k < 6; ++k) want.push_back(pd::bcf_guid("topic", review.pairs[k].fingerprint));
+  EXPECT_EQ(topics, want);
+  if (topics.size() != 4) return;
+  for (const auto& [k, type] : std::vector<std::pair<int, std::string>>{
+           {0, "Interference"}, {1, "Clearance violation"}, {2, "Undecided"}, {3, "Not checked"}})
+    EXPECT_NE(read_text(dir + "/" + topics[k] + "/markup.bcf").find("TopicType=\"" + type + "\""),
+              std::string::npos)
+        << type;
+  // The undecided pair has an `at`: its line starts there, in metres (inches * 0.0254).
+  const std::string v = read_text(dir + "/" + topics[2] + "/viewpoint.bcfv");
+  EXPECT_NE(v.find("<StartPoint>\n        <X>" + number_text(13.5 * (25.4 / 1000.0)) + "</X>"),
+            std::string::npos)
+      << v;
+  EXPECT_NE(read_text(dir + "/" + topics[0] + "/viewpoint.bcfv")
+                .find("<AuthoringToolId>c</AuthoringToolId>"),
+            std::string::npos);
+}
+
 // libzip dates entries through localtime(): the bytes must not depend on the zone.
 TEST(Exports, ZipBytesDoNotDependOnTheTimeZone) {
   const std::vector<pd::ZipEntry> entries = {{"bcf.version", "<Version VersionId=\"3.0\"/>"},
