@@ -196,6 +196,11 @@ inline constexpr size_t kHtmlPageTriangles = 300000;
 /// The most parts of the rest of the assembly a finding's view shows around
 /// its pair (as faint boxes, the nearest first).
 inline constexpr size_t kHtmlContextParts = 24;
+/// BCF viewpoints (--bcf, report/bcf_view.h): the perspective camera's vertical
+/// field of view (degrees; it just holds the finding's ball) and the aspect
+/// ratio it is written with (a 16:9 screen). Display only.
+inline constexpr double kBcfFieldOfView = 60.0;
+inline constexpr double kBcfAspectRatio = 16.0 / 9.0;
 
 /// Where a finding is (geometry/depth_witness.h): the points of a convex set
 /// within this fraction of the pair's size of its support plane along the

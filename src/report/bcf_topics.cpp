@@ -1,0 +1,32 @@
+#include "report/bcf_topics.h"
+
+#include "hash.h"
+
+namespace pd {
+
+bool needs_topic(const PairResult& r, const PairReview& review) {
+  return r.status == Status::kInterference || r.status == Status::kClearanceViolation ||
+         not_decided(r.status) || review.fails;
+}
+
+std::vector<BcfTopic> bcf_topics(const ReportInput& in) {
+  std::vector<BcfTopic> topics;
+  for (size_t k = 0; k < in.run.pairs.size(); ++k)
+    if (needs_topic(in.run.pairs[k], in.review.pairs[k]))
+      topics.push_back({in.review.pairs[k].fingerprint, {k}});
+  return topics;
+}
+
+std::string bcf_guid(const std::string& kind, const std::string& key) {
+  Hasher h;
+  h.add("pdcheck-bcf-v1").add(kind).add(key);
+  std::string x = h.hex();  // 32 lowercase hex digits
+  static const char* kHex = "0123456789abcdef";
+  const auto nibble = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
+  x[12] = '8';                            // version 8
+  x[16] = kHex[8 | (nibble(x[16]) & 3)];  // variant 10xx
+  return x.substr(0, 8) + "-" + x.substr(8, 4) + "-" + x.substr(12, 4) + "-" + x.substr(16, 4) +
+         "-" + x.substr(20, 12);
+}
+
+}  // namespace pd
