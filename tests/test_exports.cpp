@@ -383,17 +383,27 @@ TEST(Exports, EveryStatusGivesAValidBcf) {
   std::ofstream(path, std::ios::binary) << pd::render_bcf({ctx, run, review, opt});
   const std::string dir = testing::TempDir() + "exports_statuses";
   const std::vector<std::string> topics = check_bcf(path, dir);
-  std::vector<std::string> want;  // interference, clearance violation, undecided, error
-  for (int k = 2; k < 6; ++k) want.push_back(pd::bcf_guid("topic", review.pairs[k].fingerprint));
+  // The interference (c, d) and the clearance violation (d, e) both move d
+  // along −z: one finding group, one topic keyed by the group's id, its
+  // deepest member (the interference) first. Then the undecided and the error.
+  ASSERT_EQ(review.groups.groups.size(), 1u);
+  const pd::FindingGroup& group = review.groups.groups[0];
+  EXPECT_EQ(group.members, (std::vector<size_t>{2, 3}));
+  std::vector<std::string> want{pd::bcf_guid("topic", group.id)};
+  for (int k = 4; k < 6; ++k) want.push_back(pd::bcf_guid("topic", review.pairs[k].fingerprint));
   EXPECT_EQ(topics, want);
-  if (topics.size() != 4) return;
+  if (topics.size() != 3) return;
   for (const auto& [k, type] : std::vector<std::pair<int, std::string>>{
-           {0, "Interference"}, {1, "Clearance violation"}, {2, "Undecided"}, {3, "Not checked"}})
+           {0, "Interference"}, {1, "Undecided"}, {2, "Not checked"}})
     EXPECT_NE(read_text(dir + "/" + topics[k] + "/markup.bcf").find("TopicType=\"" + type + "\""),
               std::string::npos)
         << type;
+  const std::string grouped = read_text(dir + "/" + topics[0] + "/markup.bcf");
+  EXPECT_NE(grouped.find("(and 1 more)"), std::string::npos) << grouped;
+  EXPECT_NE(grouped.find("<Label>clearance_violation</Label>"), std::string::npos) << grouped;
+  EXPECT_NE(grouped.find("group " + group.id), std::string::npos) << grouped;
   // The undecided pair has an `at`: its line starts there, in metres (inches * 0.0254).
-  const std::string v = read_text(dir + "/" + topics[2] + "/viewpoint.bcfv");
+  const std::string v = read_text(dir + "/" + topics[1] + "/viewpoint.bcfv");
   EXPECT_NE(v.find("<StartPoint>\n        <X>" + number_text(13.5 * (25.4 / 1000.0)) + "</X>"),
             std::string::npos)
       << v;
@@ -468,12 +478,10 @@ TEST(Exports, CsvAndBcfMatchTheReport) {
     EXPECT_EQ(c[col["baseline_state"]], p.value("baseline_state", ""));
     EXPECT_EQ(c[col["suppression"]],
               p.contains("suppressed") ? p["suppressed"]["reason"].get<std::string>() : "");
-    if (p.contains("at")) {
-      EXPECT_EQ(c[col["at_x"]], number_text(p["at"][0]));
-      EXPECT_EQ(c[col["at_z"]], number_text(p["at"][2]));
-    } else {
-      EXPECT_EQ(c[col["at_x"]], "");
-    }
+    EXPECT_EQ(c[col["group"]], p.value("group", ""));
+    ASSERT_TRUE(p.contains("at")) << p.dump();  // every decided finding says where
+    EXPECT_EQ(c[col["at_x"]], number_text(p["at"][0]));
+    EXPECT_EQ(c[col["at_z"]], number_text(p["at"][2]));
     if (p["status"] != "false_positive") needs_topic.insert(p["fingerprint"]);
   }
   EXPECT_EQ(row, rows.size());
@@ -510,7 +518,7 @@ TEST(Exports, CsvAndBcfMatchTheReport) {
             4u);  // selected, coloured
   EXPECT_NE(v_lid.find("<AuthoringToolId>lid, top</AuthoringToolId>"), std::string::npos);
   EXPECT_NE(v_lid.find("<AuthoringToolId>frame</AuthoringToolId>"), std::string::npos);
-  EXPECT_EQ(v_lid.find("<Lines>"), std::string::npos);  // no `at`: no depth line
+  EXPECT_NE(v_lid.find("<Lines>"), std::string::npos);  // its `at`: the depth as a line
   const std::string v_bushing = read_text(dir + "/" + bushing + "/viewpoint.bcfv");
   EXPECT_NE(v_bushing.find("<AuthoringToolId>bushing &quot;A&quot;</AuthoringToolId>"),
             std::string::npos)

@@ -10,10 +10,24 @@ bool needs_topic(const PairResult& r, const PairReview& review) {
 }
 
 std::vector<BcfTopic> bcf_topics(const ReportInput& in) {
+  const FindingGroups& groups = in.review.groups;
   std::vector<BcfTopic> topics;
-  for (size_t k = 0; k < in.run.pairs.size(); ++k)
-    if (needs_topic(in.run.pairs[k], in.review.pairs[k]))
+  std::vector<char> done(groups.groups.size(), 0);
+  for (size_t k = 0; k < in.run.pairs.size(); ++k) {
+    if (!needs_topic(in.run.pairs[k], in.review.pairs[k])) continue;
+    const int g = k < groups.group_of.size() ? groups.group_of[k] : -1;
+    if (g < 0 || groups.groups[g].members.size() < 2) {
       topics.push_back({in.review.pairs[k].fingerprint, {k}});
+      continue;
+    }
+    if (done[g]) continue;  // the group's topic is where its first member is
+    done[g] = 1;
+    const FindingGroup& group = groups.groups[g];
+    BcfTopic t{group.id, {group.deepest}};
+    for (const size_t m : group.members)
+      if (m != group.deepest) t.pairs.push_back(m);
+    topics.push_back(std::move(t));
+  }
   return topics;
 }
 

@@ -11,7 +11,7 @@ namespace pd {
 
 /// One BCF topic: the findings it stands for and the key its GUIDs derive from.
 struct BcfTopic {
-  std::string key;            ///< stable across runs: today the finding's fingerprint
+  std::string key;            ///< stable across runs: the group id or the finding's fingerprint
   std::vector<size_t> pairs;  ///< indices into run.pairs; the first one is the topic's view
 };
 
@@ -22,9 +22,11 @@ struct BcfTopic {
 /// tessellation artefacts pdcheck exists to tell apart: no topic.
 bool needs_topic(const PairResult& r, const PairReview& review);
 
-/// The topics of a run, in report order: one per pair that needs_topic. The
-/// one place that decides the topics (finding groups will make it one per
-/// group: key = the group id, pairs = its members, the deepest first).
+/// The topics of a run, in report order (of each topic's first pair): one per
+/// finding group of two or more members (key = the group id, pairs = its
+/// members, the deepest first: one item per design problem), and one per
+/// other pair that needs_topic (key = its fingerprint, so a lone finding keeps
+/// its GUID from night to night). The one place that decides the topics.
 std::vector<BcfTopic> bcf_topics(const ReportInput& in);
 
 /// An RFC 9562 UUID, version 8 (custom, hash-based): the first 128 bits of the

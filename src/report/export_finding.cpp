@@ -6,10 +6,9 @@ namespace pd {
 
 namespace {
 
-/// The finding's group: none yet (issue 28 item 4 adds finding groups; wire
-/// the pair's group id here).
-std::string group_of(const ReportInput& /*in*/, size_t /*k*/) {
-  return "";
+/// The finding's group id, as the review found it (report/finding_groups.h).
+std::string group_of(const ReportInput& in, size_t k) {
+  return in.review.pairs[k].group;
 }
 
 /// Where the finding is: the pair's `at` when its depth method gives one.
