@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "geometry/union_find.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -55,19 +56,6 @@ Welded weld(const Mesh& m) {
   }
   return w;
 }
-
-struct UnionFind {
-  std::vector<long> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0L); }
-  long find(long x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(long a, long b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 // One manifold edge between triangle t[0] (slot k[0], its vertices u → v) and
 // t[1] (slot k[1], v → u), with its exterior angle.
