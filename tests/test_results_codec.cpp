@@ -24,6 +24,7 @@
 #include "report/report_json.h"
 #include "results/codec.h"
 #include "results/pair_fields.h"
+#include "results/part_fields.h"
 
 namespace {
 
@@ -297,4 +298,30 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
             (std::vector<std::string>{"a", "b", "fingerprint", "status", "depth", "direction",
                                       "margin", "depth_source", "method", "stats", "time_ms"}));
   EXPECT_TRUE(plain.contains("reason"));
+}
+
+// A part entry: every field described in results/part_fields.h is filled
+// unlike its default and read back as written (the merge and --reuse read
+// parts through part_from_report), in the report's key order.
+TEST(ResultsCodec, APartSurvivesTheReportAndItsReaders) {
+  const auto listed = [](const pd::PartResult& p) {
+    Fields out;
+    for_each_field(p, List{&out, true, ""});
+    return out;
+  };
+  pd::PartResult p;
+  for_each_field(p, Fill{});
+  std::map<std::string, std::string> none;
+  for (const auto& [key, value] : listed(pd::PartResult{})) none[key] = value;
+  for (const auto& [key, value] : listed(p)) EXPECT_NE(none[key], value) << key;
+  const nlohmann::ordered_json j = pd::part_to_report(p);
+  EXPECT_EQ(listed(pd::part_from_report(j)), listed(p));
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{
+                      "id", "source", "vertices", "hull_vertices", "pieces", "warnings",
+                      "resolution", "box", "content_hash", "convex", "sag", "decomposition_seconds",
+                      "cached", "decomposition_note", "tags", "group", "sets", "error"}));
+  EXPECT_EQ(j["box"].size(), 2u);
+  EXPECT_EQ(j["sag"].size(), 3u);
 }

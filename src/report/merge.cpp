@@ -179,17 +179,19 @@ RunResult merged_run(const json& first, const std::vector<json>& parts,
   RunResult run;
   run.simulated = first.at("simulated").get<std::vector<std::string>>();
   for (const json& j : parts) {
+    PartResult r;
+    try {
+      r = part_from_report(j);
+    } catch (const std::exception& ex) {
+      throw MergeError("part " + j.value("id", json("?")).dump() + ": " + ex.what());
+    }
     Part p;
-    p.id = j.at("id").get<std::string>();
-    p.source = j.value("source", "");
-    p.vertex_count = j.value("vertices", 0L);
-    if (j.contains("warnings")) p.warnings = j["warnings"].get<std::vector<std::string>>();
-    if (j.contains("error")) p.error = j["error"].get<std::string>();
-    if (j.contains("box"))  // what the exports read of its geometry (--bcf)
-      for (int d = 0; d < 3; ++d) {
-        p.box.lo[d] = j["box"].at("min").at(d).get<double>();
-        p.box.hi[d] = j["box"].at("max").at(d).get<double>();
-      }
+    p.id = r.id;
+    p.source = r.source;
+    p.vertex_count = r.vertices;
+    p.warnings = r.warnings;
+    p.error = r.error;
+    if (r.box_min && r.box_max) p.box = {*r.box_min, *r.box_max};  // what --bcf aims at
     run.parts.push_back(std::move(p));
   }
   for (const Entry& e : entries) {

@@ -88,40 +88,46 @@ json method_json(const SolverSettings& s) {
   return method;
 }
 
+// The report's view of part k (results/part_result.h).
+PartResult part_result(const RunResult& r, size_t k) {
+  const Part& p = r.parts[k];
+  PartResult out;
+  out.id = p.id;
+  out.source = p.source;
+  out.vertices = static_cast<long>(p.vertex_count);
+  out.hull_vertices = static_cast<long>(p.hull_vertex_count());
+  out.pieces =
+      static_cast<long>(p.decomposition ? p.decomposition->pieces.size() : p.pieces.size());
+  out.warnings = p.warnings;
+  out.resolution = p.resolution;
+  if (!p.error) {  // where the part is: exports aim at it (--bcf), also after a merge
+    out.box_min = p.box.lo;
+    out.box_max = p.box.hi;
+  }
+  if (k < r.part_hashes.size()) out.content_hash = r.part_hashes[k];
+  out.convex = p.convex;
+  if (p.sag) {
+    out.sag_concave = p.sag->measured.concave;
+    out.sag_convex = p.sag->measured.convex;
+    out.sag_declared = p.sag->declared;
+  }
+  if (p.decomposition) {
+    out.decomposition_seconds = p.decomposition->seconds;
+    out.cached = p.decomposition->cached;
+    if (!p.decomposition->complete) out.decomposition_note = p.decomposition->note;
+  }
+  if (k < r.labels.size()) {
+    out.tags = r.labels[k].tags;
+    out.group = r.labels[k].group;
+    if (r.rules) out.sets = r.labels[k].sets;
+  }
+  out.error = p.error;
+  return out;
+}
+
 json report_json(const ReportContext& ctx, const RunResult& r) {
   json parts = json::array();
-  for (size_t k = 0; k < r.parts.size(); ++k) {
-    const Part& p = r.parts[k];
-    json j = {{"id", p.id},
-              {"source", p.source},
-              {"vertices", p.vertex_count},
-              {"hull_vertices", p.hull_vertex_count()},
-              {"pieces", p.decomposition ? p.decomposition->pieces.size() : p.pieces.size()},
-              {"warnings", p.warnings}};
-    if (p.resolution) j["resolution"] = *p.resolution;
-    if (!p.error)  // where the part is: exports aim at it (--bcf), also after a merge
-      j["box"] = {{"min", {p.box.lo.x(), p.box.lo.y(), p.box.lo.z()}},
-                  {"max", {p.box.hi.x(), p.box.hi.y(), p.box.hi.z()}}};
-    if (k < r.part_hashes.size()) j["content_hash"] = r.part_hashes[k];
-    if (p.convex) j["convex"] = *p.convex;
-    if (p.sag) {
-      j["sag"] = {{"concave", p.sag->measured.concave}, {"convex", p.sag->measured.convex}};
-      if (p.sag->declared) j["sag"]["declared"] = *p.sag->declared;
-    }
-    if (p.decomposition) {
-      j["decomposition_seconds"] = p.decomposition->seconds;
-      j["cached"] = p.decomposition->cached;
-      if (!p.decomposition->complete) j["decomposition_note"] = p.decomposition->note;
-    }
-    if (k < r.labels.size()) {
-      const PartLabels& l = r.labels[k];
-      if (!l.tags.empty()) j["tags"] = l.tags;
-      if (!l.group.empty()) j["group"] = l.group;
-      if (r.rules) j["sets"] = l.sets;
-    }
-    if (p.error) j["error"] = *p.error;
-    parts.push_back(j);
-  }
+  for (size_t k = 0; k < r.parts.size(); ++k) parts.push_back(part_to_report(part_result(r, k)));
   json pairs = json::array();
   for (const PairResult& p : r.pairs) pairs.push_back(pair_json(p, r.parts));
   const json method = method_json(ctx.solver);

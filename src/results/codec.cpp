@@ -7,6 +7,7 @@
 
 #include "results/fingerprint.h"
 #include "results/pair_fields.h"
+#include "results/part_fields.h"
 
 namespace pd {
 
@@ -176,6 +177,18 @@ json pair_to_report(const PairResult& r, const std::string& id_a, const std::str
   json j = {{"a", id_a}, {"b", id_b}, {"fingerprint", pair_fingerprint(id_a, id_b)}};
   for_each_field(r, Writer{Encoding::kReport, j});
   return j;
+}
+
+json part_to_report(const PartResult& p) {
+  json j = json::object();
+  for_each_field(p, Writer{Encoding::kReport, j});
+  return j;
+}
+
+PartResult part_from_report(const json& j) {
+  PartResult p;
+  for_each_field(p, Reader{Encoding::kReport, j});
+  return p;
 }
 
 PairResult pair_from_report(const json& j, int a, int b) {

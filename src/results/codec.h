@@ -9,6 +9,7 @@
 
 #include "results/field.h"
 #include "results/pair_result.h"
+#include "results/part_result.h"
 
 namespace pd {
 
@@ -21,6 +22,12 @@ nlohmann::ordered_json pair_to_report(const PairResult& r, const std::string& id
 /// indices. Throws std::exception (nlohmann's or invalid_argument) on an entry
 /// it cannot read.
 PairResult pair_from_report(const nlohmann::ordered_json& j, int a, int b);
+
+/// The report's part entry (docs/report-format.md, `parts`).
+nlohmann::ordered_json part_to_report(const PartResult& p);
+/// A report's part entry read back, lossless for what part_to_report writes.
+/// Throws std::exception on an entry it cannot read.
+PartResult part_from_report(const nlohmann::ordered_json& j);
 
 /// The complete encoding: every field, doubles bit for bit (MessagePack keeps
 /// NaN, ±Inf and −0, which JSON text would not).
