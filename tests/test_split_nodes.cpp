@@ -290,6 +290,33 @@ TEST(SplitNodes, HashesAndCachesKeyTheNode) {
   EXPECT_FALSE(first[0].box.lo.isApprox(first[1].box.lo));
 }
 
+TEST(SplitNodes, NodeNamesCachedByFileContent) {
+  const std::string cache = dir() + "names-cache";
+  std::filesystem::remove_all(cache);
+  const std::string path = scene_file(
+      "names.json",
+      {{"units", "mm"}, {"tolerance", 0.01}, {"parts", {split_part("box", groups_obj())}}});
+  auto ids = [&](const pd::SplitLoad& load) {
+    pd::SceneSpec s = pd::load_scene_file(path);
+    pd::split_node_parts(s, load);
+    std::vector<std::string> out;
+    for (const pd::PartSpec& p : s.parts) out.push_back(p.id + (p.error ? " " + *p.error : ""));
+    return out;
+  };
+  pd::SplitLoad load;
+  load.cache_dir = cache;
+  const std::vector<std::string> first = ids(load);
+  EXPECT_EQ(first, (std::vector<std::string>{"box/housing", "box/lid", "box/cover"}));
+  // A second split reads no file: a read would crash the loader (one part error).
+  load.before_load = [](const std::string&) { abort(); };
+  EXPECT_EQ(ids(load), first);
+  // A changed file is another key: read again (and here, crashed).
+  std::ofstream(groups_obj(), std::ios::app) << "o more\nf 1 2 3\n";
+  const std::vector<std::string> changed = ids(load);
+  ASSERT_EQ(changed.size(), 1u);
+  EXPECT_EQ(changed[0].rfind("box cannot load mesh file", 0), 0u) << changed[0];
+}
+
 TEST(SplitNodes, UnreadableFileIsOnePartErrorAndClashesNameBoth) {
   const std::string garbage = dir() + "garbage.glb";
   std::ofstream(garbage) << "glTF not really";

@@ -2,7 +2,9 @@
 
 #include <map>
 
+#include "file_hash.h"
 #include "scene/node_names.h"
+#include "scene/node_names_cache.h"
 
 namespace pd {
 
@@ -65,15 +67,31 @@ bool under_unsplit_part(const SceneSpec& s, const std::string& id) {
 }
 
 void split_node_parts(SceneSpec& s, const SplitLoad& load) {
-  // Each distinct file read once, whatever the parts splitting it.
-  std::map<std::string, size_t> file_index;
+  // Each distinct file read once, whatever the parts splitting it, unless the
+  // cache holds its node paths (keyed by its content: a changed file misses).
+  std::map<std::string, LoadedMeshes> files;
   std::vector<MeshRequest> requests;
-  for (const PartSpec& p : s.parts)
-    if (p.split_nodes && p.mesh && file_index.emplace(*p.mesh, requests.size()).second)
-      requests.push_back({*p.mesh, true, true, true});
-  if (requests.empty()) return;
-  const std::vector<LoadedMeshes> read =
+  std::vector<std::string> hashes;  // per request, its file's content hash when cached
+  for (const PartSpec& p : s.parts) {
+    if (!p.split_nodes || !p.mesh || files.count(*p.mesh)) continue;
+    LoadedMeshes& f = files[*p.mesh];
+    const std::string hash = load.cache_dir.empty() ? "" : file_content_hash(*p.mesh);
+    if (!hash.empty())
+      if (auto hit = read_cached_node_names(load.cache_dir, node_names_key(hash))) {
+        f.nodes = std::move(*hit);
+        continue;
+      }
+    requests.push_back({*p.mesh, true, true, true});
+    hashes.push_back(hash);
+  }
+  if (files.empty()) return;
+  std::vector<LoadedMeshes> read =
       load_meshes_isolated(requests, load.threads, load.timeout, load.memory_mb, load.before_load);
+  for (size_t r = 0; r < read.size(); ++r) {
+    if (!read[r].error && !hashes[r].empty())
+      write_cached_node_names(load.cache_dir, node_names_key(hashes[r]), read[r].nodes);
+    files[requests[r].path] = std::move(read[r]);
+  }
 
   std::vector<PartSpec> parts;
   parts.reserve(s.parts.size());
@@ -82,7 +100,7 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
       parts.push_back(std::move(p));
       continue;
     }
-    const LoadedMeshes& file = read[file_index.at(*p.mesh)];
+    const LoadedMeshes& file = files.at(*p.mesh);
     if (file.error || file.nodes.empty()) {
       // One part, named by its id, carries why: its pairs are errors, the batch goes on.
       p.error = file.error ? *file.error : "mesh file " + *p.mesh + ": has no meshes";

@@ -13,13 +13,16 @@ struct SplitLoad {
   double timeout = kDefaultLoadTimeout;
   double memory_mb = kAutoLoadMemory;
   MeshLoadHook before_load;  ///< tests only
+  /// Where node paths are cached per file content (node_names_cache.h); "" = none.
+  std::string cache_dir;
 };
 
 /// Replaces every `"split": "nodes"` part by one part per node of its mesh file
 /// that holds meshes, in file order: id `<id>/<node path>` (node_names.h),
 /// group the part's group joined with the node path's parent, everything else
 /// (units, transform, pieces, tags, motion, sag) the part's. Each distinct file
-/// is read once, in loader processes; only node names cross the pipe. A file
+/// is read once, in loader processes (only node names cross the pipe), unless
+/// the cache holds its node paths. A file
 /// that cannot be read leaves its part whole with `error` set (the rest of the
 /// batch goes on). Then validate_scene: an id clash names both parts
 /// (SceneError). Forks: call it from a process with one thread.
