@@ -19,6 +19,7 @@
 #include "cli_support.h"
 #include "scene/node_names.h"
 #include "scene/parts.h"
+#include "scene/rule_index.h"
 #include "scene/split_nodes.h"
 
 using nlohmann::json;
@@ -388,6 +389,22 @@ TEST(SplitNodes, RunFindsTheBoltInThePlateAndRulesSelectByGroup) {
     EXPECT_NEAR(p["depth"].get<double>(), 0.5, 1e-6);
   }
   EXPECT_EQ(findings, 1);
+}
+
+TEST(SplitNodes, IgnoreSameFileTakesASplitFileAsOneFile) {
+  // Navisworks's "items in the same file": node parts of one split file are
+  // one file; a node part and another file's part are not.
+  const json parts = {split_part("asm", assembly_gltf()), split_part("box", groups_obj())};
+  pd::SceneSpec s = pd::load_scene_file(scene_file(
+      "same-file.json", {{"units", "mm"},
+                         {"tolerance", 0.01},
+                         {"parts", parts},
+                         {"rules", {{"ignore", {{{"same", "file"}, {"reason", "one model"}}}}}}}));
+  pd::split_node_parts(s);
+  const pd::RuleIndex index(*s.rules, s.parts);
+  using Scope = pd::PairDecision::Scope;
+  EXPECT_EQ(index.decide(0, 1).scope, Scope::kIgnored);  // asm/frame/plate, asm/frame/bolt
+  EXPECT_EQ(index.decide(1, 7).scope, Scope::kChecked);  // asm/frame/bolt, box/housing
 }
 
 TEST(SplitNodes, MergedShardsEqualTheUnshardedRun) {
