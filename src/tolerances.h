@@ -74,6 +74,10 @@ inline constexpr double kCandidateFacetWork = 20000;
 /// kEpaBracket: the bracket is certified (the answer final) when upper − lower is
 /// at most this: the nearest face is a facet of P − Q to rounding, and the depth
 /// reported (upper) is within it of the exact one, far below kTouch.
+/// GJK (solve/gjk.h) tests "on the simplex" against kEpaRounding too: the origin
+/// within it of a face still counts as held by a tetrahedron, within it of a
+/// segment or triangle makes GJK complete the simplex off its span, and a point
+/// beyond the simplex by no more than it leaves a supporting plane (touching).
 inline constexpr double kEpaRounding = 1e-14;
 inline constexpr double kEpaBracket = 2 * kEpaRounding;
 /// Effort, not accuracy: GJK's support evaluations and EPA's expansions per
@@ -192,6 +196,11 @@ inline constexpr size_t kHtmlPageTriangles = 300000;
 /// The most parts of the rest of the assembly a finding's view shows around
 /// its pair (as faint boxes, the nearest first).
 inline constexpr size_t kHtmlContextParts = 24;
+/// BCF viewpoints (--bcf, report/bcf_view.h): the perspective camera's vertical
+/// field of view (degrees; it just holds the finding's ball) and the aspect
+/// ratio it is written with (a 16:9 screen). Display only.
+inline constexpr double kBcfFieldOfView = 60.0;
+inline constexpr double kBcfAspectRatio = 16.0 / 9.0;
 
 /// Where a finding is (geometry/depth_witness.h): the points of a convex set
 /// within this fraction of the pair's size of its support plane along the

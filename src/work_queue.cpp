@@ -134,6 +134,169 @@ std::string reap(Worker& w, bool kill_it, std::deque<size_t>& retry) {
   return why;
 }
 
+// Ignores SIGPIPE while it lives: a worker that dies must not kill the parent
+// with SIGPIPE on the next write. The previous action comes back at the end.
+class SigpipeIgnored {
+ public:
+  SigpipeIgnored() {
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &ignore, &previous_);
+  }
+  ~SigpipeIgnored() { sigaction(SIGPIPE, &previous_, nullptr); }
+  SigpipeIgnored(const SigpipeIgnored&) = delete;
+  SigpipeIgnored& operator=(const SigpipeIgnored&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
+// The parent's side of one run: the workers, the tasks not yet sent, and
+// those to send again because their worker died before starting them.
+class Dispatcher {
+ public:
+  Dispatcher(const std::vector<size_t>& order, const QueueOptions& options, const TaskFn& task,
+             const DoneFn& done)
+      : order_(order), options_(options), task_(task), done_(done) {}
+  // Ends every worker if the run is left by an exception (a `done` that
+  // throws, e.g. on a closed output): none is left solving on its own.
+  ~Dispatcher() {
+    std::deque<size_t> none;
+    for (Worker& w : workers_)
+      if (w.pid >= 0) reap(w, true, none);
+  }
+  Dispatcher(const Dispatcher&) = delete;
+  Dispatcher& operator=(const Dispatcher&) = delete;
+
+  void run() {
+    start_workers();
+    for (Worker& w : workers_) feed(w);
+    while (finished_ < order_.size()) poll_round();
+    std::deque<size_t> none;
+    for (Worker& w : workers_)
+      if (w.pid >= 0) reap(w, false, none);  // closing its input ends the worker's loop
+  }
+
+ private:
+  // As many workers as tasks, options.jobs and the open-file limit allow.
+  // Fewer start (a fork or a pipe fails) with a warning; none is an error.
+  void start_workers() {
+    int jobs = std::max(1, std::min<int>(options_.jobs, static_cast<int>(order_.size())));
+    std::string why;
+    jobs = workers_within_fd_limit(jobs, why);
+    for (int k = 0; k < jobs; ++k) {
+      try {
+        workers_.push_back(spawn(task_, workers_));
+      } catch (const std::runtime_error& e) {
+        if (workers_.empty()) throw;  // not even one: the caller must know
+        why = "could start only " + std::to_string(workers_.size()) + " of " +
+              std::to_string(jobs) + " worker processes (" + e.what() + ")";
+        break;
+      }
+    }
+    if (!why.empty() && options_.warn) options_.warn(why);
+  }
+
+  bool pending() const { return !retry_.empty() || next_ < order_.size(); }
+
+  // Tops a worker up to kDepth tasks, replacing it if it died meanwhile.
+  void feed(Worker& w) {
+    while (w.tasks.size() < kDepth && pending()) {
+      if (w.pid < 0) w = spawn(task_, workers_);
+      const bool again = !retry_.empty();
+      const std::uint64_t index = again ? retry_.front() : order_[next_];
+      if (!write_all(w.to, &index, sizeof index)) {
+        if (w.tasks.empty()) {  // it died idle: replace it and try again
+          reap(w, true, retry_);
+          continue;
+        }
+        return;  // its running task will report the death
+      }
+      again ? retry_.pop_front() : void(++next_);
+      if (w.tasks.empty()) w.started = Clock::now();
+      w.tasks.push_back(index);
+    }
+  }
+
+  // Waits for an answer from any busy worker, or for the nearest task
+  // timeout, and handles what came.
+  void poll_round() {
+    std::vector<pollfd> fds;
+    std::vector<size_t> who;  // fds[f] is workers_[who[f]]'s answer pipe
+    int wait_ms = -1;
+    const auto now = Clock::now();
+    for (size_t k = 0; k < workers_.size(); ++k) {
+      if (workers_[k].tasks.empty()) continue;
+      fds.push_back({workers_[k].from, POLLIN, 0});
+      who.push_back(k);
+      if (options_.task_timeout > 0) {
+        const double left = options_.task_timeout -
+                            std::chrono::duration<double>(now - workers_[k].started).count();
+        const int ms = poll_timeout_ms(left);
+        wait_ms = wait_ms < 0 ? ms : std::min(wait_ms, ms);
+      }
+    }
+    const int ready = poll(fds.data(), fds.size(), wait_ms);
+    if (ready < 0 && errno != EINTR) throw std::runtime_error("poll() failed");
+    for (size_t f = 0; f < fds.size(); ++f) {
+      Worker& w = workers_[who[f]];
+      if (fds[f].revents & (POLLIN | POLLHUP | POLLERR)) {
+        take_answer(w);
+      } else if (options_.task_timeout > 0 &&
+                 std::chrono::duration<double>(Clock::now() - w.started).count() >
+                     options_.task_timeout) {
+        time_out(w);
+      }
+    }
+    // A worker replaced above may leave retried tasks that its own feed could
+    // not place (it was full); idle workers take them.
+    for (Worker& w : workers_)
+      if (w.tasks.empty()) feed(w);
+  }
+
+  // The running task's answer (or the worker's death: a short read, or an
+  // answer for another task, which a sound worker never sends).
+  void take_answer(Worker& w) {
+    const size_t running = w.tasks.front();
+    std::uint64_t index = 0, len = 0;
+    std::string payload;
+    bool ok = read_all(w.from, &index, sizeof index) && read_all(w.from, &len, sizeof len);
+    if (ok) {
+      payload.resize(len);
+      ok = read_all(w.from, payload.data(), len) && index == running;
+    }
+    ++finished_;
+    if (ok) {
+      w.tasks.pop_front();
+      w.started = Clock::now();
+      done_(running, true, payload);
+    } else {
+      done_(running, false, reap(w, true, retry_));
+    }
+    feed(w);
+  }
+
+  // The running task took too long: its worker is killed (a hung solver
+  // cannot be interrupted otherwise) and replaced.
+  void time_out(Worker& w) {
+    const size_t running = w.tasks.front();
+    reap(w, true, retry_);
+    ++finished_;
+    done_(running, false,
+          "timed out after " + std::to_string(options_.task_timeout) + " s (worker killed)");
+    feed(w);
+  }
+
+  const std::vector<size_t>& order_;
+  const QueueOptions& options_;
+  const TaskFn& task_;
+  const DoneFn& done_;
+  std::vector<Worker> workers_;
+  size_t next_ = 0;           ///< order_[next_] is the next task never sent
+  size_t finished_ = 0;       ///< tasks reported to done_
+  std::deque<size_t> retry_;  ///< sent to a worker that died before starting them
+};
+
 }  // namespace
 
 int poll_timeout_ms(double seconds_left) {
@@ -149,119 +312,8 @@ void run_work_queue(const std::vector<size_t>& order, const QueueOptions& option
     return given_task(index);
   })
                                           : given_task;
-  // A worker that dies must not kill the parent with SIGPIPE on the next write.
-  struct sigaction ignore {};
-  ignore.sa_handler = SIG_IGN;
-  struct sigaction previous {};
-  sigaction(SIGPIPE, &ignore, &previous);
-
-  int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(order.size())));
-  std::string why;
-  jobs = workers_within_fd_limit(jobs, why);
-  std::vector<Worker> workers;
-  // Ends every worker if this function is left by an exception (a `done`
-  // that throws, e.g. on a closed output): none is left solving on its own.
-  struct Cleanup {
-    std::vector<Worker>& workers;
-    const struct sigaction& previous;
-    ~Cleanup() {
-      std::deque<size_t> none;
-      for (Worker& w : workers)
-        if (w.pid >= 0) reap(w, true, none);
-      sigaction(SIGPIPE, &previous, nullptr);
-    }
-  } cleanup{workers, previous};
-  for (int k = 0; k < jobs; ++k) {
-    try {
-      workers.push_back(spawn(task, workers));
-    } catch (const std::runtime_error& e) {
-      if (workers.empty()) throw;  // not even one: the caller must know
-      why = "could start only " + std::to_string(workers.size()) + " of " + std::to_string(jobs) +
-            " worker processes (" + e.what() + ")";
-      break;
-    }
-  }
-  if (!why.empty() && options.warn) options.warn(why);
-  size_t next = 0, finished = 0;
-  std::deque<size_t> retry;  // sent to a worker that died before starting them
-  auto pending = [&] { return !retry.empty() || next < order.size(); };
-
-  // Tops a worker up to kDepth tasks, replacing it if it died meanwhile.
-  auto feed = [&](Worker& w) {
-    while (w.tasks.size() < kDepth && pending()) {
-      if (w.pid < 0) w = spawn(task, workers);
-      const bool again = !retry.empty();
-      const std::uint64_t index = again ? retry.front() : order[next];
-      if (!write_all(w.to, &index, sizeof index)) {
-        if (w.tasks.empty()) {  // it died idle: replace it and try again
-          reap(w, true, retry);
-          continue;
-        }
-        return;  // its running task will report the death
-      }
-      again ? retry.pop_front() : void(++next);
-      if (w.tasks.empty()) w.started = Clock::now();
-      w.tasks.push_back(index);
-    }
-  };
-  for (Worker& w : workers) feed(w);
-
-  while (finished < order.size()) {
-    std::vector<pollfd> fds;
-    std::vector<size_t> who;
-    int wait_ms = -1;
-    const auto now = Clock::now();
-    for (size_t k = 0; k < workers.size(); ++k) {
-      if (workers[k].tasks.empty()) continue;
-      fds.push_back({workers[k].from, POLLIN, 0});
-      who.push_back(k);
-      if (options.task_timeout > 0) {
-        const double left =
-            options.task_timeout - std::chrono::duration<double>(now - workers[k].started).count();
-        const int ms = poll_timeout_ms(left);
-        wait_ms = wait_ms < 0 ? ms : std::min(wait_ms, ms);
-      }
-    }
-    const int ready = poll(fds.data(), fds.size(), wait_ms);
-    if (ready < 0 && errno != EINTR) throw std::runtime_error("poll() failed");
-    for (size_t f = 0; f < fds.size(); ++f) {
-      Worker& w = workers[who[f]];
-      const size_t running = w.tasks.front();
-      if (fds[f].revents & (POLLIN | POLLHUP | POLLERR)) {
-        std::uint64_t index = 0, len = 0;
-        std::string payload;
-        bool ok = read_all(w.from, &index, sizeof index) && read_all(w.from, &len, sizeof len);
-        if (ok) {
-          payload.resize(len);
-          ok = read_all(w.from, payload.data(), len) && index == running;
-        }
-        ++finished;
-        if (ok) {
-          w.tasks.pop_front();
-          w.started = Clock::now();
-          done(running, true, payload);
-        } else {
-          done(running, false, reap(w, true, retry));
-        }
-        feed(w);
-      } else if (options.task_timeout > 0 &&
-                 std::chrono::duration<double>(Clock::now() - w.started).count() >
-                     options.task_timeout) {
-        reap(w, true, retry);
-        ++finished;
-        done(running, false,
-             "timed out after " + std::to_string(options.task_timeout) + " s (worker killed)");
-        feed(w);
-      }
-    }
-    // A worker replaced above may leave retried tasks that its own feed could
-    // not place (it was full); idle workers take them.
-    for (Worker& w : workers)
-      if (w.tasks.empty()) feed(w);
-  }
-  std::deque<size_t> none;
-  for (Worker& w : workers)
-    if (w.pid >= 0) reap(w, false, none);  // closing its input ends the worker's loop
+  const SigpipeIgnored sigpipe_ignored;
+  Dispatcher(order, options, task, done).run();
 }
 
 }  // namespace pd

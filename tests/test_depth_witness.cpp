@@ -9,10 +9,12 @@
 #include "box_points.h"
 #include "geometry/depth_witness.h"
 #include "geometry/hull.h"
+#include "inline_part.h"
 #include "solve/methods.h"
 
 using namespace pd;
 using pd_test::box_points;
+using pd_test::inline_part;
 
 namespace {
 
@@ -43,15 +45,6 @@ struct BoxCase {
   }
   Vec3 overlap_centre() const { return (alo.cwiseMax(blo) + ahi.cwiseMin(bhi)) / 2; }
 };
-
-Part part(const std::string& id, const Points& pts) {
-  Part p;
-  p.id = id;
-  p.source = "inline";
-  p.pieces.push_back(convex_hull(pts));
-  p.box = Aabb::of(p.pieces[0].vertices);
-  return p;
-}
 
 }  // namespace
 
@@ -107,7 +100,8 @@ TEST(DepthWitness, ApexOfASimplexInAFaceIsHalfwayBetweenApexAndFace) {
   for (Method m : {Method::kExact, Method::kMlsl}) {
     SolverSettings s;
     s.method = m;
-    const PairResult r = solve_part_pair(0, part("a", a), 1, part("b", b), s, 0.01, ipopt);
+    const PairResult r =
+        solve_part_pair(0, inline_part("a", a), 1, inline_part("b", b), s, 0.01, ipopt);
     ASSERT_EQ(r.status, Status::kInterference);
     ASSERT_TRUE(r.at) << method_name(m);
     EXPECT_LT((*r.at - Vec3(0.3, 0.2, -0.05)).norm(), 1e-6) << method_name(m);
@@ -145,14 +139,14 @@ TEST(DepthWitness, ApartPairsGiveTheMiddleOfTheGap) {
   EXPECT_LT((depth_witness(a, b, Vec3::UnitX()) - Vec3(1.5, 0.75, 0.45)).norm(), 1e-12);
   // Through a clearance check: the clearance violation is marked in the gap.
   IpoptLocalSolver ipopt;
-  const PairResult r = solve_part_pair(0, part("a", a), 1, part("b", b), SolverSettings{}, 0.01,
-                                       ipopt, {2.0, nullptr, std::nullopt});
+  const PairResult r = solve_part_pair(0, inline_part("a", a), 1, inline_part("b", b),
+                                       SolverSettings{}, 0.01, ipopt, {2.0, nullptr, std::nullopt});
   ASSERT_EQ(r.status, Status::kClearanceViolation);
   ASSERT_TRUE(r.at);
   EXPECT_LT((*r.at - Vec3(1.5, 0.75, 0.45)).norm(), 1e-6);
   // A clean pair has no place.
-  const PairResult clean =
-      solve_part_pair(0, part("a", a), 1, part("b", b), SolverSettings{}, 0.01, ipopt);
+  const PairResult clean = solve_part_pair(0, inline_part("a", a), 1, inline_part("b", b),
+                                           SolverSettings{}, 0.01, ipopt);
   EXPECT_EQ(clean.status, Status::kSeparated);
   EXPECT_FALSE(clean.at);
 }

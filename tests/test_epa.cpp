@@ -25,15 +25,28 @@ Points box(const Vec3& lo, const Vec3& hi) {
   return pd_test::box_points(lo, hi);
 }
 
-// The pair rotated at random and moved `far` away, optionally rounded to float32
-// as a mesh file stores it.
-testgen::PairCase posed(SphereSampler& r, testgen::PairCase c, double far, bool f32) {
+// Where a generated pair is checked: rotated at random, moved `far` away, and
+// in double or rounded to float32 as a mesh file stores it.
+struct Pose {
+  double far;
+  bool f32;
+  std::string tag() const { return " far " + std::to_string(far) + (f32 ? " f32" : ""); }
+};
+
+std::vector<Pose> poses(std::initializer_list<double> fars) {
+  std::vector<Pose> out;
+  for (double far : fars)
+    for (bool f32 : {false, true}) out.push_back({far, f32});
+  return out;
+}
+
+testgen::PairCase posed(SphereSampler& r, testgen::PairCase c, const Pose& pose) {
   const Eigen::Matrix3d rot =
       Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
-  const Vec3 shift = far * r.direction();
+  const Vec3 shift = pose.far * r.direction();
   for (Points* x : {&c.a, &c.b}) {
     *x = (rot * *x).colwise() + shift;
-    if (f32) *x = x->cast<float>().cast<double>();
+    if (pose.f32) *x = x->cast<float>().cast<double>();
   }
   return c;
 }
@@ -42,8 +55,10 @@ testgen::PairCase posed(SphereSampler& r, testgen::PairCase c, double far, bool 
 // relative, depths at or below the contact resolution counting as contact. A
 // certified depth is exact to kEpaBracket of the frame, which is more than 1e-9
 // of depths below 2e-5 of the frame (where exact's own rounding is as large).
+// `bracket` counts the pairs the bracket settled alone: no sampling iteration
+// and no certificate grid (6·12² directions), so a handful of evaluations.
 struct DefaultTally {
-  int pairs = 0, epa = 0;
+  int pairs = 0, epa = 0, bracket = 0;
 };
 void expect_default_equals_exact(const std::string& what, const testgen::PairCase& c,
                                  DefaultTally& t) {
@@ -64,12 +79,24 @@ void expect_default_equals_exact(const std::string& what, const testgen::PairCas
   }
   ++t.pairs;
   t.epa += m.stats.stop_reason == StopReason::kEpaCertificate;
+  t.bracket += m.stats.mlsl_iterations == 0 && m.stats.alpha_evaluations < 100;
 }
 
 void check_both(const std::string& what, const testgen::PairCase& c, BracketTally& bt,
                 DefaultTally& dt) {
   expect_bracket_holds(what, c.a, c.b, &bt);
   expect_default_equals_exact(what, c, dt);
+}
+
+using Family = std::vector<std::pair<std::string, testgen::PairCase>>;
+
+// Every pair of `family` in every pose, `repeats` times (new rotations).
+void check_posed(SphereSampler& r, const Family& family, const std::vector<Pose>& where,
+                 int repeats, BracketTally& bt, DefaultTally& dt) {
+  for (const Pose& pose : where)
+    for (int k = 0; k < repeats; ++k)
+      for (const auto& [name, pair] : family)
+        check_both(name + pose.tag(), posed(r, pair, pose), bt, dt);
 }
 
 }  // namespace
@@ -120,6 +147,39 @@ TEST(Epa, ContactSetsFloat32FarFromTheOrigin) {
   EXPECT_GT(bt.separated, 0);
 }
 
+TEST(Epa, TouchingContactsAreSettledWithoutSampling) {
+  // Faces resting on faces and components on boards, at the axes, rotated, and
+  // in float32 far from the origin: touching to rounding, or overlapping or
+  // apart by float32's rounding. GJK's simplex through the origin yields the
+  // supporting plane of the contact (gap 0 to rounding), the others close their
+  // bracket or separate: no pair needs MLSL's sampling or its certificate.
+  SphereSampler r(31);
+  BracketTally bt;
+  DefaultTally dt;
+  using testgen::Contact;
+  for (Contact c : {Contact::kPlates, Contact::kSeated})
+    for (int n : {8, 30, 100})
+      for (int k = 0; k < 12; ++k)
+        check_both(testgen::contact_name(c) + " n=" + std::to_string(n) + " #" + std::to_string(k),
+                   testgen::contact_case(r, c, n, k), bt, dt);
+  EXPECT_EQ(dt.bracket, dt.pairs);
+  EXPECT_GT(bt.certified, 0);
+}
+
+TEST(Epa, HardCasesAreCertified) {
+  // pdbench's hard cases (identical cubes, 1e-9 overlaps, coplanar faces, a cube
+  // in a cube, plates, a flat square, identical random polytopes, a pin in a
+  // panel), axis-aligned and rotated: symmetric pairs put the origin on a face
+  // or an edge of GJK's simplex, and the bracket must close on each all the same.
+  SphereSampler r(29);
+  BracketTally bt;
+  DefaultTally dt;
+  for (int k = 0; k < 32; ++k)
+    check_both("hard case " + std::to_string(k), testgen::hard_case(r, k), bt, dt);
+  EXPECT_EQ(bt.certified, bt.pairs);
+  EXPECT_EQ(dt.epa, dt.pairs);
+}
+
 TEST(Epa, TouchingCoplanarAndTinyOffsets) {
   // Boxes face on face, edge on face and corner on face, overlapping or apart
   // by 0, 1e-12, 1e-9 or 1e-6 of their size; coplanar side faces; identical
@@ -128,28 +188,27 @@ TEST(Epa, TouchingCoplanarAndTinyOffsets) {
   BracketTally bt;
   DefaultTally dt;
   const Points a = box(Vec3::Zero(), Vec3::Ones());
-  for (double eps : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6})
-    for (double far : {0.0, 30.0, 20000.0})
-      for (bool f32 : {false, true}) {
-        const std::string tag =
-            "eps " + std::to_string(eps) + " far " + std::to_string(far) + (f32 ? " f32" : "");
-        testgen::PairCase face{a, box(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8))};
-        check_both("face " + tag, posed(r, face, far, f32), bt, dt);
-        testgen::PairCase coplanar{a, box(Vec3(1 - eps, 0, 0), Vec3(2 - eps, 1, 1))};
-        check_both("coplanar " + tag, posed(r, coplanar, far, f32), bt, dt);
-        const Eigen::Matrix3d tilt = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
-        Points edge = tilt * box(Vec3::Zero(), Vec3::Ones());
-        edge.colwise() += Vec3(1 - eps - edge.row(0).minCoeff(), 0.1, 0.1);
-        check_both("edge " + tag, posed(r, {a, edge}, far, f32), bt, dt);
-        const Eigen::Matrix3d corner =
-            Eigen::AngleAxisd(0.6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-        Points v = corner * box(Vec3::Zero(), Vec3::Ones());
-        v.colwise() += Vec3(1 - eps - v.row(0).minCoeff(), 0.3, 0.3);
-        check_both("corner " + tag, posed(r, {a, v}, far, f32), bt, dt);
-        check_both("identical " + tag, posed(r, {a, a}, far, f32), bt, dt);
-      }
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  // b's lowest x at 1 − eps, moved by (0, y, z).
+  auto against = [&](const Points& b, double eps, double y, double z) {
+    return (b.colwise() + Vec3(1 - eps - b.row(0).minCoeff(), y, z)).eval();
+  };
+  for (double eps : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6}) {
+    const std::string e = " eps " + std::to_string(eps);
+    const Family family = {
+        {"face" + e, {a, against(box(Vec3::Zero(), Vec3(1, 0.5, 0.7)), eps, 0.2, 0.1)}},
+        {"coplanar" + e, {a, against(a, eps, 0, 0)}},
+        {"edge" + e, {a, against(tilt * a, eps, 0.1, 0.1)}},
+        {"corner" + e, {a, against(turn * a, eps, 0.3, 0.3)}},
+        {"identical" + e, {a, a}}};
+    check_posed(r, family, poses({0.0, 30.0, 20000.0}), 1, bt, dt);
+  }
   EXPECT_GT(bt.certified, bt.pairs / 4);
   EXPECT_GT(bt.separated, 0);
+  RecordProperty("settled_by_bracket", dt.bracket);
+  EXPECT_GE(dt.bracket, dt.pairs * 9 / 10);
 }
 
 TEST(Epa, FlatParts) {
@@ -164,15 +223,11 @@ TEST(Epa, FlatParts) {
   segment << 0.2, 0.8, 0.5, 0.5, 0.3, 0.3;
   triangle << -0.5, 1.5, 0.5, 0.3, 0.3, 0.3, 0.1, 0.1, 0.9;
   square2 << 0.1, 0.9, 0.9, 0.1, 0.3, 0.3, 0.7, 0.7, 0.5, 0.5, 0.5, 0.5;
-  for (double far : {0.0, 20000.0})
-    for (bool f32 : {false, true})
-      for (int k = 0; k < 3; ++k) {
-        const std::string tag = " far " + std::to_string(far) + (f32 ? " f32" : "");
-        check_both("square" + tag, posed(r, {cube, square}, far, f32), bt, dt);
-        check_both("segment" + tag, posed(r, {cube, segment}, far, f32), bt, dt);
-        check_both("triangle" + tag, posed(r, {cube, triangle}, far, f32), bt, dt);
-        check_both("squares" + tag, posed(r, {square, square2}, far, f32), bt, dt);
-      }
+  const Family family = {{"square", {cube, square}},
+                         {"segment", {cube, segment}},
+                         {"triangle", {cube, triangle}},
+                         {"squares", {square, square2}}};
+  check_posed(r, family, poses({0.0, 20000.0}), 3, bt, dt);
   EXPECT_GT(bt.certified, 0);
 }
 

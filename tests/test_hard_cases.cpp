@@ -10,9 +10,11 @@
 #include "box_points.h"
 #include "bracket_check.h"
 #include "corpus/generators.h"
+#include "inline_part.h"
 #include "solve/methods.h"
 
 using namespace pd;
+using pd_test::inline_part;
 
 namespace {
 
@@ -32,20 +34,11 @@ Points points(std::initializer_list<Vec3> l) {
   return p;
 }
 
-Part part(const std::string& id, const Points& pts) {
-  Part p;
-  p.id = id;
-  p.source = "inline";
-  p.pieces.push_back(convex_hull(pts));
-  p.box = Aabb::of(p.pieces[0].vertices);
-  return p;
-}
-
 PairResult check(const Points& a, const Points& b, Method m, double tolerance) {
   static IpoptLocalSolver ipopt;
   SolverSettings s;
   s.method = m;
-  return solve_part_pair(0, part("a", a), 1, part("b", b), s, tolerance, ipopt);
+  return solve_part_pair(0, inline_part("a", a), 1, inline_part("b", b), s, tolerance, ipopt);
 }
 
 double gap_world(const Points& a, const Points& b, const Vec3& v) {
@@ -230,7 +223,7 @@ TEST(HardCases, TouchingPairsAtRandomPosesGiveTheExactDepth) {
         pd::testing::expect_bracket_holds(touch_name(t), c.a, c.b);
         const PairResult e = check(c.a, c.b, Method::kExact, 0.01);
         const PairResult m = check(c.a, c.b, Method::kMlsl, 0.01);
-        const double floor = 1e-12 * pair_size(part("a", c.a), part("b", c.b));
+        const double floor = 1e-12 * pair_size(inline_part("a", c.a), inline_part("b", c.b));
         SCOPED_TRACE(std::string(touch_name(t)) + " far " + std::to_string(far) + " case " +
                      std::to_string(k) + ": exact " + std::to_string(e.depth * 1e15) +
                      "e-15 mlsl " + std::to_string(m.depth * 1e15) + "e-15 (" +
@@ -266,7 +259,7 @@ TEST(HardCases, TouchingFloat32PairsAtRandomPosesGiveTheExactDepth) {
         c.b = c.b.cast<float>().cast<double>();
         const PairResult e = check(c.a, c.b, Method::kExact, 0.01);
         const PairResult m = check(c.a, c.b, Method::kMlsl, 0.01);
-        const double floor = 1e-12 * pair_size(part("a", c.a), part("b", c.b));
+        const double floor = 1e-12 * pair_size(inline_part("a", c.a), inline_part("b", c.b));
         SCOPED_TRACE(std::string(touch_name(t)) + " far " + std::to_string(far) + " case " +
                      std::to_string(k) + ": exact " + std::to_string(e.depth * 1e15) +
                      "e-15 mlsl " + std::to_string(m.depth * 1e15) + "e-15 (" +

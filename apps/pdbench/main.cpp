@@ -252,6 +252,118 @@ int zhou_timing(const std::string& ms, int steps) {
   return 0;
 }
 
+// One (set, method) cell of the table: every pair's time, error and counts.
+struct CellRow {
+  std::vector<double> ms, cpu_ms, err, evals, calls, iters;
+  int fallbacks = 0;
+  std::map<std::string, int> stops;
+  ordered_json points = ordered_json::array();
+
+  void add(const DepthSolution& s, double wall_ms, double cpu, double error) {
+    ms.push_back(wall_ms);
+    cpu_ms.push_back(cpu);
+    err.push_back(error);
+    evals.push_back(double(s.stats.alpha_evaluations));
+    calls.push_back(s.stats.ipopt_calls);
+    iters.push_back(s.stats.ipopt_iterations);
+    fallbacks += !s.fallback.empty();
+    ++stops[stop_reason_name(s.stats.stop_reason)];
+    points.push_back({wall_ms, error, cpu});
+  }
+
+  std::string stop_text() const {
+    std::string t;
+    for (const auto& [name, count] : stops)
+      t += (t.empty() ? "" : ", ") + name + " " + std::to_string(count);
+    return t;
+  }
+
+  void print(const std::string& method) const {
+    std::printf(
+        "| %s | %zu | %.3g | %.3g | %.3g | %.3g | %.3g | %.1e | %.1e | %.0f | %.0f | %.0f | %d | "
+        "%s |\n",
+        method.c_str(), ms.size(), median(ms), quantile(ms, 0.99),
+        *std::max_element(ms.begin(), ms.end()), median(cpu_ms), quantile(cpu_ms, 0.99),
+        median(err), *std::max_element(err.begin(), err.end()), median(evals), median(calls),
+        median(iters), fallbacks, stop_text().c_str());
+    std::fflush(stdout);
+  }
+
+  ordered_json to_json(const std::string& set, const std::string& method) const {
+    return {{"set", set},
+            {"method", method},
+            {"pairs", ms.size()},
+            {"median_ms", median(ms)},
+            {"p99_ms", quantile(ms, 0.99)},
+            {"max_ms", *std::max_element(ms.begin(), ms.end())},
+            {"median_cpu_ms", median(cpu_ms)},
+            {"p99_cpu_ms", quantile(cpu_ms, 0.99)},
+            {"median_rel_err", median(err)},
+            {"max_rel_err", *std::max_element(err.begin(), err.end())},
+            {"median_alpha_evals", median(evals)},
+            {"median_ipopt_calls", median(calls)},
+            {"median_ipopt_iterations", median(iters)},
+            {"fallbacks", fallbacks},
+            {"stop_reasons", stops},
+            {"points", points}};
+  }
+};
+
+// A set's pairs with the exact reference, solved once per pair (timed as the
+// "exact" row).
+struct SetCases {
+  std::vector<testgen::PairCase> cases;
+  std::vector<DepthSolution> exact;
+  std::vector<double> touch;  ///< the contact resolution of each pair
+};
+SetCases make_cases(const Set& set, int pairs, std::uint64_t seed, IpoptLocalSolver& ipopt) {
+  SetCases out;
+  SphereSampler rng(seed);
+  for (int k = 0; k < pairs; ++k) out.cases.push_back(set.make(rng, k));
+  SolverSettings es;
+  es.method = Method::kExact;
+  for (const auto& c : out.cases) {
+    out.exact.push_back(solve_convex_pair(c.a, c.b, es, ipopt));
+    out.touch.push_back(tol::kTouch * pair_frame(c.a, c.b).scale);
+  }
+  return out;
+}
+
+// One method over a set's pairs, within `budget` seconds (at least one pair).
+CellRow run_cell(const Set& set, const Config& cfg, const SetCases& sc, double budget, bool verbose,
+                 IpoptLocalSolver& ipopt) {
+  CellRow row;
+  const auto cell0 = std::chrono::steady_clock::now();
+  for (size_t k = 0; k < sc.cases.size(); ++k) {
+    const double c0 = thread_cpu_ms();
+    const auto t0 = std::chrono::steady_clock::now();
+    DepthSolution s;
+    double wall_ms = 0.0, cpu = 0.0;
+    if (cfg.peer) {
+      // The peer's own clock times its query alone; a failure is counted
+      // with the fallbacks and scored with the depth it gave (0).
+      const pdbench::PeerRun pr = pdbench::run_isolated(*cfg.peer, sc.cases[k].a, sc.cases[k].b);
+      s.depth = pr.depth;
+      s.fallback = pr.failure;
+      wall_ms = cpu = pr.ms;
+    } else {
+      s = solve_convex_pair(sc.cases[k].a, sc.cases[k].b, cfg.settings, ipopt);
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    if (!cfg.peer) {
+      cpu = thread_cpu_ms() - c0;
+      wall_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    }
+    row.add(s, wall_ms, cpu, depth_error(s.depth, sc.exact[k].depth, sc.touch[k]));
+    if (verbose && row.err.back() > 1e-9)
+      std::fprintf(stderr, "%s / %s pair %zu: rel. err %.2e, %.3g rad from the exact direction\n",
+                   set.name.c_str(), cfg.name.c_str(), k, row.err.back(),
+                   angle_between(s.direction, sc.exact[k].direction));
+    if (std::chrono::duration<double>(t1 - cell0).count() > budget) break;
+  }
+  return row;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -289,20 +401,7 @@ int main(int argc, char** argv) {
   ordered_json out = ordered_json::array();
   for (const Set& set : all_sets()) {
     if (!selected(want_sets, set.name)) continue;
-    SphereSampler rng(seed);
-    std::vector<testgen::PairCase> cases;
-    for (int k = 0; k < pairs; ++k) cases.push_back(set.make(rng, k));
-    // The reference, once per pair (timed as the "exact" row below).
-    std::vector<DepthSolution> exact_sol;
-    std::vector<double> exact, touch;
-    SolverSettings es;
-    es.method = Method::kExact;
-    for (const auto& c : cases) {
-      exact_sol.push_back(solve_convex_pair(c.a, c.b, es, ipopt));
-      exact.push_back(exact_sol.back().depth);
-      touch.push_back(tol::kTouch * pair_frame(c.a, c.b).scale);
-    }
-
+    const SetCases sc = make_cases(set, pairs, seed, ipopt);
     std::printf("\n### %s (%d pairs)\n\n", set.name.c_str(), pairs);
     std::printf(
         "| method | pairs | median ms | p99 ms | max ms | median CPU ms | p99 CPU ms | median rel. "
@@ -311,73 +410,9 @@ int main(int argc, char** argv) {
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (const Config& cfg : all_configs()) {
       if (!selected(want_methods, cfg.name)) continue;
-      std::vector<double> ms, cpu_ms, err, evals, calls, iters;
-      int fallbacks = 0;
-      std::map<std::string, int> stops;
-      ordered_json points = ordered_json::array();
-      const auto cell0 = std::chrono::steady_clock::now();
-      for (size_t k = 0; k < cases.size(); ++k) {
-        const double c0 = thread_cpu_ms();
-        const auto t0 = std::chrono::steady_clock::now();
-        DepthSolution s;
-        if (cfg.peer) {
-          // The peer's own clock times its query alone; a failure is counted
-          // with the fallbacks and scored with the depth it gave (0).
-          const pdbench::PeerRun pr = pdbench::run_isolated(*cfg.peer, cases[k].a, cases[k].b);
-          s.depth = pr.depth;
-          s.fallback = pr.failure;
-          ms.push_back(pr.ms);
-          cpu_ms.push_back(pr.ms);
-        } else {
-          s = solve_convex_pair(cases[k].a, cases[k].b, cfg.settings, ipopt);
-        }
-        const auto t1 = std::chrono::steady_clock::now();
-        if (!cfg.peer) {
-          cpu_ms.push_back(thread_cpu_ms() - c0);
-          ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-        }
-        err.push_back(depth_error(s.depth, exact[k], touch[k]));
-        evals.push_back(double(s.stats.alpha_evaluations));
-        calls.push_back(s.stats.ipopt_calls);
-        iters.push_back(s.stats.ipopt_iterations);
-        fallbacks += !s.fallback.empty();
-        ++stops[stop_reason_name(s.stats.stop_reason)];
-        if (verbose && err.back() > 1e-9)
-          std::fprintf(stderr,
-                       "%s / %s pair %zu: rel. err %.2e, %.3g rad from the exact direction\n",
-                       set.name.c_str(), cfg.name.c_str(), k, err.back(),
-                       angle_between(s.direction, exact_sol[k].direction));
-        points.push_back({ms.back(), err.back(), cpu_ms.back()});
-        if (std::chrono::duration<double>(t1 - cell0).count() > budget) break;
-      }
-      const double max_err = *std::max_element(err.begin(), err.end());
-      std::string stop_text;
-      for (const auto& [name, count] : stops)
-        stop_text += (stop_text.empty() ? "" : ", ") + name + " " + std::to_string(count);
-      std::printf(
-          "| %s | %zu | %.3g | %.3g | %.3g | %.3g | %.3g | %.1e | %.1e | %.0f | %.0f | %.0f | %d | "
-          "%s |\n",
-          cfg.name.c_str(), ms.size(), median(ms), quantile(ms, 0.99),
-          *std::max_element(ms.begin(), ms.end()), median(cpu_ms), quantile(cpu_ms, 0.99),
-          median(err), max_err, median(evals), median(calls), median(iters), fallbacks,
-          stop_text.c_str());
-      std::fflush(stdout);
-      out.push_back({{"set", set.name},
-                     {"method", cfg.name},
-                     {"pairs", ms.size()},
-                     {"median_ms", median(ms)},
-                     {"p99_ms", quantile(ms, 0.99)},
-                     {"max_ms", *std::max_element(ms.begin(), ms.end())},
-                     {"median_cpu_ms", median(cpu_ms)},
-                     {"p99_cpu_ms", quantile(cpu_ms, 0.99)},
-                     {"median_rel_err", median(err)},
-                     {"max_rel_err", max_err},
-                     {"median_alpha_evals", median(evals)},
-                     {"median_ipopt_calls", median(calls)},
-                     {"median_ipopt_iterations", median(iters)},
-                     {"fallbacks", fallbacks},
-                     {"stop_reasons", stops},
-                     {"points", points}});
+      const CellRow row = run_cell(set, cfg, sc, budget, verbose, ipopt);
+      row.print(cfg.name);
+      out.push_back(row.to_json(set.name, cfg.name));
     }
   }
   if (!json_path.empty()) {

@@ -27,6 +27,12 @@ void add_ci_options(CLI::App& app, CiOptions& o) {
   app.add_option("--html", o.html,
                  "also write a self-contained HTML page with a 3D view of every finding "
                  "(atomically; docs/report-format.md)");
+  app.add_option("--csv", o.csv,
+                 "also write CSV (RFC 4180): a row per pair that is not separated (atomically; "
+                 "docs/report-format.md)");
+  app.add_option("--bcf", o.bcf,
+                 "also write BCF 3.0 (a zip): a topic per finding that needs a person, with a "
+                 "viewpoint on it (atomically; docs/report-format.md)");
 }
 
 pd::ExtraOutputPaths extra_output_paths(const CLI::App& app, const CiOptions& o) {
@@ -35,5 +41,7 @@ pd::ExtraOutputPaths extra_output_paths(const CLI::App& app, const CiOptions& o)
   if (app.count("--sarif")) p.sarif = o.sarif;
   if (app.count("--html")) p.html = o.html;
   if (app.count("--write-suppressions")) p.write_suppressions = o.write_suppressions;
+  if (app.count("--csv")) p.csv = o.csv;
+  if (app.count("--bcf")) p.bcf = o.bcf;
   return p;
 }

@@ -10,7 +10,7 @@
 
 struct CiOptions {
   pd::ReviewArgs review;
-  std::string write_suppressions, junit, sarif, html;
+  std::string write_suppressions, junit, sarif, html, csv, bcf;
 };
 
 void add_ci_options(CLI::App& app, CiOptions& o);

@@ -325,57 +325,50 @@ std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& part
   return out;
 }
 
-}  // namespace
-
-void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
-                            std::vector<PairResult>& results, const RunOptions& options,
-                            const std::function<PairChecks(int, int)>& checks) {
-  std::vector<size_t> flagged;
-  for (size_t k = 0; k < pairs.size(); ++k) {
-    const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
-    if (needs_refinement(results[k], a, b)) flagged.push_back(k);
+// The steps of refine_nonconvex_pairs over its flagged pairs, each a method;
+// the state one step hands to the next is the members below.
+class Refinement {
+ public:
+  Refinement(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
+             std::vector<PairResult>& results, const RunOptions& options,
+             const std::function<PairChecks(int, int)>& checks)
+      : parts_(parts), pairs_(pairs), results_(results), options_(options), checks_(checks) {
+    for (size_t k = 0; k < pairs.size(); ++k)
+      if (needs_refinement(results[k], parts[pairs[k].first], parts[pairs[k].second]))
+        flagged_.push_back(k);
   }
-  if (flagged.empty()) return;
+  bool empty() const { return flagged_.empty(); }
 
   // 0. Pairs refined before with the same parts, placements and settings are
   // taken from the cache (batch/refine_cache.h): none of the steps below runs
   // for them. Their parts are still decomposed (from the decomposition cache)
   // when the pair needed pieces, so the report's part fields are the same.
-  std::vector<std::string> keys;
-  std::vector<std::pair<size_t, StoredRefinement>> hits =
-      take_cached(parts, pairs, results, options, checks, flagged, keys);
+  void take_from_cache() {
+    hits_ = take_cached(parts_, pairs_, results_, options_, checks_, flagged_, keys_);
+  }
 
   // 1. The surfaces as solids: do they meet, and how deep is the deepest vertex.
-  std::vector<int> used(parts.size(), 0);
-  for (size_t k : flagged) used[pairs[k].first] = used[pairs[k].second] = 1;
-  std::vector<std::unique_ptr<SolidDistance>> solids(parts.size());
-  std::vector<int> used_list;
-  for (size_t p = 0; p < parts.size(); ++p)
-    if (used[p]) used_list.push_back(static_cast<int>(p));
-  parallel_for(used_list.size(), options.jobs, [&](size_t n) {
-    try {  // once per part, shared by its pairs and threads
-      solids[used_list[n]] = std::make_unique<SolidDistance>(surface_mesh(parts[used_list[n]]));
-    } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
-    }
-  });
-  const auto mesh_of = [&](int p) { return solids[p] ? &solids[p]->mesh() : nullptr; };
-  // A clearance check, a part in pieces `decompose` or one without a surface
-  // keeps the convex pieces of a whole-part decomposition (steps 3 and 4);
-  // every other pair whose surfaces meet gets the overlap thickness (step 2).
-  const auto needs_pieces = [&](size_t n) {
-    const auto [a, b] = pairs[flagged[n]];
-    return checks(a, b).clearance.has_value() || parts[a].mode == Pieces::kDecompose ||
-           parts[b].mode == Pieces::kDecompose || !solids[a] || !solids[b];
-  };
-  std::vector<MeshVerdict> verdicts(flagged.size());
-  {
-    Progress progress(flagged.size(), options.quiet, "mesh tests");
-    parallel_for(flagged.size(), options.jobs, [&](size_t n) {
-      const auto [a, b] = pairs[flagged[n]];
+  void test_meshes() {
+    std::vector<int> used(parts_.size(), 0), used_list;
+    for (size_t k : flagged_) used[pairs_[k].first] = used[pairs_[k].second] = 1;
+    solids_.resize(parts_.size());
+    for (size_t p = 0; p < parts_.size(); ++p)
+      if (used[p]) used_list.push_back(static_cast<int>(p));
+    parallel_for(used_list.size(), options_.jobs, [&](size_t n) {
+      try {  // once per part, shared by its pairs and threads
+        solids_[used_list[n]] = std::make_unique<SolidDistance>(surface_mesh(parts_[used_list[n]]));
+      } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
+      }
+    });
+    const auto mesh_of = [&](int p) { return solids_[p] ? &solids_[p]->mesh() : nullptr; };
+    verdicts_.resize(flagged_.size());
+    Progress progress(flagged_.size(), options_.quiet, "mesh tests");
+    parallel_for(flagged_.size(), options_.jobs, [&](size_t n) {
+      const auto [a, b] = pairs_[flagged_[n]];
       try {
-        verdicts[n] = mesh_verdict(mesh_of(a), mesh_of(b), needs_pieces(n));
+        verdicts_[n] = mesh_verdict(mesh_of(a), mesh_of(b), needs_pieces(n));
       } catch (const std::exception&) {
-        verdicts[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
+        verdicts_[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
       }
       progress.tick();
     });
@@ -383,83 +376,128 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
   }
 
   // 2. Pairs whose surfaces meet: the overlap thickness where the parts meet.
-  std::vector<size_t> solve, thick;  // indices into flagged
-  for (size_t n = 0; n < flagged.size(); ++n) {
-    const auto [a, b] = pairs[flagged[n]];
-    const bool pieces = needs_pieces(n);
-    if (!verdicts[n].intersect && !checks(a, b).clearance) continue;
-    (pieces ? solve : thick).push_back(n);
-  }
-  std::vector<std::optional<ThicknessResult>> thickness(flagged.size());
-  std::vector<std::string> why_not(flagged.size());
-  {
-    Progress progress(thick.size(), options.quiet, "overlap thickness");
-    parallel_for(thick.size(), options.jobs, [&](size_t k) {
+  void measure_thicknesses() {
+    std::vector<size_t> thick;  // indices into flagged_
+    for (size_t n = 0; n < flagged_.size(); ++n) {
+      const auto [a, b] = pairs_[flagged_[n]];
+      if (!verdicts_[n].intersect && !checks_(a, b).clearance) continue;
+      (needs_pieces(n) ? solve_ : thick).push_back(n);
+    }
+    thickness_.resize(flagged_.size());
+    why_not_.resize(flagged_.size());
+    Progress progress(thick.size(), options_.quiet, "overlap thickness");
+    parallel_for(thick.size(), options_.jobs, [&](size_t k) {
       const size_t n = thick[k];
-      const auto [a, b] = pairs[flagged[n]];
-      thickness[n] = measure_thickness(*solids[a], *solids[b],
-                                       pair_tolerance_of(checks(a, b), options.tolerance),
-                                       results[flagged[n]], verdicts[n], why_not[n]);
+      const auto [a, b] = pairs_[flagged_[n]];
+      thickness_[n] = measure_thickness(*solids_[a], *solids_[b], tolerance(n),
+                                        results_[flagged_[n]], verdicts_[n], why_not_[n]);
       progress.tick();
     });
     progress.finish();
+    solids_.clear();
   }
-  solids.clear();
 
-  // 3. Decompose the refinable parts of the pairs that need pieces.
-  std::fill(used.begin(), used.end(), 0);
-  for (size_t n : solve) used[pairs[flagged[n]].first] = used[pairs[flagged[n]].second] = 1;
-  for (const auto& [k, hit] : hits)
-    if (hit.solved) used[pairs[k].first] = used[pairs[k].second] = 1;
-  std::vector<int> to_decompose;
-  for (size_t p = 0; p < parts.size(); ++p)
-    if (used[p] && parts[p].refinable() && !parts[p].decomposition)
-      to_decompose.push_back(static_cast<int>(p));
-  decompose_parts(parts, to_decompose, options);
+  // 3. Decompose the refinable parts of the pairs that need pieces, and 4.
+  // solve their piece pairs in the worker pool (as pieces-only parts).
+  void solve_piece_pairs() {
+    std::vector<int> used(parts_.size(), 0);
+    for (size_t n : solve_) used[pairs_[flagged_[n]].first] = used[pairs_[flagged_[n]].second] = 1;
+    for (const auto& [k, hit] : hits_)
+      if (hit.solved) used[pairs_[k].first] = used[pairs_[k].second] = 1;
+    std::vector<int> to_decompose;
+    for (size_t p = 0; p < parts_.size(); ++p)
+      if (used[p] && parts_[p].refinable() && !parts_[p].decomposition)
+        to_decompose.push_back(static_cast<int>(p));
+    decompose_parts(parts_, to_decompose, options_);
+    const std::vector<std::optional<Part>> piece_parts = pieces_only_parts(parts_, used);
+    piece_results_.resize(flagged_.size());
+    std::vector<size_t> which(solve_.size());
+    for (size_t k = 0; k < which.size(); ++k) which[k] = k;
+    auto job = [&](size_t k) {
+      const auto [a, b] = pairs_[flagged_[solve_[k]]];
+      return PairJob{a, b, &*piece_parts[a], &*piece_parts[b]};
+    };
+    solve_pairs_in_workers(
+        which, job, options_, checks_, "piece pairs",
+        [&](size_t k, PairResult r) { piece_results_[solve_[k]] = std::move(r); });
+  }
 
-  // 4. Piece pairs in the worker pool (the parts' pieces as pieces-only parts).
-  const std::vector<std::optional<Part>> piece_parts = pieces_only_parts(parts, used);
-  std::vector<std::optional<PairResult>> piece_results(flagged.size());
-  std::vector<size_t> which(solve.size());
-  for (size_t k = 0; k < which.size(); ++k) which[k] = k;
-  auto job = [&](size_t k) {
-    const auto [a, b] = pairs[flagged[solve[k]]];
-    return PairJob{a, b, &*piece_parts[a], &*piece_parts[b]};
-  };
-  solve_pairs_in_workers(which, job, options, checks, "piece pairs",
-                         [&](size_t k, PairResult r) { piece_results[solve[k]] = std::move(r); });
-
-  // 5. Decide.
-  bool warned = false;  // a cache that cannot be written is said once
-  for (size_t n = 0; n < flagged.size(); ++n) {
-    const auto [a, b] = pairs[flagged[n]];
-    const Part &pa = parts[a], &pb = parts[b];
-    const bool complete = (!pa.decomposition || pa.decomposition->complete) &&
-                          (!pb.decomposition || pb.decomposition->complete);
-    PairResult& r = results[flagged[n]];
-    const double tolerance = pair_tolerance_of(checks(a, b), options.tolerance);
-    r = thickness[n]
-            ? decide_thickness(r, verdicts[n], *thickness[n], tolerance, pair_size(pa, pb),
-                               why_not[n])
-            : decide_refined(r, verdicts[n], piece_results[n] ? &*piece_results[n] : nullptr,
-                             complete, tolerance, pair_size(pa, pb));
-    note_pair_tolerance(r, checks(a, b));
-    // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
-    if (!keys.empty() && r.status != Status::kError) {
-      const bool solved = std::find(solve.begin(), solve.end(), n) != solve.end();
-      const std::string why = write_cached_refinement(options.cache_dir, keys[n], {r, solved});
-      if (!why.empty() && options.on_warning && !warned) options.on_warning(why), warned = true;
+  // 5. Decide each pair (and store it in the cache), then put back the cached ones.
+  void decide() {
+    bool warned = false;  // a cache that cannot be written is said once
+    for (size_t n = 0; n < flagged_.size(); ++n) {
+      const auto [a, b] = pairs_[flagged_[n]];
+      const Part &pa = parts_[a], &pb = parts_[b];
+      const bool complete = (!pa.decomposition || pa.decomposition->complete) &&
+                            (!pb.decomposition || pb.decomposition->complete);
+      PairResult& r = results_[flagged_[n]];
+      r = thickness_[n]
+              ? decide_thickness(r, verdicts_[n], *thickness_[n], tolerance(n), pair_size(pa, pb),
+                                 why_not_[n])
+              : decide_refined(r, verdicts_[n], piece_results_[n] ? &*piece_results_[n] : nullptr,
+                               complete, tolerance(n), pair_size(pa, pb));
+      note_pair_tolerance(r, checks_(a, b));
+      // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
+      if (!keys_.empty() && r.status != Status::kError) {
+        const bool solved = std::find(solve_.begin(), solve_.end(), n) != solve_.end();
+        const std::string why = write_cached_refinement(options_.cache_dir, keys_[n], {r, solved});
+        if (!why.empty() && options_.on_warning && !warned) options_.on_warning(why), warned = true;
+      }
+      if (options_.on_pair) options_.on_pair(r, parts_);
     }
-    if (options.on_pair) options.on_pair(r, parts);
+    for (auto& [k, hit] : hits_) {
+      PairResult& r = results_[k];
+      hit.result.a = r.a;
+      hit.result.b = r.b;
+      r = std::move(hit.result);
+      note_pair_tolerance(r, checks_(r.a, r.b));
+      if (options_.on_pair) options_.on_pair(r, parts_);
+    }
   }
-  for (auto& [k, hit] : hits) {
-    PairResult& r = results[k];
-    hit.result.a = r.a;
-    hit.result.b = r.b;
-    r = std::move(hit.result);
-    note_pair_tolerance(r, checks(r.a, r.b));
-    if (options.on_pair) options.on_pair(r, parts);
+
+ private:
+  // A clearance check, a part in pieces `decompose` or one without a surface
+  // keeps the convex pieces of a whole-part decomposition (steps 3 and 4);
+  // every other pair whose surfaces meet gets the overlap thickness (step 2).
+  bool needs_pieces(size_t n) const {
+    const auto [a, b] = pairs_[flagged_[n]];
+    return checks_(a, b).clearance.has_value() || parts_[a].mode == Pieces::kDecompose ||
+           parts_[b].mode == Pieces::kDecompose || !solids_[a] || !solids_[b];
   }
+  double tolerance(size_t n) const {
+    const auto [a, b] = pairs_[flagged_[n]];
+    return pair_tolerance_of(checks_(a, b), options_.tolerance);
+  }
+
+  std::vector<Part>& parts_;
+  const std::vector<std::pair<int, int>>& pairs_;
+  std::vector<PairResult>& results_;
+  const RunOptions& options_;
+  const std::function<PairChecks(int, int)>& checks_;
+  std::vector<size_t> flagged_;  ///< indices into pairs_ of the pairs to refine
+  std::vector<std::string> keys_;
+  std::vector<std::pair<size_t, StoredRefinement>> hits_;
+  std::vector<std::unique_ptr<SolidDistance>> solids_;  ///< per part, steps 1–2
+  // Per flagged pair (index n into flagged_):
+  std::vector<MeshVerdict> verdicts_;
+  std::vector<size_t> solve_;  ///< the pairs whose pieces decide
+  std::vector<std::optional<ThicknessResult>> thickness_;
+  std::vector<std::string> why_not_;
+  std::vector<std::optional<PairResult>> piece_results_;
+};
+
+}  // namespace
+
+void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
+                            std::vector<PairResult>& results, const RunOptions& options,
+                            const std::function<PairChecks(int, int)>& checks) {
+  Refinement refinement(parts, pairs, results, options, checks);
+  if (refinement.empty()) return;
+  refinement.take_from_cache();
+  refinement.test_meshes();
+  refinement.measure_thicknesses();
+  refinement.solve_piece_pairs();
+  refinement.decide();
 }
 
 }  // namespace pd

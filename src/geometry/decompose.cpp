@@ -560,6 +560,104 @@ void merge_neighbours(Context& c, std::vector<Piece>& pieces, int samples) {
     if (live[i]) pieces.push_back(std::move(*all[i]));
 }
 
+// Pieces are computed in centred coordinates (the mesh's mean at the origin);
+// the caller gets them back in the mesh's own.
+Points uncentred(Points p, const Vec3& centre) {
+  p.colwise() += centre;
+  return p;
+}
+
+// The box around triangles `tris` of m, grown by `pad` on every side.
+Cell root_cell(const Mesh& m, const std::vector<int>& tris, double pad) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (int t : tris)
+    for (int k = 0; k < 3; ++k) {
+      lo = lo.cwiseMin(m.vertices.col(m.triangles(k, t)));
+      hi = hi.cwiseMax(m.vertices.col(m.triangles(k, t)));
+    }
+  Cell cell{{}, tris, 0};
+  for (int k = 0; k < 3; ++k) {
+    cell.planes.push_back({Vec3::Unit(k), hi[k] + pad});
+    cell.planes.push_back({-Vec3::Unit(k), -(lo[k] - pad)});
+  }
+  return cell;
+}
+
+// Root cells: one per shell when shells are apart (no enclosed voids, so no
+// shell lies inside another), else one for the whole mesh.
+std::deque<Cell> root_cells(const Context& c, const Convexity& whole, bool voids) {
+  const Mesh& m = c.m;
+  const double size = (m.vertices.rowwise().maxCoeff() - m.vertices.rowwise().minCoeff()).norm();
+  const double pad = 1e-6 * size + 4 * c.eps;  // no face lies in a root plane
+  std::deque<Cell> work;
+  if (whole.shells > 1 && !voids) {
+    for (const std::vector<int>& tris : shell_triangles(m)) work.push_back(root_cell(m, tris, pad));
+  } else {
+    std::vector<int> all(m.triangles.cols());
+    for (int t = 0; t < static_cast<int>(all.size()); ++t) all[t] = t;
+    work.push_back(root_cell(m, all, pad));
+  }
+  return work;
+}
+
+// Cuts the cells in `work` breadth first until each piece is within the
+// tolerance or a limit leaves it as it is: the piece count or the depth (then
+// `limit_hit`, when that piece is beyond the tolerance), or nothing cutting
+// it. Cells left when the time box or the work budget ran out are pieces as
+// they are (covering, not necessarily within the tolerance).
+std::vector<Piece> cut_cells(Context& c, std::deque<Cell> work, bool& limit_hit) {
+  const int full = tol::kDecomposeSamples;
+  std::vector<Piece> done;
+  while (!work.empty()) {
+    Cell cell = std::move(work.front());
+    work.pop_front();
+    Piece p = piece_of(c, cell, full);
+    if (p.points.cols() == 0) continue;
+    const bool limit = static_cast<int>(done.size() + work.size()) + 2 > tol::kDecomposeMaxPieces ||
+                       cell.depth >= tol::kDecomposeMaxDepth;
+    if (p.concavity.value <= c.tol || limit || c.stop()) {
+      limit_hit = limit_hit || (p.concavity.value > c.tol && limit);
+      done.push_back(std::move(p));
+      continue;
+    }
+    Plane cut{};
+    if (!reflex_cut(c, cell, p, cut) && !lump_cut(c, cell, p, cut) &&
+        !witness_cut(c, cell, p, cut)) {
+      done.push_back(std::move(p));  // nothing cuts it: stays concave (incomplete)
+      continue;
+    }
+    work.push_back(child(cell, p.tris, cut));
+    work.push_back(child(cell, p.tris, {-cut.n, -cut.d}));
+  }
+  for (Cell& cell : work) {
+    Piece p = piece_of(c, cell, 0);
+    if (p.points.cols()) done.push_back(std::move(p));
+  }
+  return done;
+}
+
+// Moves the pieces into `out` in the mesh's coordinates, with the largest
+// finite concavity (an unestimated piece's is infinite: it is left out of the
+// figure but not of the verdict). True when every piece is within `tol`.
+bool hand_over(std::vector<Piece>& done, const Vec3& centre, double tol, Decomposition& out) {
+  bool within = true;
+  for (Piece& p : done) {
+    within = within && p.concavity.value <= tol;
+    if (std::isfinite(p.concavity.value))
+      out.concavity = std::max(out.concavity, p.concavity.value);
+    out.pieces.push_back(uncentred(std::move(p.points), centre));
+  }
+  return within;
+}
+
+// Why a decomposition is not complete, the first reason that applies.
+const char* incomplete_note(const Context& c, bool limit_hit) {
+  if (c.timed_out()) return "time limit reached";
+  if (c.out_of_work()) return "work budget reached";
+  if (limit_hit) return "piece or depth limit reached";
+  return "a piece could not be cut within the tolerance";
+}
+
 }  // namespace
 
 Decomposition decompose_convex(const Mesh& mesh, double concavity_tol, double time_limit_seconds) {
@@ -576,14 +674,11 @@ Decomposition decompose_convex(const Mesh& mesh, double concavity_tol,
   };
   const Vec3 centre = mesh.vertices.rowwise().mean();
   Mesh m{mesh.vertices.colwise() - centre, mesh.triangles};
-  auto to_mesh = [&](Points p) {
-    p.colwise() += centre;
-    return p;
-  };
   const PreparedMesh part(m);
   const std::vector<Mesh> shells = mesh_shells(m);
   if (!part.closed()) {
-    for (const Mesh& s : shells) out.pieces.push_back(to_mesh(convex_hull(s.vertices).vertices));
+    for (const Mesh& s : shells)
+      out.pieces.push_back(uncentred(convex_hull(s.vertices).vertices, centre));
     out.note = "open mesh: one hull per shell";
     return finish();
   }
@@ -591,14 +686,13 @@ Decomposition decompose_convex(const Mesh& mesh, double concavity_tol,
   // mesh's estimate may stop at the tolerance.
   const Convexity whole = measure_convexity(m, concavity_tol, concavity_tol);
   if (whole.convex) {
-    out.pieces.push_back(to_mesh(convex_hull(m.vertices).vertices));
+    out.pieces.push_back(uncentred(convex_hull(m.vertices).vertices, centre));
     out.complete = true;
     out.concavity = whole.concavity.value;
     out.note = "convex";
     return finish();
   }
 
-  const double size = (m.vertices.rowwise().maxCoeff() - m.vertices.rowwise().minCoeff()).norm();
   // Enclosed voids exist only with nested shells; without, the interior grid
   // of the concavity estimate is skipped (missing volume 0).
   const bool voids = whole.nested_shells;
@@ -617,83 +711,15 @@ Decomposition decompose_convex(const Mesh& mesh, double concavity_tol,
       start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds)),
       limits.work};
 
-  // Root cells: one per shell when shells are apart, else one for the mesh.
-  std::deque<Cell> work;
-  auto root = [&](const std::vector<int>& tris) {
-    Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
-    for (int t : tris)
-      for (int k = 0; k < 3; ++k) {
-        lo = lo.cwiseMin(m.vertices.col(m.triangles(k, t)));
-        hi = hi.cwiseMax(m.vertices.col(m.triangles(k, t)));
-      }
-    const double pad = 1e-6 * size + 4 * c.eps;  // no face lies in a root plane
-    Cell cell{{}, tris, 0};
-    for (int k = 0; k < 3; ++k) {
-      cell.planes.push_back({Vec3::Unit(k), hi[k] + pad});
-      cell.planes.push_back({-Vec3::Unit(k), -(lo[k] - pad)});
-    }
-    work.push_back(cell);
-  };
-  if (whole.shells > 1 && !voids) {
-    for (const std::vector<int>& tris : shell_triangles(m)) root(tris);
-  } else {
-    std::vector<int> all(m.triangles.cols());
-    for (int t = 0; t < static_cast<int>(all.size()); ++t) all[t] = t;
-    root(all);
-  }
-
-  const int full = tol::kDecomposeSamples;
-  std::vector<Piece> done;
   bool limit_hit = false;
-  while (!work.empty()) {
-    Cell cell = std::move(work.front());
-    work.pop_front();
-    Piece p = piece_of(c, cell, full);
-    if (p.points.cols() == 0) continue;
-    const bool limit = static_cast<int>(done.size() + work.size()) + 2 > tol::kDecomposeMaxPieces ||
-                       cell.depth >= tol::kDecomposeMaxDepth;
-    if (p.concavity.value <= concavity_tol || limit || c.stop()) {
-      limit_hit = limit_hit || (p.concavity.value > concavity_tol && limit);
-      done.push_back(std::move(p));
-      continue;
-    }
-    Plane cut{};
-    if (!reflex_cut(c, cell, p, cut) && !lump_cut(c, cell, p, cut) &&
-        !witness_cut(c, cell, p, cut)) {
-      done.push_back(std::move(p));  // nothing cuts it: stays concave (incomplete)
-      continue;
-    }
-    work.push_back(child(cell, p.tris, cut));
-    work.push_back(child(cell, p.tris, {-cut.n, -cut.d}));
-  }
-  // Cells left when the time box or the work budget ran out are pieces as
-  // they are (covering, not necessarily within the tolerance).
-  for (Cell& cell : work) {
-    Piece p = piece_of(c, cell, 0);
-    if (p.points.cols()) done.push_back(std::move(p));
-  }
+  std::vector<Piece> done = cut_cells(c, root_cells(c, whole, voids), limit_hit);
   const bool stopped_early = c.stop();
-  if (!stopped_early) merge_neighbours(c, done, full);
+  if (!stopped_early) merge_neighbours(c, done, tol::kDecomposeSamples);
 
-  bool within = true;
-  for (Piece& p : done) {
-    within = within && p.concavity.value <= concavity_tol;
-    if (std::isfinite(p.concavity.value))
-      out.concavity = std::max(out.concavity, p.concavity.value);
-    out.pieces.push_back(to_mesh(std::move(p.points)));
-  }
+  const bool within = hand_over(done, centre, concavity_tol, out);
   out.complete = within && !stopped_early;
   out.work = limits.work - c.work_left;
-  if (!out.complete) {
-    if (c.timed_out())
-      out.note = "time limit reached";
-    else if (c.out_of_work())
-      out.note = "work budget reached";
-    else if (limit_hit)
-      out.note = "piece or depth limit reached";
-    else
-      out.note = "a piece could not be cut within the tolerance";
-  }
+  if (!out.complete) out.note = incomplete_note(c, limit_hit);
   return finish();
 }
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "geometry/convexity.h"
+#include "geometry/union_find.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -378,20 +379,14 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
         if (h->plane.at(p) > cap) return false;
     return true;
   };
-  std::vector<int> root(hole.size());
-  for (size_t i = 0; i < hole.size(); ++i) root[i] = static_cast<int>(i);
-  const auto find = [&](int i) {
-    while (root[i] != i) i = root[i] = root[root[i]];
-    return i;
-  };
+  UnionFind sets(hole.size());
   for (size_t i = 0; i < hole.size(); ++i)
     for (size_t j = i + 1; j < hole.size(); ++j)
-      if (outer(hole[i], hole[j]) && outer(hole[j], hole[i]))
-        root[find(static_cast<int>(i))] = find(static_cast<int>(j));
+      if (outer(hole[i], hole[j]) && outer(hole[j], hole[i])) sets.join(i, j);
   std::vector<std::vector<const PlaneGroup*>> out;
   std::vector<int> slot(hole.size(), -1);
   for (size_t i = 0; i < hole.size(); ++i) {
-    int& k = slot[find(static_cast<int>(i))];
+    int& k = slot[sets.find(i)];
     if (k < 0) k = static_cast<int>(out.size()), out.emplace_back();
     out[k].push_back(hole[i]);
   }

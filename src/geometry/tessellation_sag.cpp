@@ -5,7 +5,10 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <tuple>
+#include <utility>
 
+#include "geometry/union_find.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -20,6 +23,8 @@ constexpr double kParallelCreases = 0.8660254037844387;  // cos 30°
 struct Welded {
   Points v;
   std::vector<Tri> tris;
+  /// Corner k (taken mod 3, so k + 1 and k + 2 name the next ones) of triangle t.
+  Vec3 corner(long t, int k) const { return v.col(tris[t][k % 3]); }
 };
 
 // Vertices at the same coordinates become one (a sort, not a hash: the result
@@ -51,19 +56,6 @@ Welded weld(const Mesh& m) {
   }
   return w;
 }
-
-struct UnionFind {
-  std::vector<long> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0L); }
-  long find(long x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(long a, long b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 // One manifold edge between triangle t[0] (slot k[0], its vertices u → v) and
 // t[1] (slot k[1], v → u), with its exterior angle.
@@ -134,42 +126,45 @@ bool patch_sag(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& n, const
   return std::isfinite(hi) && std::isfinite(lo);
 }
 
-}  // namespace
+// The facets' geometry, computed once: every later pass reads it.
+struct Facets {
+  std::vector<Vec3> normal;  ///< unit; zero for a degenerate (zero-area) facet
+  std::vector<double> area;
+  std::vector<std::array<double, 3>>
+      corner_angle;  ///< weights of the facet in its corners' normals
+};
 
-TessellationSag measure_tessellation_sag(const Mesh& m, CoordinateStorage storage) {
-  TessellationSag out;
-  out.resolution = m.vertices.cols() == 0 ? 0.0
-                                          : coordinate_step(max_abs_coordinate(m.vertices),
-                                                            storage == CoordinateStorage::kFloat32);
-  const Welded w = weld(m);
+Facets facet_geometry(const Welded& w) {
   const long nt = static_cast<long>(w.tris.size());
-  if (nt == 0) return out;
-  const auto P = [&](long t, int k) -> Vec3 { return w.v.col(w.tris[t][k % 3]); };
-
-  // Facet normals, areas, corner angles.
-  std::vector<Vec3> normal(nt);
-  std::vector<double> area(nt);
-  std::vector<std::array<double, 3>> corner_angle(nt);
+  Facets f;
+  f.normal.resize(nt);
+  f.area.resize(nt);
+  f.corner_angle.resize(nt);
   for (long t = 0; t < nt; ++t) {
-    const Vec3 c = (P(t, 1) - P(t, 0)).cross(P(t, 2) - P(t, 0));
-    area[t] = 0.5 * c.norm();
-    normal[t] = area[t] > 0 ? Vec3(c / (2 * area[t])) : Vec3::Zero();
+    const Vec3 c = (w.corner(t, 1) - w.corner(t, 0)).cross(w.corner(t, 2) - w.corner(t, 0));
+    f.area[t] = 0.5 * c.norm();
+    f.normal[t] = f.area[t] > 0 ? Vec3(c / (2 * f.area[t])) : Vec3::Zero();
     for (int k = 0; k < 3; ++k) {
-      const Vec3 a = P(t, k + 1) - P(t, k), b = P(t, k + 2) - P(t, k);
-      corner_angle[t][k] = std::atan2(a.cross(b).norm(), a.dot(b));
+      const Vec3 a = w.corner(t, k + 1) - w.corner(t, k), b = w.corner(t, k + 2) - w.corner(t, k);
+      f.corner_angle[t][k] = std::atan2(a.cross(b).norm(), a.dot(b));
     }
   }
+  return f;
+}
 
-  // Edges: sorted (lower vertex, upper vertex, triangle, slot); a manifold edge
-  // is two consistently oriented triangles.
-  struct HalfEdge {
-    int lo, hi;
-    long t;
-    int k;
-    bool operator<(const HalfEdge& o) const {
-      return std::tie(lo, hi, t, k) < std::tie(o.lo, o.hi, o.t, o.k);
-    }
-  };
+// One side of an edge, keyed by its vertices lower first so that both sides
+// of an edge sort next to each other (then by triangle: a stable order).
+struct HalfEdge {
+  int lo, hi;
+  long t;
+  int k;
+  bool operator<(const HalfEdge& o) const {
+    return std::tie(lo, hi, t, k) < std::tie(o.lo, o.hi, o.t, o.k);
+  }
+};
+
+std::vector<HalfEdge> sorted_half_edges(const Welded& w) {
+  const long nt = static_cast<long>(w.tris.size());
   std::vector<HalfEdge> half;
   half.reserve(3 * nt);
   for (long t = 0; t < nt; ++t)
@@ -178,122 +173,196 @@ TessellationSag measure_tessellation_sag(const Mesh& m, CoordinateStorage storag
       half.push_back({std::min(u, v), std::max(u, v), t, k});
     }
   std::sort(half.begin(), half.end());
+  return half;
+}
+
+struct EdgeTable {
   std::vector<Edge> edges;
-  std::vector<std::array<long, 3>> edge_of(nt, {-1, -1, -1});  // per slot: its manifold edge
+  std::vector<std::array<long, 3>> edge_of;  ///< per facet slot: its manifold edge, or -1
+};
+
+// The manifold edges (two consistently oriented, non-degenerate facets) with
+// their angles; every other edge (boundary, non-manifold, inconsistent or
+// degenerate) is counted in `design_edges`, as it bounds a smooth region too.
+EdgeTable manifold_edges(const Welded& w, const Facets& f, long& design_edges) {
+  const std::vector<HalfEdge> half = sorted_half_edges(w);
+  EdgeTable out;
+  out.edge_of.assign(w.tris.size(), {-1, -1, -1});
   for (size_t s = 0; s < half.size();) {
     size_t e = s;
     while (e < half.size() && half[e].lo == half[s].lo && half[e].hi == half[s].hi) ++e;
     const HalfEdge &h0 = half[s], &h1 = half[s + 1 < e ? s + 1 : s];
     const bool manifold = e - s == 2 && w.tris[h0.t][h0.k] != w.tris[h1.t][h1.k];
-    if (manifold && area[h0.t] > 0 && area[h1.t] > 0) {
+    if (manifold && f.area[h0.t] > 0 && f.area[h1.t] > 0) {
       Edge edge{{h0.t, h1.t}, {h0.k, h1.k}};
-      const Vec3 &n0 = normal[h0.t], &n1 = normal[h1.t];
+      const Vec3 &n0 = f.normal[h0.t], &n1 = f.normal[h1.t];
       edge.angle = std::atan2(n0.cross(n1).norm(), n0.dot(n1));
       // Convex when the second facet's far corner lies below the first's plane.
-      edge.convex = n0.dot(P(h1.t, h1.k + 2) - P(h0.t, h0.k)) <= 0;
+      edge.convex = n0.dot(w.corner(h1.t, h1.k + 2) - w.corner(h0.t, h0.k)) <= 0;
       edge.smooth = edge.angle <= tol::kSagCreaseAngle;
-      edge_of[h0.t][h0.k] = edge_of[h1.t][h1.k] = static_cast<long>(edges.size());
-      edges.push_back(edge);
+      out.edge_of[h0.t][h0.k] = out.edge_of[h1.t][h1.k] = static_cast<long>(out.edges.size());
+      out.edges.push_back(edge);
     } else {
-      ++out.design_edges;  // boundary, non-manifold, inconsistent or degenerate
+      ++design_edges;
     }
     s = e;
   }
+  return out;
+}
 
-  // Smooth regions (facets) and smoothing groups of corners: corners meeting
-  // across a smooth edge share one normal.
-  UnionFind regions(static_cast<size_t>(nt)), corners(static_cast<size_t>(3 * nt));
+// Smooth regions (facets) and smoothing groups of corners: corners meeting
+// across a smooth edge share one normal, as the CAD surface has one there.
+struct Smoothing {
+  UnionFind regions;               ///< facets joined across smooth edges
+  UnionFind corners;               ///< corner 3t + k joined across smooth edges
+  std::vector<Vec3> group_normal;  ///< per corner group (at its root): angle-weighted sum
+};
+
+// Also counts the creases and the sharp (design) edges into `out`.
+Smoothing smooth_groups(const Facets& f, const std::vector<Edge>& edges, TessellationSag& out) {
+  const long nt = static_cast<long>(f.area.size());
+  Smoothing s{UnionFind(static_cast<size_t>(nt)), UnionFind(static_cast<size_t>(3 * nt)), {}};
   for (const Edge& e : edges) {
     if (!e.smooth) {
       ++out.design_edges;
       continue;
     }
     if (e.angle > 0) ++out.creases;
-    regions.join(e.t[0], e.t[1]);
+    s.regions.join(e.t[0], e.t[1]);
     // t0's slot k0 runs u → v, t1's slot k1 runs v → u.
-    corners.join(3 * e.t[0] + e.k[0], 3 * e.t[1] + (e.k[1] + 1) % 3);
-    corners.join(3 * e.t[0] + (e.k[0] + 1) % 3, 3 * e.t[1] + e.k[1]);
+    s.corners.join(3 * e.t[0] + e.k[0], 3 * e.t[1] + (e.k[1] + 1) % 3);
+    s.corners.join(3 * e.t[0] + (e.k[0] + 1) % 3, 3 * e.t[1] + e.k[1]);
   }
-  std::vector<Vec3> group_normal(3 * nt, Vec3::Zero());
+  s.group_normal.assign(3 * nt, Vec3::Zero());
   for (long t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k)
-      group_normal[corners.find(3 * t + k)] += corner_angle[t][k] * normal[t];
+      s.group_normal[s.corners.find(3 * t + k)] += f.corner_angle[t][k] * f.normal[t];
+  return s;
+}
 
-  // Per facet: the smaller of the crease and patch estimates, by sign.
-  std::vector<double> convex(nt, 0.0), concave(nt, 0.0);
+// Facet t's sag from the creases of its smooth edges, {convex, concave}.
+// Creases across different directions (a sphere's latitude and meridian) add
+// up; nearly parallel ones (a cone facet's two sides) bend the same
+// direction, and the larger stands for both.
+std::pair<double, double> crease_sag(const Welded& w, const Facets& f, const EdgeTable& table,
+                                     long t) {
+  struct Crease {
+    double sag;
+    Vec3 along;
+    bool convex;
+  };
+  std::vector<Crease> creases;
+  for (int k = 0; k < 3; ++k) {
+    const long e = table.edge_of[t][k];
+    if (e < 0) continue;  // a design edge: not a crease
+    const Edge& edge = table.edges[e];
+    if (!edge.smooth || edge.angle <= 0) continue;
+    const Vec3 along = w.corner(t, k + 1) - w.corner(t, k);
+    const double width = 2 * f.area[t] / along.norm();
+    creases.push_back({0.5 * width * std::tan(edge.angle / 4), along.normalized(), edge.convex});
+  }
+  std::sort(creases.begin(), creases.end(),
+            [](const Crease& a, const Crease& b) { return a.sag > b.sag; });
+  double convex = 0.0, concave = 0.0;
+  for (size_t i = 0; i < creases.size(); ++i) {
+    bool repeats = false;
+    for (size_t j = 0; j < i; ++j)
+      repeats |= creases[j].convex == creases[i].convex &&
+                 std::abs(creases[j].along.dot(creases[i].along)) > kParallelCreases;
+    if (!repeats) (creases[i].convex ? convex : concave) += creases[i].sag;
+  }
+  return {convex, concave};
+}
+
+struct FacetSags {
+  std::vector<double> convex, concave;
+};
+
+// Per facet: the smaller of the crease and patch estimates, by sign (see the
+// header: each is exact where the other is not). Facets flat around are 0.
+FacetSags facet_sags(const Welded& w, const Facets& f, const EdgeTable& table, Smoothing& s) {
+  const long nt = static_cast<long>(w.tris.size());
+  FacetSags out{std::vector<double>(nt, 0.0), std::vector<double>(nt, 0.0)};
   for (long t = 0; t < nt; ++t) {
-    if (area[t] <= 0) continue;
-    // Creases across different directions (a sphere's latitude and meridian)
-    // add up; nearly parallel ones (a cone facet's two sides) bend the same
-    // direction, and the larger stands for both.
-    struct Crease {
-      double sag;
-      Vec3 along;
-      bool convex;
-    };
-    std::vector<Crease> creases;
-    for (int k = 0; k < 3; ++k) {
-      const long e = edge_of[t][k];
-      if (e < 0 || !edges[e].smooth || edges[e].angle <= 0) continue;
-      const Vec3 along = P(t, k + 1) - P(t, k);
-      const double width = 2 * area[t] / along.norm();
-      creases.push_back(
-          {0.5 * width * std::tan(edges[e].angle / 4), along.normalized(), edges[e].convex});
-    }
-    std::sort(creases.begin(), creases.end(),
-              [](const Crease& a, const Crease& b) { return a.sag > b.sag; });
-    double crease_convex = 0.0, crease_concave = 0.0;
-    for (size_t i = 0; i < creases.size(); ++i) {
-      bool repeats = false;
-      for (size_t j = 0; j < i; ++j)
-        repeats |= creases[j].convex == creases[i].convex &&
-                   std::abs(creases[j].along.dot(creases[i].along)) > kParallelCreases;
-      if (!repeats) (creases[i].convex ? crease_convex : crease_concave) += creases[i].sag;
-    }
+    if (f.area[t] <= 0) continue;
+    const auto [crease_convex, crease_concave] = crease_sag(w, f, table, t);
     if (crease_convex == 0 && crease_concave == 0) continue;  // flat around it
     double patch_convex = INFINITY, patch_concave = INFINITY;
     std::array<Vec3, 3> n;
-    for (int k = 0; k < 3; ++k) n[k] = group_normal[corners.find(3 * t + k)].normalized();
-    if (!patch_sag({P(t, 0), P(t, 1), P(t, 2)}, n, normal[t], patch_convex, patch_concave))
+    for (int k = 0; k < 3; ++k) n[k] = s.group_normal[s.corners.find(3 * t + k)].normalized();
+    if (!patch_sag({w.corner(t, 0), w.corner(t, 1), w.corner(t, 2)}, n, f.normal[t], patch_convex,
+                   patch_concave))
       patch_convex = patch_concave = INFINITY;
-    convex[t] = std::min(crease_convex, patch_convex);
-    concave[t] = std::min(crease_concave, patch_concave);
+    out.convex[t] = std::min(crease_convex, patch_convex);
+    out.concave[t] = std::min(crease_concave, patch_concave);
   }
+  return out;
+}
 
-  // Features: one per region with a sag.
+// One feature per smooth region with a sag, in the order of its first facet
+// (so the list does not depend on the union-find's roots); returns each
+// region root's feature, -1 for none.
+std::vector<long> gather_features(const Welded& w, const FacetSags& sag, UnionFind& regions,
+                                  std::vector<SagFeature>& features) {
+  const long nt = static_cast<long>(w.tris.size());
   std::vector<long> feature_of(nt, -1);
-  std::vector<std::vector<double>> angles, radii;
   for (long t = 0; t < nt; ++t) {
-    if (convex[t] <= 0 && concave[t] <= 0) continue;
+    if (sag.convex[t] <= 0 && sag.concave[t] <= 0) continue;
     const long r = regions.find(t);
     if (feature_of[r] < 0) {
-      feature_of[r] = static_cast<long>(out.features.size());
+      feature_of[r] = static_cast<long>(features.size());
       SagFeature f;
-      f.box = {P(t, 0), P(t, 0)};
-      out.features.push_back(f);
-      angles.emplace_back();
-      radii.emplace_back();
+      f.box = {w.corner(t, 0), w.corner(t, 0)};
+      features.push_back(f);
     }
-    SagFeature& f = out.features[feature_of[r]];
-    for (int k = 0; k < 3; ++k) f.box = f.box.merged({P(t, k), P(t, k)});
-    f.convex = std::max(f.convex, convex[t]);
-    f.concave = std::max(f.concave, concave[t]);
+    SagFeature& f = features[feature_of[r]];
+    for (int k = 0; k < 3; ++k) f.box = f.box.merged({w.corner(t, k), w.corner(t, k)});
+    f.convex = std::max(f.convex, sag.convex[t]);
+    f.concave = std::max(f.concave, sag.concave[t]);
     ++f.facets;
   }
+  return feature_of;
+}
+
+// Each feature's radius and segments per turn, from the medians over its
+// creases (a median: a few odd creases at a region's seam do not move it).
+void describe_features(const Welded& w, const Facets& f, const std::vector<Edge>& edges,
+                       UnionFind& regions, const std::vector<long>& feature_of,
+                       std::vector<SagFeature>& features) {
+  std::vector<std::vector<double>> angles(features.size()), radii(features.size());
   for (const Edge& e : edges) {
     if (!e.smooth || e.angle <= 0) continue;
-    const long f = feature_of[regions.find(e.t[0])];
-    if (f < 0) continue;
-    const double length = (P(e.t[0], e.k[0] + 1) - P(e.t[0], e.k[0])).norm();
-    const double width = (area[e.t[0]] + area[e.t[1]]) / length;  // mean of both heights
-    angles[f].push_back(e.angle);
-    radii[f].push_back(width / (2 * std::sin(e.angle / 2)));
+    const long k = feature_of[regions.find(e.t[0])];
+    if (k < 0) continue;
+    const double length = (w.corner(e.t[0], e.k[0] + 1) - w.corner(e.t[0], e.k[0])).norm();
+    const double width = (f.area[e.t[0]] + f.area[e.t[1]]) / length;  // mean of both heights
+    angles[k].push_back(e.angle);
+    radii[k].push_back(width / (2 * std::sin(e.angle / 2)));
   }
-  for (size_t f = 0; f < out.features.size(); ++f) {
-    SagFeature& x = out.features[f];
-    x.radius = median(radii[f]);
-    const double a = median(angles[f]);
+  for (size_t k = 0; k < features.size(); ++k) {
+    SagFeature& x = features[k];
+    x.radius = median(radii[k]);
+    const double a = median(angles[k]);
     x.segments = a > 0 ? static_cast<int>(std::min(1e6, std::round(2 * M_PI / a))) : 0;
+  }
+}
+
+}  // namespace
+
+TessellationSag measure_tessellation_sag(const Mesh& m, CoordinateStorage storage) {
+  TessellationSag out;
+  out.resolution = m.vertices.cols() == 0 ? 0.0
+                                          : coordinate_step(max_abs_coordinate(m.vertices),
+                                                            storage == CoordinateStorage::kFloat32);
+  const Welded w = weld(m);
+  if (w.tris.empty()) return out;
+  const Facets facets = facet_geometry(w);
+  const EdgeTable table = manifold_edges(w, facets, out.design_edges);
+  Smoothing smoothing = smooth_groups(facets, table.edges, out);
+  const FacetSags sag = facet_sags(w, facets, table, smoothing);
+  const std::vector<long> feature_of = gather_features(w, sag, smoothing.regions, out.features);
+  describe_features(w, facets, table.edges, smoothing.regions, feature_of, out.features);
+  for (const SagFeature& x : out.features) {
     out.convex = std::max(out.convex, x.convex);
     out.concave = std::max(out.concave, x.concave);
   }

@@ -13,6 +13,8 @@ ExtraOutputs check_extra_outputs(const ExtraOutputPaths& paths) {
   if (out.html) check_html_assets();
   if (paths.write_suppressions)
     out.write_suppressions = check_output_file("--write-suppressions", *paths.write_suppressions);
+  if (paths.csv) out.csv = check_output_file("--csv", *paths.csv);
+  if (paths.bcf) out.bcf = check_output_file("--bcf", *paths.bcf);
   return out;
 }
 
@@ -24,6 +26,8 @@ void write_extra_outputs(const ExtraOutputs& out, const ReportInput& report,
   if (out.write_suppressions)
     write_output_file(*out.write_suppressions,
                       suppressions_to_write(report, report.review_options.today));
+  if (out.csv) write_output_file(*out.csv, render_csv(report));
+  if (out.bcf) write_output_file(*out.bcf, render_bcf(report));
 }
 
 }  // namespace pd

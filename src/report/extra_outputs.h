@@ -1,5 +1,5 @@
-// The files a run or a merge writes beside its report: --junit, --sarif, --html
-// and --write-suppressions. Every path is checked before the work (a bad one
+// The files a run or a merge writes beside its report: --junit, --sarif, --html,
+// --csv, --bcf and --write-suppressions. Every path is checked before the work (a bad one
 // fails in a second, not after hours of solving) and written after it, each
 // whole or not at all (output_file.h).
 #pragma once
@@ -16,10 +16,12 @@ namespace pd {
 /// The paths as given on the command line (nullopt = not asked for).
 struct ExtraOutputPaths {
   std::optional<std::string> junit, sarif, html, write_suppressions;
+  std::optional<std::string> csv, bcf;
 };
 
 struct ExtraOutputs {
   std::optional<OutputFile> junit, sarif, html, write_suppressions;
+  std::optional<OutputFile> csv, bcf;
 };
 
 /// Checks every path, and that the HTML page can be made when it is asked for.

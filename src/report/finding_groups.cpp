@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "geometry/union_find.h"
 #include "hash.h"
 #include "results/fingerprint.h"
 #include "tolerances.h"
@@ -12,19 +13,6 @@
 namespace pd {
 
 namespace {
-
-struct UnionFind {
-  std::vector<size_t> up;
-  explicit UnionFind(size_t n) : up(n) { std::iota(up.begin(), up.end(), size_t(0)); }
-  size_t find(size_t x) {
-    while (up[x] != x) x = up[x] = up[up[x]];
-    return x;
-  }
-  void join(size_t x, size_t y) {
-    x = find(x), y = find(y);
-    if (x != y) up[std::max(x, y)] = std::min(x, y);
-  }
-};
 
 // How far a member is from being clear: its depth, or for a clearance
 // violation the clearance it lacks.

@@ -172,7 +172,7 @@ std::vector<Entry> pair_entries(const std::vector<ShardReport>& shards,
   return entries;
 }
 
-// The parts (id, source, vertices, warnings, error; no geometry) and pairs of
+// The parts (id, source, vertices, warnings, error, box; no geometry) and pairs of
 // the merged run, for its review and the other writers.
 RunResult merged_run(const json& first, const std::vector<json>& parts,
                      const std::vector<Entry>& entries) {
@@ -185,6 +185,11 @@ RunResult merged_run(const json& first, const std::vector<json>& parts,
     p.vertex_count = j.value("vertices", 0L);
     if (j.contains("warnings")) p.warnings = j["warnings"].get<std::vector<std::string>>();
     if (j.contains("error")) p.error = j["error"].get<std::string>();
+    if (j.contains("box"))  // what the exports read of its geometry (--bcf)
+      for (int d = 0; d < 3; ++d) {
+        p.box.lo[d] = j["box"].at("min").at(d).get<double>();
+        p.box.hi[d] = j["box"].at("max").at(d).get<double>();
+      }
     run.parts.push_back(std::move(p));
   }
   for (const Entry& e : entries) {

@@ -37,7 +37,7 @@ struct Merged {
   nlohmann::ordered_json doc;  ///< the report, as docs/report-format.md
   std::string summary_line;    ///< for stderr
   ReportContext context;       ///< scene, units, tolerance
-  RunResult run;  ///< parts (id, source, vertices, warnings, error; no geometry) and pairs
+  RunResult run;  ///< parts (id, source, vertices, warnings, error, box; no geometry) and pairs
   ReviewOptions review_options;  ///< the caller's, with the report's tolerance and pair list
   Review review;                 ///< its exit_code is the merge's: as one run's
   /// The reports' expected-contact rules, which review_options points to.

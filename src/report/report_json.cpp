@@ -99,6 +99,9 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
               {"pieces", p.decomposition ? p.decomposition->pieces.size() : p.pieces.size()},
               {"warnings", p.warnings}};
     if (p.resolution) j["resolution"] = *p.resolution;
+    if (!p.error)  // where the part is: exports aim at it (--bcf), also after a merge
+      j["box"] = {{"min", {p.box.lo.x(), p.box.lo.y(), p.box.lo.z()}},
+                  {"max", {p.box.hi.x(), p.box.hi.y(), p.box.hi.z()}}};
     if (k < r.part_hashes.size()) j["content_hash"] = r.part_hashes[k];
     if (p.convex) j["convex"] = *p.convex;
     if (p.sag) {

@@ -39,7 +39,9 @@ std::optional<ShardSpec> resolve_shard(const CheckArgs& a,
       {"--write-suppressions", a.extra.write_suppressions.has_value()},
       {"--junit", a.extra.junit.has_value()},
       {"--sarif", a.extra.sarif.has_value()},
-      {"--html", a.extra.html.has_value()}};
+      {"--html", a.extra.html.has_value()},
+      {"--csv", a.extra.csv.has_value()},
+      {"--bcf", a.extra.bcf.has_value()}};
   for (const auto& [option, given] : whole_run)
     if (given)
       throw ShardError(std::string("--shard: ") + option +

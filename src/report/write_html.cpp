@@ -146,6 +146,172 @@ double depth_of(const json& p) {
   return p.contains("depth") ? p["depth"].get<double>() : 0.0;
 }
 
+// Findings: every pair that is not separated, interference first, deeper first.
+std::vector<const json*> sorted_findings(const json& report) {
+  std::vector<const json*> findings;
+  if (report.contains("pairs"))
+    for (const json& p : report["pairs"])
+      if (p.value("status", "") != "separated") findings.push_back(&p);
+  std::stable_sort(findings.begin(), findings.end(), [](const json* x, const json* y) {
+    const int rx = status_rank(x->value("status", "")), ry = status_rank(y->value("status", ""));
+    return rx != ry ? rx < ry : depth_of(*x) > depth_of(*y);
+  });
+  return findings;
+}
+
+// A finding's row of the table: the report's keys the page shows, and its sentence.
+json finding_row(const json& p, const json& report) {
+  json row = {{"a", p.value("a", "")},
+              {"b", p.value("b", "")},
+              {"fingerprint", p.value("fingerprint", "")},
+              {"status", p.value("status", "")}};
+  for (const char* key :
+       {"depth", "direction", "margin", "depth_source", "pieces", "confirmed", "error",
+        "baseline_state", "suppressed", "warnings", "hull_depth", "depth_bounds", "distance",
+        "clearance", "motion", "at", "reason", "group"})
+    if (p.contains(key)) row[key] = p[key];
+  if (row.contains("motion")) row["motion"].erase("series");
+  row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));
+  return row;
+}
+
+// The page's geometry: each part's mesh once, the overlaps, the context boxes,
+// within the page's triangle budget (tol::kHtmlPageTriangles).
+class PageGeometry {
+ public:
+  explicit PageGeometry(const std::vector<Part>& parts) : parts_(parts) {
+    for (const Part& p : parts) by_id_.emplace(p.id, &p);
+  }
+  bool spent() const { return budget_ == 0; }
+
+  // The view of finding p: its parts' meshes, the overlap of what its depth is
+  // measured on, and the context around it.
+  json view_of(const json& p) {
+    const std::string a = p.value("a", ""), b = p.value("b", "");
+    json view = {{"a", mesh_of_part(a)}, {"b", mesh_of_part(b)}};
+    const Part *pa = usable(a), *pb = usable(b);
+    if (!pa || !pb) return view;
+    if (depth_of(p) > 0) add_overlap(p, *pa, *pb, view);
+    view["context"] = context_of(*pa, *pb);
+    return view;
+  }
+
+  json meshes = json::array(), boxes = json::array();
+
+ private:
+  const Part* usable(const std::string& id) const {
+    const auto it = by_id_.find(id);
+    return it == by_id_.end() || it->second->error ? nullptr : it->second;
+  }
+
+  json add_mesh(const std::string& label, const WebMesh& m) {
+    if (m.triangles.empty()) return nullptr;
+    budget_ -= std::min(budget_, m.triangles.size());
+    meshes.push_back(mesh_json(label, m));
+    return static_cast<int>(meshes.size()) - 1;
+  }
+
+  json mesh_of_part(const std::string& id) {
+    if (auto it = part_mesh_.find(id); it != part_mesh_.end())
+      return it->second < 0 ? json(nullptr) : json(it->second);
+    const auto found = by_id_.find(id);
+    json index = nullptr;
+    if (found != by_id_.end())
+      index = add_mesh(id, part_web_mesh(*found->second, tol::kHtmlPartTriangles));
+    part_mesh_[id] = index.is_null() ? -1 : index.get<int>();
+    return index;
+  }
+
+  // What the depth is measured on: the realising pieces when the report names
+  // them and the parts hold them, else the parts' hulls.
+  void add_overlap(const json& p, const Part& pa, const Part& pb, json& view) {
+    const Hull *ha = nullptr, *hb = nullptr;
+    if (p.contains("pieces") && p["pieces"].is_array() && p["pieces"].size() == 2 &&
+        p["pieces"][0].is_number_integer() && p["pieces"][1].is_number_integer()) {
+      ha = realising_piece(pa, p["pieces"][0].get<int>());
+      hb = realising_piece(pb, p["pieces"][1].get<int>());
+      // A part of one piece is its own realising piece: drawn once, as the part.
+      if (ha && hb && piece_count(pa) > 1)
+        view["piece_a"] = add_mesh("piece", hull_web_mesh(ha->vertices, tol::kHtmlPartTriangles));
+      if (ha && hb && piece_count(pb) > 1)
+        view["piece_b"] = add_mesh("piece", hull_web_mesh(hb->vertices, tol::kHtmlPartTriangles));
+    }
+    const bool on_pieces = ha && hb;
+    const auto overlap =
+        overlap_web_mesh(on_pieces ? ha->vertices : part_vertices(pa),
+                         on_pieces ? hb->vertices : part_vertices(pb), tol::kHtmlPartTriangles);
+    if (overlap) {
+      view["overlap"] = add_mesh("overlap", *overlap);
+      view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";
+    }
+  }
+
+  // The rest of the assembly around a pair, faint in its view: the boxes of the
+  // parts whose boxes meet the pair's box grown by half its diagonal, the
+  // kHtmlContextParts nearest, each box stored once.
+  json context_of(const Part& a, const Part& b) {
+    const Aabb pair = a.box.merged(b.box);
+    const Aabb near = pair.inflated(0.5 * (pair.hi - pair.lo).norm());
+    const Vec3 centre = (pair.lo + pair.hi) / 2;
+    std::vector<std::pair<double, const Part*>> found;
+    for (const Part& p : parts_)
+      if (&p != &a && &p != &b && !p.error && p.box.overlaps(near))
+        found.push_back({((p.box.lo + p.box.hi) / 2 - centre).squaredNorm(), &p});
+    const size_t keep = std::min(found.size(), tol::kHtmlContextParts);
+    std::partial_sort(found.begin(), found.begin() + static_cast<long>(keep), found.end());
+    json ids = json::array();
+    for (size_t k = 0; k < keep; ++k) {
+      const Part* p = found[k].second;
+      auto [it, added] = box_index_.emplace(p, static_cast<int>(boxes.size()));
+      if (added)
+        boxes.push_back({p->id,
+                         {static_cast<float>(p->box.lo.x()), static_cast<float>(p->box.lo.y()),
+                          static_cast<float>(p->box.lo.z()), static_cast<float>(p->box.hi.x()),
+                          static_cast<float>(p->box.hi.y()), static_cast<float>(p->box.hi.z())}});
+      ids.push_back(it->second);
+    }
+    return ids;
+  }
+
+  const std::vector<Part>& parts_;
+  std::map<std::string, const Part*> by_id_;
+  std::map<std::string, int> part_mesh_;  ///< part id → index in meshes (−1: none)
+  std::map<const Part*, int> box_index_;
+  size_t budget_ = tol::kHtmlPageTriangles;
+};
+
+json part_errors_of(const json& report) {
+  json part_errors = json::array();
+  if (report.contains("parts"))
+    for (const json& p : report["parts"])
+      if (p.contains("error")) part_errors.push_back({{"id", p["id"]}, {"error", p["error"]}});
+  return part_errors;
+}
+
+// What the page's script reads: the report's summary, the rows and the geometry.
+json page_data(const json& report, json rows, PageGeometry& geometry,
+               const std::vector<std::string>& notes) {
+  json data = {
+      {"tool", report.value("tool", json::object())},
+      {"scene", report.value("scene", "")},
+      {"units", report.value("units", "")},
+      {"tolerance", report.value("tolerance", 0.0)},
+      {"method", report.value("method", json::object())},
+      {"seconds", report.value("seconds", 0.0)},
+      {"summary", report.value("summary", json::object())},
+      {"findings", std::move(rows)},
+      {"meshes", std::move(geometry.meshes)},
+      {"boxes", std::move(geometry.boxes)},
+      {"part_errors", part_errors_of(report)},
+      {"notes", notes},
+      {"caps",
+       {{"part_triangles", tol::kHtmlPartTriangles}, {"page_triangles", tol::kHtmlPageTriangles}}}};
+  if (report.contains("stage_seconds")) data["stage_seconds"] = report["stage_seconds"];
+  if (report.contains("groups")) data["groups"] = report["groups"];
+  if (report.contains("baseline")) data["baseline_file"] = report["baseline"].value("file", "");
+  return data;
+}
+
 }  // namespace
 
 void check_html_assets() {
@@ -156,149 +322,23 @@ std::string render_html(const json& report, const std::vector<Part>& parts,
                         const std::vector<std::string>& notes_in) {
   std::vector<Asset> assets;
   for (const auto& path : asset_paths()) assets.push_back(read_asset(path));
-
-  // Findings: every pair that is not separated, interference first, deeper first.
-  std::vector<const json*> findings;
-  if (report.contains("pairs"))
-    for (const json& p : report["pairs"])
-      if (p.value("status", "") != "separated") findings.push_back(&p);
-  std::stable_sort(findings.begin(), findings.end(), [](const json* x, const json* y) {
-    const int rx = status_rank(x->value("status", "")), ry = status_rank(y->value("status", ""));
-    return rx != ry ? rx < ry : depth_of(*x) > depth_of(*y);
-  });
-
-  std::map<std::string, const Part*> by_id;
-  for (const Part& p : parts) by_id.emplace(p.id, &p);
-  std::vector<std::string> notes = notes_in;
-  json meshes = json::array(), rows = json::array();
-  std::map<std::string, int> part_mesh;  // part id → index in meshes (−1: none)
-  size_t budget = tol::kHtmlPageTriangles, skipped = 0;
-  auto add_mesh = [&](const std::string& label, const WebMesh& m) -> json {
-    if (m.triangles.empty()) return nullptr;
-    budget -= std::min(budget, m.triangles.size());
-    meshes.push_back(mesh_json(label, m));
-    return static_cast<int>(meshes.size()) - 1;
-  };
-  auto mesh_of_part = [&](const std::string& id) -> json {
-    if (auto it = part_mesh.find(id); it != part_mesh.end())
-      return it->second < 0 ? json(nullptr) : json(it->second);
-    const auto found = by_id.find(id);
-    json index = nullptr;
-    if (found != by_id.end())
-      index = add_mesh(id, part_web_mesh(*found->second, tol::kHtmlPartTriangles));
-    part_mesh[id] = index.is_null() ? -1 : index.get<int>();
-    return index;
-  };
-
-  // The rest of the assembly around a pair, faint in its view: the boxes of the
-  // parts whose boxes meet the pair's box grown by half its diagonal, the
-  // kHtmlContextParts nearest, each box stored once.
-  json boxes = json::array();
-  std::map<const Part*, int> box_index;
-  auto context_of = [&](const Part& a, const Part& b) {
-    const Aabb pair = a.box.merged(b.box);
-    const Aabb near = pair.inflated(0.5 * (pair.hi - pair.lo).norm());
-    const Vec3 centre = (pair.lo + pair.hi) / 2;
-    std::vector<std::pair<double, const Part*>> found;
-    for (const Part& p : parts)
-      if (&p != &a && &p != &b && !p.error && p.box.overlaps(near))
-        found.push_back({((p.box.lo + p.box.hi) / 2 - centre).squaredNorm(), &p});
-    const size_t keep = std::min(found.size(), tol::kHtmlContextParts);
-    std::partial_sort(found.begin(), found.begin() + static_cast<long>(keep), found.end());
-    json ids = json::array();
-    for (size_t k = 0; k < keep; ++k) {
-      const Part* p = found[k].second;
-      auto [it, added] = box_index.emplace(p, static_cast<int>(boxes.size()));
-      if (added)
-        boxes.push_back({p->id,
-                         {static_cast<float>(p->box.lo.x()), static_cast<float>(p->box.lo.y()),
-                          static_cast<float>(p->box.lo.z()), static_cast<float>(p->box.hi.x()),
-                          static_cast<float>(p->box.hi.y()), static_cast<float>(p->box.hi.z())}});
-      ids.push_back(it->second);
-    }
-    return ids;
-  };
-
-  for (const json* pp : findings) {
-    const json& p = *pp;
-    json row = {{"a", p.value("a", "")},
-                {"b", p.value("b", "")},
-                {"fingerprint", p.value("fingerprint", "")},
-                {"status", p.value("status", "")}};
-    for (const char* key :
-         {"depth", "direction", "margin", "depth_source", "pieces", "confirmed", "error",
-          "baseline_state", "suppressed", "warnings", "hull_depth", "depth_bounds", "distance",
-          "clearance", "motion", "at", "reason", "group"})
-      if (p.contains(key)) row[key] = p[key];
-    if (row.contains("motion")) row["motion"].erase("series");
-    row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));
-    if (budget == 0) {
-      ++skipped;
-      row["view"] = nullptr;
-      rows.push_back(row);
-      continue;
-    }
-    json view = {{"a", mesh_of_part(row["a"])}, {"b", mesh_of_part(row["b"])}};
-    const auto pa = by_id.find(row["a"]), pb = by_id.find(row["b"]);
-    if (pa != by_id.end() && pb != by_id.end() && !pa->second->error && !pb->second->error &&
-        depth_of(p) > 0) {
-      // What the depth is measured on: the realising pieces when the report names
-      // them and the parts hold them, else the parts' hulls.
-      const Hull *ha = nullptr, *hb = nullptr;
-      if (p.contains("pieces") && p["pieces"].is_array() && p["pieces"].size() == 2 &&
-          p["pieces"][0].is_number_integer() && p["pieces"][1].is_number_integer()) {
-        ha = realising_piece(*pa->second, p["pieces"][0].get<int>());
-        hb = realising_piece(*pb->second, p["pieces"][1].get<int>());
-        // A part of one piece is its own realising piece: drawn once, as the part.
-        if (ha && hb && piece_count(*pa->second) > 1)
-          view["piece_a"] = add_mesh("piece", hull_web_mesh(ha->vertices, tol::kHtmlPartTriangles));
-        if (ha && hb && piece_count(*pb->second) > 1)
-          view["piece_b"] = add_mesh("piece", hull_web_mesh(hb->vertices, tol::kHtmlPartTriangles));
-      }
-      const bool on_pieces = ha && hb;
-      const auto overlap = overlap_web_mesh(on_pieces ? ha->vertices : part_vertices(*pa->second),
-                                            on_pieces ? hb->vertices : part_vertices(*pb->second),
-                                            tol::kHtmlPartTriangles);
-      if (overlap) {
-        view["overlap"] = add_mesh("overlap", *overlap);
-        view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";
-      }
-    }
-    if (pa != by_id.end() && pb != by_id.end() && !pa->second->error && !pb->second->error)
-      view["context"] = context_of(*pa->second, *pb->second);
-    row["view"] = view;
-    rows.push_back(row);
+  PageGeometry geometry(parts);
+  json rows = json::array();
+  size_t skipped = 0;
+  for (const json* p : sorted_findings(report)) {
+    json row = finding_row(*p, report);
+    if (geometry.spent()) ++skipped;
+    row["view"] = geometry.spent() ? json(nullptr) : geometry.view_of(*p);
+    rows.push_back(std::move(row));
   }
+  std::vector<std::string> notes = notes_in;
   if (skipped)
     notes.push_back(std::to_string(skipped) +
                     " findings have no 3D view: the page's geometry "
                     "budget (" +
                     std::to_string(tol::kHtmlPageTriangles) +
                     " triangles) went to the findings listed first");
-  json part_errors = json::array();
-  if (report.contains("parts"))
-    for (const json& p : report["parts"])
-      if (p.contains("error")) part_errors.push_back({{"id", p["id"]}, {"error", p["error"]}});
-
-  json data = {
-      {"tool", report.value("tool", json::object())},
-      {"scene", report.value("scene", "")},
-      {"units", report.value("units", "")},
-      {"tolerance", report.value("tolerance", 0.0)},
-      {"method", report.value("method", json::object())},
-      {"seconds", report.value("seconds", 0.0)},
-      {"summary", report.value("summary", json::object())},
-      {"findings", rows},
-      {"meshes", meshes},
-      {"boxes", boxes},
-      {"part_errors", part_errors},
-      {"notes", notes},
-      {"caps",
-       {{"part_triangles", tol::kHtmlPartTriangles}, {"page_triangles", tol::kHtmlPageTriangles}}}};
-  if (report.contains("stage_seconds")) data["stage_seconds"] = report["stage_seconds"];
-  if (report.contains("groups")) data["groups"] = report["groups"];
-  if (report.contains("baseline")) data["baseline_file"] = report["baseline"].value("file", "");
-
+  const json data = page_data(report, std::move(rows), geometry, notes);
   const std::string title = "pdcheck: " + report.value("scene", std::string("report"));
   return fill_template(kHtmlPage,
                        {{"TITLE", markup_escape(title)},

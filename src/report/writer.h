@@ -37,5 +37,9 @@ std::string render_jsonl(const ReportInput& in);                // write_jsonl.c
 std::string jsonl_tail(const ReportInput& in);    // write_jsonl.cpp
 std::string render_junit(const ReportInput& in);  // write_junit.cpp
 std::string render_sarif(const ReportInput& in);  // write_sarif.cpp
+/// --csv: a row per pair that is not separated (RFC 4180).
+std::string render_csv(const ReportInput& in);  // write_csv.cpp
+/// --bcf: a BCF 3.0 zip, a topic per finding that needs a person (bcf_topics.h).
+std::string render_bcf(const ReportInput& in);  // write_bcf.cpp
 
 }  // namespace pd

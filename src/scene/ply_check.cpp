@@ -269,20 +269,75 @@ void walk_ascii(std::string_view bytes, size_t pos, std::vector<Element>& elemen
   }
 }
 
-}  // namespace
-
-bool looks_like_ply(std::string_view bytes) {
-  return bytes.size() >= 4 && bytes.substr(0, 3) == "ply" && (bytes[3] == '\n' || bytes[3] == '\r');
-}
-
-PlyFile check_ply(std::string_view bytes) {
-  if (!looks_like_ply(bytes)) fail("file does not start with the line \"ply\"");
-  const size_t data = header_end(bytes);
+// What the header says, and what the rewrite for assimp needs of it.
+struct Header {
   std::vector<Element> elements;
   std::optional<Format> format;
   std::string format_line;
-  PlyFile out;
   bool skipped = false;  // an unknown header line: assimp gets the header without it
+};
+
+Format format_of(const std::vector<std::string_view>& w, const std::string& at) {
+  if (w.size() != 3) fail(at + "expected \"format <ascii|binary_…> 1.0\"");
+  if (w[1] == "ascii") return Format::kAscii;
+  if (w[1] == "binary_little_endian") return Format::kLittle;
+  if (w[1] == "binary_big_endian") return Format::kBig;
+  fail(at + "unknown format " + quoted(w[1]));
+}
+
+Element element_of(const std::vector<std::string_view>& w, std::string_view line,
+                   const std::string& at) {
+  std::uint64_t n = 0;
+  if (w.size() != 3 ||
+      std::from_chars(w[2].data(), w[2].data() + w[2].size(), n).ptr != w[2].data() + w[2].size())
+    fail(at + "expected \"element <name> <count>\"");
+  if (n > std::uint64_t(INT32_MAX)) fail(at + "element count " + quoted(w[2]) + " is too large");
+  return {std::string(w[1]), n, {}, {std::string(line)}, 0, 0};
+}
+
+Property property_of(const std::vector<std::string_view>& w, const std::string& at) {
+  Property p;
+  if (w.size() == 5 && w[1] == "list") {
+    p.count = type_of(w[2]);
+    p.type = type_of(w[3]);
+    p.name = w[4];
+    if (!p.count.size) fail(at + "unknown property type " + quoted(w[2]));
+    if (p.count.kind == Kind::kFloat)
+      fail(at + "a list length must have an integer type, not " + quoted(w[2]));
+    if (!p.type.size) fail(at + "unknown property type " + quoted(w[3]));
+  } else if (w.size() == 3) {
+    p.type = type_of(w[1]);
+    p.name = w[2];
+    if (!p.type.size) fail(at + "unknown property type " + quoted(w[1]));
+  } else {
+    fail(at + "expected \"property <type> <name>\" or \"property list <type> <type> <name>\"");
+  }
+  return p;
+}
+
+// assimp skips a header line it does not know (Blender 2.4's exporter wrote
+// "Created by Blender3D 247 - …" without `comment`); so does this check, with
+// a warning. The line is left out of what assimp gets: among an element's
+// properties it would end assimp's property list there.
+void skip_unknown_line(const std::vector<std::string_view>& w, std::string_view line,
+                       const std::string& at, Header& h, std::vector<std::string>& warnings) {
+  if (!text_line(line)) fail(at + "unknown line " + quoted(line) + " is not text");
+  // Only before the first element, where exporters put their free text.
+  // Among elements the rewrite would hand assimp a header it was never
+  // fuzzed on, and fuzzing found assimp 5.2.5 corrupting its heap on
+  // such rewritten headers (duplicate elements after the skipped line).
+  if (!h.elements.empty())
+    fail(at + "unknown keyword " + quoted(w[0]) +
+         " after the first element (only before it is a free-text line skipped)");
+  warnings.push_back("PLY " + at + "unknown line " + quoted(line) +
+                     " skipped (neither comment, element nor property)");
+  h.skipped = true;
+}
+
+/// The header's lines from the second (after "ply") up to `data`, each
+/// checked as it comes, so an error names the first bad line.
+Header parse_header(std::string_view bytes, size_t data, std::vector<std::string>& warnings) {
+  Header h;
   size_t pos = bytes.find('\n') + 1;
   for (int line_no = 2; pos < data; ++line_no) {
     size_t eol = bytes.find('\n', pos);
@@ -295,82 +350,42 @@ PlyFile check_ply(std::string_view bytes) {
     if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "end_header") break;
     if (w[0] == "format") {
-      if (w.size() != 3) fail(at + "expected \"format <ascii|binary_…> 1.0\"");
-      if (w[1] == "ascii")
-        format = Format::kAscii;
-      else if (w[1] == "binary_little_endian")
-        format = Format::kLittle;
-      else if (w[1] == "binary_big_endian")
-        format = Format::kBig;
-      else
-        fail(at + "unknown format " + quoted(w[1]));
-      format_line = std::string(line);
+      h.format = format_of(w, at);
+      h.format_line = std::string(line);
     } else if (w[0] == "element") {
-      std::uint64_t n = 0;
-      if (w.size() != 3 || std::from_chars(w[2].data(), w[2].data() + w[2].size(), n).ptr !=
-                               w[2].data() + w[2].size())
-        fail(at + "expected \"element <name> <count>\"");
-      if (n > std::uint64_t(INT32_MAX))
-        fail(at + "element count " + quoted(w[2]) + " is too large");
-      elements.push_back({std::string(w[1]), n, {}, {std::string(line)}, 0, 0});
+      h.elements.push_back(element_of(w, line, at));
     } else if (w[0] == "property") {
-      if (elements.empty()) fail(at + "property before any element");
-      Property p;
-      if (w.size() == 5 && w[1] == "list") {
-        p.count = type_of(w[2]);
-        p.type = type_of(w[3]);
-        p.name = w[4];
-        if (!p.count.size) fail(at + "unknown property type " + quoted(w[2]));
-        if (p.count.kind == Kind::kFloat)
-          fail(at + "a list length must have an integer type, not " + quoted(w[2]));
-        if (!p.type.size) fail(at + "unknown property type " + quoted(w[3]));
-      } else if (w.size() == 3) {
-        p.type = type_of(w[1]);
-        p.name = w[2];
-        if (!p.type.size) fail(at + "unknown property type " + quoted(w[1]));
-      } else {
-        fail(at + "expected \"property <type> <name>\" or \"property list <type> <type> <name>\"");
-      }
-      elements.back().properties.push_back(p);
-      elements.back().lines.emplace_back(line);
+      if (h.elements.empty()) fail(at + "property before any element");
+      h.elements.back().properties.push_back(property_of(w, at));
+      h.elements.back().lines.emplace_back(line);
     } else {
-      // assimp skips a header line it does not know (Blender 2.4's exporter
-      // wrote "Created by Blender3D 247 - …" without `comment`); so does this
-      // check, with a warning. The line is left out of what assimp gets: among
-      // an element's properties it would end assimp's property list there.
-      if (!text_line(line)) fail(at + "unknown line " + quoted(line) + " is not text");
-      // Only before the first element, where exporters put their free text.
-      // Among elements the rewrite would hand assimp a header it was never
-      // fuzzed on, and fuzzing found assimp 5.2.5 corrupting its heap on
-      // such rewritten headers (duplicate elements after the skipped line).
-      if (!elements.empty())
-        fail(at + "unknown keyword " + quoted(w[0]) +
-             " after the first element (only before it is a free-text line skipped)");
-      out.warnings.push_back("PLY " + at + "unknown line " + quoted(line) +
-                             " skipped (neither comment, element nor property)");
-      skipped = true;
+      skip_unknown_line(w, line, at, h, warnings);
     }
   }
-  if (!format) fail("header has no format line");
+  if (!h.format) fail("header has no format line");
+  return h;
+}
 
-  // Counts bounded by the data before anything is sized by them: an instance
-  // takes at least its fixed bytes (binary) or a digit and a separator per
-  // value (ASCII), so a damaged count cannot ask for gigabytes.
-  for (const Element& e : elements) {
+// Counts bounded by the data before anything is sized by them: an instance
+// takes at least its fixed bytes (binary) or a digit and a separator per
+// value (ASCII), so a damaged count cannot ask for gigabytes.
+void check_counts(const Header& h, size_t data_bytes) {
+  for (const Element& e : h.elements) {
     size_t least = 0;
     for (const Property& p : e.properties)
-      least += *format == Format::kAscii ? 2 : (p.count.size ? p.count.size : p.type.size);
-    if (least > 0 && e.count > (bytes.size() - data) / least)
+      least += *h.format == Format::kAscii ? 2 : (p.count.size ? p.count.size : p.type.size);
+    if (least > 0 && e.count > data_bytes / least)
       fail("data cut short: element " + quoted(e.name) + " declares " + std::to_string(e.count) +
-           " instances, the data holds at most " + std::to_string((bytes.size() - data) / least));
+           " instances, the data holds at most " + std::to_string(data_bytes / least));
   }
+}
 
-  // The vertex element and its coordinates.
+/// The first element named "vertex" (elements.size() if none), with the
+/// indices of its x, y, z properties in `xyz`; sizes `vertices` for it.
+size_t vertex_element_of(const std::vector<Element>& elements, int xyz[3], Points& vertices) {
   size_t vertex_element = elements.size();
-  int xyz[3] = {-1, -1, -1};
   for (size_t e = 0; e < elements.size() && vertex_element == elements.size(); ++e)
     if (elements[e].name == "vertex") vertex_element = e;
-  out.ascii = *format == Format::kAscii;
   if (vertex_element < elements.size()) {
     const Element& v = elements[vertex_element];
     for (size_t k = 0; k < v.properties.size(); ++k)
@@ -379,17 +394,17 @@ PlyFile check_ply(std::string_view bytes) {
           xyz[c] = int(k);
     for (int c = 0; c < 3; ++c)
       if (xyz[c] < 0) fail("element \"vertex\" has no property " + std::string(1, char('x' + c)));
-    out.vertices.setZero(3, Eigen::Index(v.count));
+    vertices.setZero(3, Eigen::Index(v.count));
   }
-  if (out.ascii)
-    walk_ascii(bytes, data, elements, xyz, vertex_element, out.vertices);
-  else
-    walk_binary(bytes, data, *format == Format::kBig, elements, xyz, vertex_element, out.vertices);
+  return vertex_element;
+}
 
-  // The file assimp gets: only the elements with geometry, and a pad element
-  // when binary data would start with 0x0a (see the top of this file).
+// The file assimp gets: only the elements with geometry, and a pad element
+// when binary data would start with 0x0a (see the top of this file). Sets
+// out.for_assimp, and out.rewritten when it differs from `bytes`.
+void prepare_for_assimp(std::string_view bytes, const Header& header, PlyFile& out) {
   std::vector<const Element*> kept;
-  for (const Element& e : elements)
+  for (const Element& e : header.elements)
     if (e.name == "vertex" || e.name == "face" || e.name == "tristrips") kept.push_back(&e);
   const char* first = nullptr;
   for (const Element* e : kept)
@@ -398,11 +413,11 @@ PlyFile check_ply(std::string_view bytes) {
       break;
     }
   const bool pad = !out.ascii && first && *first == '\n';
-  if (kept.size() == elements.size() && !pad && !skipped) {
+  if (kept.size() == header.elements.size() && !pad && !header.skipped) {
     out.for_assimp = std::string(bytes);
-    return out;
+    return;
   }
-  std::string h = "ply\n" + format_line + "\n";
+  std::string h = "ply\n" + header.format_line + "\n";
   if (pad) h += "element edge 1\nproperty uchar pdcheck_pad\n";
   for (const Element* e : kept)
     for (const auto& l : e->lines) h += l + "\n";
@@ -414,6 +429,29 @@ PlyFile check_ply(std::string_view bytes) {
   }
   out.for_assimp = std::move(h);
   out.rewritten = true;
+}
+
+}  // namespace
+
+bool looks_like_ply(std::string_view bytes) {
+  return bytes.size() >= 4 && bytes.substr(0, 3) == "ply" && (bytes[3] == '\n' || bytes[3] == '\r');
+}
+
+PlyFile check_ply(std::string_view bytes) {
+  if (!looks_like_ply(bytes)) fail("file does not start with the line \"ply\"");
+  const size_t data = header_end(bytes);
+  PlyFile out;
+  Header header = parse_header(bytes, data, out.warnings);
+  check_counts(header, bytes.size() - data);
+  int xyz[3] = {-1, -1, -1};
+  const size_t vertex_element = vertex_element_of(header.elements, xyz, out.vertices);
+  out.ascii = *header.format == Format::kAscii;
+  if (out.ascii)
+    walk_ascii(bytes, data, header.elements, xyz, vertex_element, out.vertices);
+  else
+    walk_binary(bytes, data, *header.format == Format::kBig, header.elements, xyz, vertex_element,
+                out.vertices);
+  prepare_for_assimp(bytes, header, out);
   return out;
 }
 

@@ -41,8 +41,9 @@ class Polytope {
     faces.reserve(128);
   }
 
-  // A face through vertices (a, b, c) in that order; false when the origin is
-  // not inside it by more than the rounding (or the triangle is degenerate).
+  // A face through vertices (a, b, c) in that order; false when the triangle is
+  // degenerate (no normal). The origin need not be inside it: the bound holds
+  // only while every face has it inside by more than the rounding (epa_bracket).
   bool add_face(int a, int b, int c) {
     Face f;
     f.v = {a, b, c};
@@ -52,7 +53,7 @@ class Polytope {
     f.n = n / len;
     f.low = std::min({f.n.dot(x[a]), f.n.dot(x[b]), f.n.dot(x[c])});
     faces.push_back(f);
-    return f.low > tol::kEpaRounding;
+    return true;
   }
 
   int nearest() const {
@@ -87,8 +88,10 @@ class Polytope {
   }
 
   // Replaces the faces visible from w (starting at face `start`) by the cone from
-  // w over their boundary. False when the step cannot keep the origin enclosed:
-  // the polytope may then be partly rebuilt and is not used again.
+  // w over their boundary: the surface stays closed and consistently oriented.
+  // False when the step cannot (the boundary is not a simple cycle, or a new
+  // face is degenerate): the polytope may then be partly rebuilt and is not
+  // used again.
   bool expand(int start, const Vec3& w, int pass) {
     removed.assign(1, start);
     horizon.clear();
@@ -111,10 +114,9 @@ class Polytope {
     const int wi = static_cast<int>(x.size());
     x.push_back(w);
     const int first = static_cast<int>(faces.size());
-    bool ok = true;
     for (size_t i = 0; i < h; ++i) {
       // The kept face's edge (from → to) is (to → from) in the new face.
-      ok = add_face(to[i], from[i], wi) && ok;
+      if (!add_face(to[i], from[i], wi)) return false;
       Face& nf = faces.back();
       Face& g = faces[horizon[i].first];
       nf.adj[0] = horizon[i].first;
@@ -134,15 +136,18 @@ class Polytope {
       fj.adj[2] = first + static_cast<int>(i);
       fj.adj_edge[2] = 1;
     }
-    return ok;
+    return true;
   }
 };
 
-// The four faces of GJK's tetrahedron, outward; false when the origin is not
-// inside each by more than the rounding.
+// The four faces of GJK's tetrahedron, outward. The origin may lie on a face or
+// an edge of it (symmetric pairs): the expansion lifts such faces first, since
+// they are the nearest. False when the tetrahedron is flat.
 bool start_polytope(Polytope& poly, const std::array<Vec3, 4>& t) {
   poly.x.assign(t.begin(), t.end());
-  if ((t[1] - t[0]).cross(t[2] - t[0]).dot(t[3] - t[0]) > 0) std::swap(poly.x[1], poly.x[2]);
+  const double volume = (t[1] - t[0]).cross(t[2] - t[0]).dot(t[3] - t[0]);
+  if (volume == 0) return false;
+  if (volume > 0) std::swap(poly.x[1], poly.x[2]);
   // Now vertex 3 lies below face (0, 1, 2): every face below is outward.
   static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
   for (const auto& f : kFaces)
@@ -168,6 +173,7 @@ DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
   const GjkResult g = gjk_enclose_origin(pr, tol::kGjkMaxIterations);
   b.upper = g.gap;
   b.direction = g.direction;
+  b.lower = g.lower;
   if (g.outcome == GjkResult::Outcome::kSeparated) {
     b.separated = true;
     return b;
@@ -178,9 +184,12 @@ DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
   for (int it = 0; it < max_iterations; ++it) {
     const int f = poly.nearest();
     const Face face = poly.faces[f];
-    // Every face's bound, lowered by the rounding, bounds the distance from the
-    // origin to the surface, and so the depth: the nearest face's is the least.
-    b.lower = std::max(b.lower, face.low - tol::kEpaRounding);
+    // When every face has the origin inside by more than the rounding (the
+    // nearest one has), the closed surface winds around it: the ball up to the
+    // surface lies in D, and the nearest face's bound, lowered by the
+    // rounding, bounds the depth. Before that (the origin on a face of GJK's
+    // tetrahedron) the expansion lifts the nearest face and no bound is taken.
+    if (face.low > tol::kEpaRounding) b.lower = std::max(b.lower, face.low - tol::kEpaRounding);
     Vec3 w;
     const double h = pr.support(face.n, w);
     if (h < b.upper) {
@@ -190,7 +199,8 @@ DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
     if (b.certified()) return b;
     // w must lie beyond the nearest face for the polytope to grow towards D's
     // boundary; otherwise the face is a facet up to a normal too rounded to
-    // close the bracket, and MLSL takes over from here.
+    // close the bracket (or, before the origin is enclosed, the pair touches
+    // on that face's plane), and MLSL takes over from here.
     if (!poly.visible(face, w)) return b;
     b.iterations = it + 1;
     if (!poly.expand(f, w, it)) return b;

@@ -6,19 +6,25 @@
 // - upper: every unit v gives gap(v) >= depth (a translation of that length
 //   along v separates the pair), so the lowest gap over EPA's face normals is an
 //   upper bound;
-// - lower: EPA's polytope is a closed triangle surface with vertices in D
-//   around the origin, so the ball of radius (distance from the origin to the
-//   surface) lies in D and depth >= that distance. For any unit n the distance
-//   to a triangle is at least min over its vertices of n·x, so each face's bound
-//   needs only dot products, whatever the rounding of its normal; the rounding
-//   of the dots and of the differences is kEpaRounding (src/tolerances.h). The
-//   bound does not need the polytope to be convex: only the origin must stay
-//   enclosed, and it does while every face has it strictly on its inner side and
-//   every face removed has the new vertex strictly outside (the cone replacing
-//   them never sweeps over the origin). Each step checks both; a step that
-//   cannot keep them ends the expansion with the bracket so far.
+// - lower: EPA's polytope is a closed, consistently oriented triangle surface
+//   with vertices in D. When every face has the origin on its inner side (each
+//   seen from the origin at a positive solid angle) the surface winds around
+//   the origin at least once, so the ball of radius (distance from the origin
+//   to the surface) lies in the hull of its vertices, inside D, and depth >=
+//   that distance. For any unit n the distance to a triangle is at least min
+//   over its vertices of n·x, so each face's bound needs only dot products,
+//   whatever the rounding of its normal; the rounding of the dots and of the
+//   differences is kEpaRounding (src/tolerances.h), and "inside" means inside by
+//   more than it. The argument needs neither convexity nor how the surface was
+//   reached: a bound is taken whenever the nearest face (so every face) has the
+//   origin inside. GJK's tetrahedron may have the origin on a face or an edge
+//   (symmetric pairs); the expansion lifts the nearest face first, and the
+//   bound starts once no face is left through the origin.
 // When the nearest face's plane supports D (its gap equals its offset) the two
 // meet: the bracket is closed and its direction is a facet normal of D.
+// Touching pairs: GJK's simplex through the origin yields a supporting plane of
+// D through it (solve/gjk.h), so the upper end is about 0 and the pair is
+// settled without EPA.
 #pragma once
 
 #include "solve/objective.h"
@@ -26,7 +32,8 @@
 namespace pd {
 
 struct DepthBracket {
-  /// depth >= lower (-inf when none is known: GJK undecided or a failed start).
+  /// depth >= lower: EPA's bound, else GJK's −|x| (the signed minimum of the gap
+  /// is at least minus the distance to any point x of D); -inf when none is known.
   double lower = -std::numeric_limits<double>::infinity();
   /// depth <= upper = gap(direction), the lowest gap evaluated.
   double upper = std::numeric_limits<double>::infinity();

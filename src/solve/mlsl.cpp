@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "solve/cap_subdivision.h"
 #include "solve/certificate.h"
@@ -124,6 +125,22 @@ void polish_basins(const PairProblem& pr, IpoptLocalSolver& ipopt, std::vector<B
   }
 }
 
+// The bracket alone settles the pair when it proves the depth reported:
+// - a separating direction (gap <= 0): depth 0;
+// - a direction whose gap is within rounding of 0 (GJK's supporting plane
+//   through the origin at a contact): the minimum is at or below it, so the
+//   depth is 0 by the rule both exact and mlsl follow (kGapRounding);
+// - a closed bracket above that rounding: the depth is its upper end, exact to
+//   kEpaBracket, contacts (depths up to kTouch) included.
+// A closed bracket straddling kGapRounding could be reported either way by the
+// exact reference, so MLSL decides it as before.
+std::optional<StopReason> bracket_decides(const DepthBracket& b) {
+  if (b.separated || b.upper <= 0) return StopReason::kProvenSeparated;
+  if (b.upper <= tol::kGapRounding) return StopReason::kContact;
+  if (b.certified() && b.lower > tol::kGapRounding) return StopReason::kEpaCertificate;
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& stats) {
@@ -186,144 +203,192 @@ bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& st
   return false;
 }
 
-DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s) {
-  const auto t0 = Clock::now();
-  SampleDirections directions(s.seed);
-  SolveStats stats;
-  std::vector<Vec3> x;
-  std::vector<double> f;
-  std::vector<char> started;
-  x.reserve(6 + s.samples);
-  f.reserve(6 + s.samples);
-  started.reserve(6 + s.samples);
-  std::vector<Basin> basins;
-  Optimum best{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
-  const double smoothing_excess = std::log(double(pr.p().cols())) + std::log(double(pr.q().cols()));
-  auto consider = [&](const Vec3& v, double g) {
-    if (g < best.gap) best = {v, g};
-  };
+// The default method's search (mlsl_depth): its samples, the basins found and
+// the best direction so far, with one method per phase.
+class MlslSearch {
+ public:
+  MlslSearch(const PairProblem& pr, const SolverSettings& s)
+      : pr_(pr),
+        s_(s),
+        t0_(Clock::now()),
+        directions_(s.seed),
+        smoothing_excess_(std::log(double(pr.p().cols())) + std::log(double(pr.q().cols()))) {
+    x_.reserve(6 + s.samples);
+    f_.reserve(6 + s.samples);
+    started_.reserve(6 + s.samples);
+  }
+
   // A direction with gap <= 0 is a separating (or touching) plane: depth 0,
   // proved. Within kTouch of 0 the depth is below the contact resolution, but
   // the depth reported must still be the minimum's: a gap above rounding there
   // (a fitted or local facet of faces flat only to the input's rounding) may
   // have a lower facet elsewhere on the contact, down to a separating one, so
   // the certificate searches for it first (once).
-  bool contact_certified = false;
-  auto settled = [&]() {
-    if (best.gap > tol::kGapRounding && best.gap <= tol::kTouch && !contact_certified) {
-      contact_certified = true;
-      certify_minimum(pr, best.v, best.gap, stats);
+  StopReason settled() {
+    if (best_.gap > tol::kGapRounding && best_.gap <= tol::kTouch && !contact_certified_) {
+      contact_certified_ = true;
+      certify_minimum(pr_, best_.v, best_.gap, stats_);
     }
-    if (best.gap <= 0) return StopReason::kProvenSeparated;
-    if (best.gap <= tol::kTouch) return StopReason::kContact;
+    if (best_.gap <= 0) return StopReason::kProvenSeparated;
+    if (best_.gap <= tol::kTouch) return StopReason::kContact;
     return StopReason::kNone;
-  };
-  auto stop = [&](StopReason why) {
-    stats.stop_reason = why;
-    return finish(pr, best, static_cast<int>(basins.size()), stats);
-  };
+  }
+
+  DepthSolution stop(StopReason why) {
+    stats_.stop_reason = why;
+    return finish(pr_, best_, static_cast<int>(basins_.size()), stats_);
+  }
+
   // GJK + EPA first (solve/epa.h): a closed bracket is the depth, proved, and
-  // the solve ends there. An open one (EPA stopped on a face it could not close,
-  // or GJK near a contact) hands its best direction to MLSL as the first sample.
-  // Contacts keep MLSL's handling (the settled rule above): the bracket is taken
-  // only when its lower end is above the contact resolution.
-  const DepthBracket bracket = s.epa ? epa_bracket(pr, tol::kEpaMaxIterations) : DepthBracket{};
-  if (bracket.certified() && bracket.lower > tol::kTouch) {
-    best = {bracket.direction, bracket.upper};
-    return stop(StopReason::kEpaCertificate);
+  // the solve ends there (the reason returned). An open one (EPA stopped on a
+  // face it could not close, or GJK near a contact) hands its best direction
+  // to MLSL as the first sample; then the broad phase's overlap axes: gap(±e_k)
+  // is the overlap of the pair's boxes along axis k, so the box test's best
+  // axis is a sample. On contacts of axis-aligned parts it is the contact normal.
+  std::optional<StopReason> seed() {
+    const DepthBracket bracket = s_.epa ? epa_bracket(pr_, tol::kEpaMaxIterations) : DepthBracket{};
+    if (const auto why = bracket_decides(bracket)) {
+      best_ = {bracket.direction, bracket.upper};
+      return why;
+    }
+    if (std::isfinite(bracket.upper)) add_sample(bracket.direction, bracket.upper);
+    for (int k = 0; k < 6; ++k) {
+      const Vec3 axis = (k % 2 ? -1.0 : 1.0) * Vec3::Unit(k / 2);
+      add_sample(axis, pr_.gap(axis));
+    }
+    return std::nullopt;
   }
-  if (std::isfinite(bracket.upper)) {
-    x.push_back(bracket.direction);
-    f.push_back(bracket.upper);
-    started.push_back(0);
-    consider(x.back(), f.back());
-  }
-  // The broad phase's overlap axes: gap(±e_k) is the overlap of the pair's boxes
-  // along axis k, so the box test's best axis is the first sample. On contacts
-  // of axis-aligned parts it is the contact normal.
-  for (int k = 0; k < 6; ++k) {
-    const Vec3 axis = (k % 2 ? -1.0 : 1.0) * Vec3::Unit(k / 2);
-    x.push_back(axis);
-    f.push_back(pr.gap(axis));
-    started.push_back(0);
-    consider(x.back(), f.back());
-  }
-  if (settled() != StopReason::kNone) return stop(settled());
 
-  bool tried_certificate = false;
-  StopReason why = StopReason::kCap;  // unless the Bayesian rule stops the loop
-  for (int k = 1; k <= s.max_iterations; ++k) {
-    stats.mlsl_iterations = k;
-    const size_t first = x.size();
-    for (int i = 0; i < s.samples; ++i)
-      x.push_back(directions[size_t(k - 1) * size_t(s.samples) + size_t(i)]);
-    f.resize(x.size());
-    started.resize(x.size(), 0);
-    pr.gaps(x.data() + first, x.size() - first, f.data() + first);
-    for (size_t i = first; i < x.size(); ++i) consider(x[i], f[i]);
-    if (settled() != StopReason::kNone) return stop(settled());
+  // Round k: a batch of samples, then local searches from the reduced sample's
+  // points not linked to a better one (single linkage). A stop reason when the
+  // round settles the pair or stops the loop; kNone to go on.
+  StopReason round(int k) {
+    stats_.mlsl_iterations = k;
+    const size_t first = x_.size();
+    for (int i = 0; i < s_.samples; ++i)
+      x_.push_back(directions_[size_t(k - 1) * size_t(s_.samples) + size_t(i)]);
+    f_.resize(x_.size());
+    started_.resize(x_.size(), 0);
+    pr_.gaps(x_.data() + first, x_.size() - first, f_.data() + first);
+    for (size_t i = first; i < x_.size(); ++i) consider(x_[i], f_[i]);
+    if (settled() != StopReason::kNone) return settled();
+    const long kn = static_cast<long>(x_.size());
+    const long reduced = std::max(1L, std::lround(s_.reduced * kn));
+    if (const StopReason why = start_searches(kn, reduced); why != StopReason::kNone) return why;
+    // Every reduced-sample point is either a start or linked to one, so it counts
+    // as a search whose optimum is known (Rinnooy Kan & Timmer, part II, §3).
+    const int w = static_cast<int>(basins_.size());
+    if (k >= s_.min_iterations && w > 0 && w / expected_optima(w, reduced) >= s_.tau)
+      return StopReason::kBayesian;
+    return out_of_budget() ? StopReason::kCap : StopReason::kNone;
+  }
 
-    const long kn = static_cast<long>(x.size());
+  // After the rounds: Ipopt polishes the basins, and the best is certified (or
+  // reported as not, for solve_convex_pair's exact fallback).
+  DepthSolution polish_and_finish(IpoptLocalSolver& ipopt, StopReason why) {
+    std::string last_failure;
+    const Optimum before = best_;
+    const int distinct = static_cast<int>(basins_.size());
+    polish_basins(pr_, ipopt, std::move(basins_), best_, stats_, last_failure);
+    if (best_.gap <= tol::kTouch) why = settled();
+    const bool certified =
+        best_.gap <= tol::kTouch || certify_minimum(pr_, best_.v, best_.gap, stats_);
+    stats_.stop_reason = why;
+    DepthSolution sol = finish(pr_, best_, distinct, stats_);
+    // Too many near-tied minima spread too widely (nearly concentric spheres, say):
+    // solve_convex_pair lets the exact hull settle it, and the report says so.
+    if (!certified) sol.fallback = "the global minimum could not be certified locally";
+    if (!last_failure.empty() && best_.gap == before.gap && best_.gap >= 0)
+      sol.fallback = "no local solve converged (" + last_failure + ")";
+    return sol;
+  }
+
+ private:
+  void consider(const Vec3& v, double g) {
+    if (g < best_.gap) best_ = {v, g};
+  }
+  void add_sample(const Vec3& v, double g) {
+    x_.push_back(v);
+    f_.push_back(g);
+    started_.push_back(0);
+    consider(v, g);
+  }
+  bool out_of_budget() const {
+    return stats_.local_solves >= s_.max_local_solves || seconds_since(t0_) > s_.max_seconds;
+  }
+
+  // Local searches from the `reduced` best of the kn samples, each not within
+  // the critical distance of a better sample or a known optimum.
+  StopReason start_searches(long kn, long reduced) {
     // Critical distance on the sphere (area 4π, dimension 2), as an angle.
-    const double rk = std::sqrt(4.0 * s.sigma * std::log(double(kn)) / double(kn));
+    const double rk = std::sqrt(4.0 * s_.sigma * std::log(double(kn)) / double(kn));
     const double cos_rk =
-        std::cos(std::min(rk * s.link_scale, M_PI));  // angle <= r_k  <=>  dot >= cos r_k
-    const long reduced = std::max(1L, std::lround(s.reduced * kn));
+        std::cos(std::min(rk * s_.link_scale, M_PI));  // angle <= r_k  <=>  dot >= cos r_k
     std::vector<long> order(kn);
     std::iota(order.begin(), order.end(), 0L);
     std::partial_sort(order.begin(), order.begin() + reduced, order.end(),
-                      [&](long a, long b) { return f[a] < f[b] || (f[a] == f[b] && a < b); });
-
+                      [&](long a, long b) { return f_[a] < f_[b] || (f_[a] == f_[b] && a < b); });
     for (long r = 0; r < reduced; ++r) {
       const long i = order[r];
-      if (started[i]) continue;
-      // Single linkage: no start next to a better sample or a known optimum.
+      if (started_[i]) continue;
       bool linked = false;
-      for (long j = 0; j < kn && !linked; ++j) linked = f[j] < f[i] && x[i].dot(x[j]) >= cos_rk;
-      for (size_t o = 0; o < basins.size() && !linked; ++o)
-        linked = x[i].dot(basins[o].end) >= cos_rk;
+      for (long j = 0; j < kn && !linked; ++j) linked = f_[j] < f_[i] && x_[i].dot(x_[j]) >= cos_rk;
+      for (size_t o = 0; o < basins_.size() && !linked; ++o)
+        linked = x_[i].dot(basins_[o].end) >= cos_rk;
       if (linked) continue;
-      if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
-      started[i] = 1;
-      const DescentOutcome d = descend(pr, x[i], stats);
-      consider(d.v, pr.gap(d.v));
-      // The facet the descent came close to, exact, without Ipopt (a contact's).
-      if (const auto n = snap_from_descent(pr.p(), pr.q(), d.v)) consider(*n, pr.gap(*n));
-      if (settled() != StopReason::kNone) return stop(settled());
-      add_basin(basins, d.v, d.smoothed - d.mu * smoothing_excess);
-      // Certificate first: once the best sample's basin is known, try to prove
-      // it global. When it holds, no more sampling and no Ipopt call is needed.
-      if (!tried_certificate) {
-        tried_certificate = true;
-        const bool certified = certify_minimum(pr, best.v, best.gap, stats);
-        if (settled() != StopReason::kNone) return stop(settled());
-        if (certified) return stop(StopReason::kCertificate);
-      }
+      if (out_of_budget()) break;
+      started_[i] = 1;
+      if (const StopReason why = search_from(x_[i]); why != StopReason::kNone) return why;
     }
-    // Every reduced-sample point is either a start or linked to one, so it counts
-    // as a search whose optimum is known (Rinnooy Kan & Timmer, part II, §3).
-    const int w = static_cast<int>(basins.size());
-    const double wbar = expected_optima(w, reduced);
-    if (k >= s.min_iterations && w > 0 && w / wbar >= s.tau) {
-      why = StopReason::kBayesian;
+    return StopReason::kNone;
+  }
+
+  // One local search: a descent, the facet it came close to, its basin; then,
+  // the first time, the certificate on the best sample's basin (when it holds,
+  // no more sampling and no Ipopt call is needed).
+  StopReason search_from(const Vec3& start) {
+    const DescentOutcome d = descend(pr_, start, stats_);
+    consider(d.v, pr_.gap(d.v));
+    // The facet the descent came close to, exact, without Ipopt (a contact's).
+    if (const auto n = snap_from_descent(pr_.p(), pr_.q(), d.v)) consider(*n, pr_.gap(*n));
+    if (settled() != StopReason::kNone) return settled();
+    add_basin(basins_, d.v, d.smoothed - d.mu * smoothing_excess_);
+    if (tried_certificate_) return StopReason::kNone;
+    tried_certificate_ = true;
+    const bool certified = certify_minimum(pr_, best_.v, best_.gap, stats_);
+    if (settled() != StopReason::kNone) return settled();
+    return certified ? StopReason::kCertificate : StopReason::kNone;
+  }
+
+  const PairProblem& pr_;
+  const SolverSettings& s_;
+  const Clock::time_point t0_;
+  SampleDirections directions_;
+  const double smoothing_excess_;
+  SolveStats stats_;
+  std::vector<Vec3> x_;
+  std::vector<double> f_;
+  std::vector<char> started_;
+  std::vector<Basin> basins_;
+  Optimum best_{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
+  bool contact_certified_ = false, tried_certificate_ = false;
+};
+
+DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s) {
+  MlslSearch search(pr, s);
+  if (const auto why = search.seed()) return search.stop(*why);
+  if (const StopReason why = search.settled(); why != StopReason::kNone) return search.stop(why);
+  StopReason why = StopReason::kCap;  // unless the Bayesian rule stops the loop
+  for (int k = 1; k <= s.max_iterations; ++k) {
+    const StopReason r = search.round(k);
+    if (r == StopReason::kNone) continue;
+    if (r == StopReason::kBayesian || r == StopReason::kCap) {
+      why = r;
       break;
     }
-    if (stats.local_solves >= s.max_local_solves || seconds_since(t0) > s.max_seconds) break;
+    return search.stop(r);  // settled: separated, contact, certificate
   }
-  std::string last_failure;
-  const Optimum before = best;
-  const int distinct = static_cast<int>(basins.size());
-  polish_basins(pr, ipopt, std::move(basins), best, stats, last_failure);
-  if (best.gap <= tol::kTouch) why = settled();
-  const bool certified = best.gap <= tol::kTouch || certify_minimum(pr, best.v, best.gap, stats);
-  stats.stop_reason = why;
-  DepthSolution sol = finish(pr, best, distinct, stats);
-  // Too many near-tied minima spread too widely (nearly concentric spheres, say):
-  // solve_convex_pair lets the exact hull settle it, and the report says so.
-  if (!certified) sol.fallback = "the global minimum could not be certified locally";
-  if (!last_failure.empty() && best.gap == before.gap && best.gap >= 0)
-    sol.fallback = "no local solve converged (" + last_failure + ")";
-  return sol;
+  return search.polish_and_finish(ipopt, why);
 }
 
 DepthSolution mlsl_paper_depth(const PairProblem& pr, IpoptLocalSolver& ipopt,
