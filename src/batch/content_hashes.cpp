@@ -39,6 +39,9 @@ std::vector<std::string> part_content_hashes(const SceneSpec& scene,
     if (p.mesh) {
       const auto it = files.find(*p.mesh);
       h.add("mesh").add(it != files.end() ? it->second : file_content_hash(*p.mesh));
+      // A node part: the node path too (a part of another node is other
+      // geometry). Added only then: other parts' hashes stay as they were.
+      if (p.node) h.add("node").add(*p.node);
     } else {
       // The list's own digest, which a shard holds without the list (VertexSummary).
       // Mesh parts hash as before; an inline part's hash differs from the

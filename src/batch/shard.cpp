@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 #include <numeric>
+#include <tuple>
 
 #include "batch/broad_phase.h"
 #include "scene/mesh_loader.h"
@@ -58,11 +59,13 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
   const size_t n = scene.parts.size();
   plan.boxes.assign(n, std::nullopt);
   plan.vertices.assign(n, 0);
-  std::map<std::pair<std::string, bool>, std::vector<size_t>> users;  // file -> parts
+  // file -> parts, by (path, pieces meshes, split by node)
+  std::map<std::tuple<std::string, bool, bool>, std::vector<size_t>> users;
   for (size_t k = 0; k < n; ++k) {
     const PartSpec& s = scene.parts[k];
+    if (s.error) continue;  // known unusable (a split part whose file cannot be read)
     if (s.mesh) {
-      users[{*s.mesh, s.pieces == Pieces::kMeshes}].push_back(k);
+      users[{*s.mesh, s.pieces == Pieces::kMeshes, s.node.has_value()}].push_back(k);
     } else if (s.vertex_summary) {  // the same box as below, computed when the list was read
       plan.vertices[k] = s.vertex_summary->count;
       plan.boxes[k] = plan_box(s.vertex_summary->placed_box);
@@ -72,7 +75,10 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
     }
   }
   std::vector<std::pair<MeshRequest, const std::vector<size_t>*>> files;
-  for (const auto& [key, parts] : users) files.push_back({{key.first, key.second}, &parts});
+  for (const auto& [key, parts] : users) {
+    const auto& [path, split, by_node] = key;
+    files.push_back({{path, split || by_node, by_node, false}, &parts});
+  }
   const size_t batch = 64;
   for (size_t f0 = 0; f0 < files.size(); f0 += batch) {
     const size_t f1 = std::min(files.size(), f0 + batch);
@@ -83,15 +89,21 @@ void plan_boxes(const SceneSpec& scene, int threads, double load_timeout, SceneP
     for (size_t f = f0; f < f1; ++f) {
       const LoadedMeshes& m = read[f - f0];
       if (m.error) continue;  // the part's own load reports why
-      long count = 0;
-      for (const Mesh& mesh : m.meshes) count += mesh.vertices.cols();
-      Points all(3, count);
-      long at = 0;
-      for (const Mesh& mesh : m.meshes) {
-        all.middleCols(at, mesh.vertices.cols()) = mesh.vertices;
-        at += mesh.vertices.cols();
-      }
+      // Per node path ("" when not split by node), its meshes' vertices.
+      std::map<std::string, std::vector<const Mesh*>> of_node;
+      for (size_t i = 0; i < m.meshes.size(); ++i)
+        of_node[files[f].first.by_node ? m.nodes[i] : ""].push_back(&m.meshes[i]);
       for (size_t k : *files[f].second) {
+        const auto it = of_node.find(scene.parts[k].node.value_or(""));
+        if (it == of_node.end()) continue;  // the file changed: the part's load reports why
+        long count = 0;
+        for (const Mesh* mesh : it->second) count += mesh->vertices.cols();
+        Points all(3, count);
+        long at = 0;
+        for (const Mesh* mesh : it->second) {
+          all.middleCols(at, mesh->vertices.cols()) = mesh->vertices;
+          at += mesh->vertices.cols();
+        }
         plan.vertices[k] = count;
         plan.boxes[k] =
             plan_box(place_points(all, scene.parts[k]), scene.parts[k], scene.checks.motion);

@@ -13,6 +13,7 @@
 #include "report/report_json.h"
 #include "results/fingerprint.h"
 #include "scene/rule_index.h"
+#include "scene/split_nodes.h"
 #include "scene/units.h"
 
 namespace pd {
@@ -63,6 +64,14 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
   } else {
     scene = load_scene_file(a.scene, units, a.jobs, /*keep_vertices=*/!shard);
   }
+  // Node parts are parts from here on: rules, pairs and shards plan with them.
+  split_node_parts(scene, {a.jobs,
+                           a.load_timeout,
+                           a.load_memory,
+                           {},
+                           a.no_cache            ? ""
+                           : a.cache_dir.empty() ? default_cache_dir()
+                                                 : a.cache_dir});
   if (a.tolerance && *a.tolerance == "auto") {
     if (!scene.auto_tolerance) {  // a scene's own auto keeps its clamps
       scene.auto_tolerance = AutoTolerance{};

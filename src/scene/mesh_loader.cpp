@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "scene/node_names.h"
 #include "scene/ply_check.h"
 
 namespace pd {
@@ -26,44 +27,112 @@ Mat4 to_eigen(const aiMatrix4x4& m) {
   return r;
 }
 
-void collect(const aiScene* scene, const aiNode* node, const Mat4& parent, std::vector<Mesh>& out) {
+Mesh placed_mesh(const aiMesh* mesh, const Mat4& world) {
+  Mesh m;
+  m.vertices.resize(3, mesh->mNumVertices);
+  for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+    const aiVector3D& x = mesh->mVertices[v];
+    m.vertices.col(v) =
+        world.topLeftCorner<3, 3>() * Vec3(x.x, x.y, x.z) + world.topRightCorner<3, 1>();
+  }
+  long tris = 0;
+  for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+    if (mesh->mFaces[f].mNumIndices >= 3) tris += mesh->mFaces[f].mNumIndices - 2;
+  m.triangles.resize(3, tris);
+  tris = 0;
+  for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+    const aiFace& face = mesh->mFaces[f];
+    for (unsigned i = 2; i < face.mNumIndices; ++i) {
+      const unsigned idx[3] = {face.mIndices[0], face.mIndices[i - 1], face.mIndices[i]};
+      for (int c = 0; c < 3; ++c) {
+        if (idx[c] >= mesh->mNumVertices) throw MeshError("face index out of range");
+        m.triangles(c, tris) = static_cast<int>(idx[c]);
+      }
+      ++tris;
+    }
+  }
+  return m;
+}
+
+/// The node's meshes and its descendants', placed by their accumulated node
+/// transforms; `paths`, when given, gets each mesh's node path (node_names.h).
+void collect(const aiScene* scene, const aiNode* node, const Mat4& parent, const std::string& path,
+             std::vector<Mesh>& out, std::vector<std::string>* paths) {
   const Mat4 world = parent * to_eigen(node->mTransformation);
   for (unsigned k = 0; k < node->mNumMeshes; ++k) {
-    const aiMesh* mesh = scene->mMeshes[node->mMeshes[k]];
-    Mesh m;
-    m.vertices.resize(3, mesh->mNumVertices);
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-      const aiVector3D& x = mesh->mVertices[v];
-      m.vertices.col(v) =
-          world.topLeftCorner<3, 3>() * Vec3(x.x, x.y, x.z) + world.topRightCorner<3, 1>();
-    }
-    long tris = 0;
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
-      if (mesh->mFaces[f].mNumIndices >= 3) tris += mesh->mFaces[f].mNumIndices - 2;
-    m.triangles.resize(3, tris);
-    tris = 0;
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-      const aiFace& face = mesh->mFaces[f];
-      for (unsigned i = 2; i < face.mNumIndices; ++i) {
-        const unsigned idx[3] = {face.mIndices[0], face.mIndices[i - 1], face.mIndices[i]};
-        for (int c = 0; c < 3; ++c) {
-          if (idx[c] >= mesh->mNumVertices) throw MeshError("face index out of range");
-          m.triangles(c, tris) = static_cast<int>(idx[c]);
-        }
-        ++tris;
-      }
-    }
-    if (m.vertices.cols() > 0) out.push_back(std::move(m));
+    Mesh m = placed_mesh(scene->mMeshes[node->mMeshes[k]], world);
+    if (m.vertices.cols() == 0) continue;
+    out.push_back(std::move(m));
+    if (paths) paths->push_back(path);
   }
-  for (unsigned c = 0; c < node->mNumChildren; ++c) collect(scene, node->mChildren[c], world, out);
+  std::vector<std::string> names;
+  if (paths)
+    for (unsigned c = 0; c < node->mNumChildren; ++c)
+      names.emplace_back(node->mChildren[c]->mName.C_Str());
+  const std::vector<std::string> segments = sibling_segments(names);
+  for (unsigned c = 0; c < node->mNumChildren; ++c)
+    collect(scene, node->mChildren[c], world,
+            !paths         ? path
+            : path.empty() ? segments[c]
+                           : path + "/" + segments[c],
+            out, paths);
+}
+
+/// Every mesh instance with its node path, from the root's children down. The
+/// root's own meshes (a file of one node: STL, PLY) are named by the root as
+/// if it were the first of its children.
+void collect_by_node(const aiScene* scene, std::vector<Mesh>& out,
+                     std::vector<std::string>& paths) {
+  const aiNode* root = scene->mRootNode;
+  const Mat4 world = to_eigen(root->mTransformation);
+  std::vector<std::string> names;
+  if (root->mNumMeshes > 0) names.emplace_back(root->mName.C_Str());
+  for (unsigned c = 0; c < root->mNumChildren; ++c)
+    names.emplace_back(root->mChildren[c]->mName.C_Str());
+  const std::vector<std::string> segments = sibling_segments(names);
+  size_t at = 0;
+  if (root->mNumMeshes > 0) {
+    const std::string& own = segments[at++];
+    for (unsigned k = 0; k < root->mNumMeshes; ++k) {
+      Mesh m = placed_mesh(scene->mMeshes[root->mMeshes[k]], world);
+      if (m.vertices.cols() == 0) continue;
+      out.push_back(std::move(m));
+      paths.push_back(own);
+    }
+  }
+  for (unsigned c = 0; c < root->mNumChildren; ++c)
+    collect(scene, root->mChildren[c], world, segments[at++], out, &paths);
 }
 
 /// The meshes of an imported scene, split per instance or joined into one.
 std::vector<Mesh> meshes_of(const aiScene* scene, bool split_instances) {
   std::vector<Mesh> pieces;
-  collect(scene, scene->mRootNode, Mat4::Identity(), pieces);
+  collect(scene, scene->mRootNode, Mat4::Identity(), {}, pieces, nullptr);
   if (pieces.empty()) throw MeshError("has no vertices");
   if (split_instances) return pieces;
+  return {join_meshes(pieces)};
+}
+
+NodeMeshes node_meshes_of(const aiScene* scene) {
+  NodeMeshes out;
+  collect_by_node(scene, out.meshes, out.nodes);
+  if (out.meshes.empty()) throw MeshError("has no vertices");
+  return out;
+}
+
+/// What a read returns: the meshes split or joined, or split by node.
+struct Want {
+  bool split_instances = false;
+  bool by_node = false;
+  NodeMeshes of(const aiScene* scene) const {
+    if (by_node) return node_meshes_of(scene);
+    return {meshes_of(scene, split_instances), {}};
+  }
+};
+
+}  // namespace
+
+Mesh join_meshes(const std::vector<Mesh>& pieces) {
   Eigen::Index n = 0, t = 0;
   for (const auto& p : pieces) {
     n += p.vertices.cols();
@@ -79,8 +148,10 @@ std::vector<Mesh> meshes_of(const aiScene* scene, bool split_instances) {
     n += p.vertices.cols();
     t += p.triangles.cols();
   }
-  return {std::move(all)};
+  return all;
 }
+
+namespace {
 
 const aiScene* checked(const aiScene* scene, const Assimp::Importer& importer) {
   if (!scene || !scene->mRootNode) {
@@ -104,8 +175,7 @@ Eigen::Matrix<float, 3, Eigen::Dynamic> raw_vertices(const aiScene* scene) {
   return out;
 }
 
-std::vector<Mesh> read_ply(std::string_view bytes, bool split_instances,
-                           std::vector<std::string>* warnings) {
+NodeMeshes read_ply(std::string_view bytes, const Want& want, std::vector<std::string>* warnings) {
   const PlyFile ply = check_ply(bytes);
   if (warnings) warnings->insert(warnings->end(), ply.warnings.begin(), ply.warnings.end());
   Assimp::Importer importer;
@@ -113,7 +183,7 @@ std::vector<Mesh> read_ply(std::string_view bytes, bool split_instances,
       checked(importer.ReadFileFromMemory(ply.for_assimp.data(), ply.for_assimp.size(), 0, "ply"),
               importer);
   check_ply_read(ply, raw_vertices(scene));
-  return meshes_of(scene, split_instances);
+  return want.of(scene);
 }
 
 /// Why `path` cannot be read as a mesh file, or empty when it is a regular file.
@@ -169,20 +239,18 @@ bool goes_to_ply_check(std::string_view head, std::string_view extension) {
   return looks_like_ply(head) || ext == "ply";
 }
 
-}  // namespace
-
-std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
-                              bool split_instances, std::vector<std::string>* warnings) {
-  if (goes_to_ply_check(bytes, extension)) return read_ply(bytes, split_instances, warnings);
+NodeMeshes read_with(std::string_view bytes, const std::string& extension, const Want& want,
+                     std::vector<std::string>* warnings) {
+  if (goes_to_ply_check(bytes, extension)) return read_ply(bytes, want, warnings);
   Assimp::Importer importer;
   // Only positions are needed; no post-processing that could move vertices.
   const aiScene* scene = checked(
       importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, extension.c_str()), importer);
-  return meshes_of(scene, split_instances);
+  return want.of(scene);
 }
 
-std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
-                              std::vector<std::string>* warnings) {
+NodeMeshes load_with(const std::string& path, const Want& want,
+                     std::vector<std::string>* warnings) {
   const std::string problem = path_problem(path);
   if (!problem.empty()) throw MeshError("cannot read mesh file " + path + ": " + problem);
   try {
@@ -190,17 +258,38 @@ std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
     // from the path, so a glTF finds its external buffers.
     if (goes_to_ply_check(read_bytes(path, 4), std::filesystem::path(path).extension().string())) {
       std::vector<std::string> found;
-      std::vector<Mesh> meshes = read_ply(read_bytes(path), split_instances, &found);
+      NodeMeshes meshes = read_ply(read_bytes(path), want, &found);
       if (warnings)
         for (const std::string& w : found) warnings->push_back("mesh file " + path + ": " + w);
       return meshes;
     }
     Assimp::Importer importer;
     // Only positions are needed; no post-processing that could move vertices.
-    return meshes_of(checked(importer.ReadFile(path, 0), importer), split_instances);
+    return want.of(checked(importer.ReadFile(path, 0), importer));
   } catch (const MeshError& e) {
     throw MeshError("cannot load mesh file " + path + ": " + e.what());
   }
+}
+
+}  // namespace
+
+std::vector<Mesh> read_meshes(std::string_view bytes, const std::string& extension,
+                              bool split_instances, std::vector<std::string>* warnings) {
+  return read_with(bytes, extension, Want{split_instances, false}, warnings).meshes;
+}
+
+NodeMeshes read_node_meshes(std::string_view bytes, const std::string& extension,
+                            std::vector<std::string>* warnings) {
+  return read_with(bytes, extension, Want{true, true}, warnings);
+}
+
+std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
+                              std::vector<std::string>* warnings) {
+  return load_with(path, Want{split_instances, false}, warnings).meshes;
+}
+
+NodeMeshes load_node_meshes(const std::string& path, std::vector<std::string>* warnings) {
+  return load_with(path, Want{true, true}, warnings);
 }
 
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances) {

@@ -29,6 +29,23 @@ class MeshError : public std::runtime_error {
 std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
                               std::vector<std::string>* warnings = nullptr);
 
+/// A file's mesh instances split by node (a scene part's `"split": "nodes"`):
+/// every mesh instance on its own, placed as by load_meshes, with the path of
+/// the node holding it: node names (scene/node_names.h: escaped, unnamed and
+/// repeated siblings numbered) joined by '/', from the root's children down;
+/// the root's own meshes are named by the root as if it were its first child.
+struct NodeMeshes {
+  std::vector<Mesh> meshes;
+  std::vector<std::string> nodes;  ///< per mesh, its node path
+};
+NodeMeshes load_node_meshes(const std::string& path, std::vector<std::string>* warnings = nullptr);
+/// load_node_meshes from a file's bytes (as read_meshes).
+NodeMeshes read_node_meshes(std::string_view bytes, const std::string& extension,
+                            std::vector<std::string>* warnings = nullptr);
+
+/// One mesh of `pieces`: vertices concatenated, triangle indices offset.
+Mesh join_meshes(const std::vector<Mesh>& pieces);
+
 /// Reads a mesh file's bytes in this process (no time limit, no isolation; for
 /// tests of the PLY check: runs read files by path, load_meshes): a PLY (recognized by its first
 /// line, whatever the hint) is checked and, where Debian's assimp 5.2.5 would misread it, handed
@@ -54,6 +71,11 @@ constexpr double kAutoLoadMemory = -1.0;
 struct MeshRequest {
   std::string path;
   bool split_instances = false;
+  /// load_node_meshes: every instance with its node path (LoadedMeshes::nodes).
+  bool by_node = false;
+  /// With by_node: only the distinct node paths, in file order, no meshes (the
+  /// loader reads the whole file; only the names cross the pipe).
+  bool node_names_only = false;
 };
 
 /// What load_meshes returned, or why the file cannot be used (names the file).
@@ -61,6 +83,8 @@ struct LoadedMeshes {
   std::vector<Mesh> meshes;
   std::optional<std::string> error;
   std::vector<std::string> warnings;  ///< load_meshes' warnings
+  /// by_node: per mesh its node path; node_names_only: the distinct paths.
+  std::vector<std::string> nodes;
 };
 
 /// Tests only (fault injection): runs in a loader process before it reads the

@@ -37,14 +37,23 @@ namespace {
 
 // A payload: 'E' and the reason, or 'M', the mesh count, then per mesh its
 // vertex and triangle counts and raw arrays, then the warning count and per
-// warning its length and bytes (this machine's byte order: the reader is a
-// fork of the writer).
+// warning its length and bytes, then the node path count and the paths alike
+// (this machine's byte order: the reader is a fork of the writer).
 template <class T>
 void put(std::string& out, const T& v) {
   out.append(reinterpret_cast<const char*>(&v), sizeof v);
 }
 
-std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::string>& warnings) {
+void put_strings(std::string& out, const std::vector<std::string>& list) {
+  put(out, std::uint64_t(list.size()));
+  for (const std::string& w : list) {
+    put(out, std::uint64_t(w.size()));
+    out += w;
+  }
+}
+
+std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::string>& warnings,
+                   const std::vector<std::string>& nodes) {
   size_t bytes = 1 + 8;
   for (const Mesh& m : meshes)
     bytes += 16 + m.vertices.size() * sizeof(double) + m.triangles.size() * sizeof(int);
@@ -59,11 +68,8 @@ std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::strin
                m.vertices.size() * sizeof(double));
     out.append(reinterpret_cast<const char*>(m.triangles.data()), m.triangles.size() * sizeof(int));
   }
-  put(out, std::uint64_t(warnings.size()));
-  for (const std::string& w : warnings) {
-    put(out, std::uint64_t(w.size()));
-    out += w;
-  }
+  put_strings(out, warnings);
+  put_strings(out, nodes);
   return out;
 }
 
@@ -80,6 +86,18 @@ struct Reader {
     T v;
     take(&v, sizeof v);
     return v;
+  }
+  std::vector<std::string> strings() {
+    std::vector<std::string> out;
+    const auto n = get<std::uint64_t>();
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const auto len = get<std::uint64_t>();
+      if (len > s.size()) throw std::runtime_error("malformed answer from the loader process");
+      std::string w(len, '\0');
+      take(w.data(), len);
+      out.push_back(std::move(w));
+    }
+    return out;
   }
 };
 
@@ -104,14 +122,8 @@ LoadedMeshes decode(const std::string& payload) {
     r.take(m.triangles.data(), m.triangles.size() * sizeof(int));
     out.meshes.push_back(std::move(m));
   }
-  const auto nw = r.get<std::uint64_t>();
-  for (std::uint64_t k = 0; k < nw; ++k) {
-    const auto len = r.get<std::uint64_t>();
-    if (len > payload.size()) throw std::runtime_error("malformed answer from the loader process");
-    std::string w(len, '\0');
-    r.take(w.data(), len);
-    out.warnings.push_back(std::move(w));
-  }
+  out.warnings = r.strings();
+  out.nodes = r.strings();
   return out;
 }
 
@@ -133,8 +145,14 @@ std::string load_one(const MeshRequest& f, double memory_mb) {
   (void)tuned;
   try {
     std::vector<std::string> warnings;
-    std::vector<Mesh> meshes = load_meshes(f.path, f.split_instances, &warnings);
-    return encode(meshes, warnings);
+    if (!f.by_node) return encode(load_meshes(f.path, f.split_instances, &warnings), warnings, {});
+    NodeMeshes read = load_node_meshes(f.path, &warnings);
+    if (!f.node_names_only) return encode(read.meshes, warnings, read.nodes);
+    // A node's meshes come together (collect_by_node), and paths are unique.
+    std::vector<std::string> names;
+    for (std::string& n : read.nodes)
+      if (names.empty() || names.back() != n) names.push_back(std::move(n));
+    return encode({}, warnings, names);
   } catch (const MeshError& e) {
     return std::string("E") + e.what();
   } catch (const std::bad_alloc&) {
@@ -190,7 +208,7 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
     try {
       out[k] = decode(payload);
     } catch (const std::exception& e) {
-      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what(), {}};
+      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what(), {}, {}};
     }
   };
   QueueOptions queue{loaders, timeout, {}, {}};

@@ -20,6 +20,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/sag_cache.h"
 #include "scene/setup_warnings.h"
+#include "scene/split_nodes.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -37,11 +38,13 @@ std::string instance_key(const PartSpec& s) {
   k.precision(17);
   k << *s.mesh << '|' << s.to_scene_units << '|' << int(s.pieces);
   for (int i = 0; i < 16; ++i) k << '|' << s.transform(i / 4, i % 4);
+  if (s.node) k << '\0' << *s.node;  // '\0': no path or name holds it
   return k.str();
 }
 
+// The geometry a MeshFile holds: a file, or one node's meshes in it.
 std::string file_key(const PartSpec& s) {
-  return *s.mesh + '|' + std::to_string(int(s.pieces));
+  return *s.mesh + '|' + std::to_string(int(s.pieces)) + (s.node ? '\0' + *s.node : "");
 }
 
 std::string load_error(const PartSpec& spec, const std::exception& e) {
@@ -129,11 +132,41 @@ std::string file_hash(const std::string& path, const PartsCache& cache) {
   return file_content_hash(path);
 }
 
+// The cache key of a part's geometry: its file's content hash, and for a node
+// part the node path with it (a node's hulls, sag and convexity are its own).
+std::string geometry_hash(const PartSpec& spec, const PartsCache& cache) {
+  const std::string file = file_hash(*spec.mesh, cache);
+  if (!spec.node) return file;
+  return Hasher().add("pdcheck-node-v1").add(file).add(*spec.node).hex();
+}
+
+// A node part's meshes, from its file read by node: those of its node, joined
+// into one unless `split_instances`.
+LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_node,
+                       const PartSpec& spec) {
+  LoadedMeshes out;
+  out.warnings = file.warnings;
+  out.error = file.error;
+  if (file.error) return out;
+  if (of_node.empty()) {
+    out.error = "cannot load mesh file " + *spec.mesh + ": it has no node \"" + *spec.node +
+                "\" (the file changed since the scene part was split?)";
+    return out;
+  }
+  std::vector<Mesh> meshes;
+  for (size_t k : of_node) meshes.push_back(file.meshes[k]);
+  if (spec.pieces == Pieces::kMeshes || meshes.size() == 1)
+    out.meshes = std::move(meshes);
+  else
+    out.meshes = {join_meshes(meshes)};
+  return out;
+}
+
 // The file's hulls from the cache, when an earlier run (or another shard on
 // this machine) stored them: true if found.
 bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   if (cache.dir.empty()) return false;
-  f.hash = file_hash(*spec.mesh, cache);
+  f.hash = geometry_hash(spec, cache);
   auto hit = read_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes));
   if (!hit) return false;
   f.counts = std::move(hit->counts);
@@ -146,7 +179,7 @@ bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
 // The file's sag from the cache, when an earlier run stored it: true if found.
 bool cached_sag(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   if (cache.dir.empty()) return false;
-  if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
+  if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
   auto hit = read_cached_sag(cache.dir, sag_key(f.hash, spec.pieces == Pieces::kMeshes));
   if (!hit) return false;
   f.sag = std::move(*hit);
@@ -186,7 +219,7 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     if (auto_tol && !f.sag) {
       f.sag = file_sag(meshes);
       if (!cache.dir.empty()) {
-        if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
+        if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
         write_cached_sag(cache.dir, sag_key(f.hash, spec.pieces == Pieces::kMeshes), *f.sag);
       }
     }
@@ -194,7 +227,7 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     f.concavity_tol = concavity_tol;
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
-      if (f.hash.empty()) f.hash = file_hash(*spec.mesh, cache);
+      if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
       // Measured once, in file units; each instance scales the value by its own
       // stretch. Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
@@ -249,6 +282,10 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
   part.mode = spec.pieces;
+  if (spec.error) {
+    part.error = spec.error;
+    return part;
+  }
   if (file) {
     std::call_once(file->loaded, [&] {
       load(spec, *file, concavity_tol, cache, auto_tol);
@@ -330,7 +367,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     unique.push_back(&spec);
     users.push_back(1);
     file_of.emplace_back();
-    if (spec.mesh) file_of.back() = files.emplace(file_key(spec), files.size()).first->second;
+    if (spec.mesh && !spec.error)
+      file_of.back() = files.emplace(file_key(spec), files.size()).first->second;
   }
 
   // Hulls are independent: qhull_r keeps its state per run, each assimp
@@ -343,19 +381,30 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   // Every mesh file is read first, in loader processes: forked here, while
   // this process has one thread (see mesh_loader_processes.cpp).
   // A file whose hulls are cached is read only when its surface is kept.
+  // A split file is read once, by node, for all its node parts.
   std::vector<MeshRequest> requests;
-  std::vector<size_t> requested;  // per request: its file
-  std::vector<bool> planned(files.size(), false);
+  std::vector<std::vector<size_t>> requested;  // per request: its files
+  std::vector<const PartSpec*> file_spec(files.size());
+  std::map<std::string, size_t> by_node;  // a split file's path -> its request
   for (size_t u = 0; u < unique.size(); ++u) {
-    if (!file_of[u] || planned[*file_of[u]]) continue;
+    if (!file_of[u] || file_spec[*file_of[u]]) continue;
     const size_t f = *file_of[u];
-    planned[f] = true;
+    file_spec[f] = unique[u];
     if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces) &&
         (!auto_tol || cached_sag(*unique[u], mesh_files[f], cache)))
       continue;
     if (auto_tol) cached_sag(*unique[u], mesh_files[f], cache);
+    if (unique[u]->node) {
+      const auto [it, fresh] = by_node.emplace(*unique[u]->mesh, requests.size());
+      if (fresh) {
+        requests.push_back({*unique[u]->mesh, true, true, false});
+        requested.emplace_back();
+      }
+      requested[it->second].push_back(f);
+      continue;
+    }
     requests.push_back({*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes});
-    requested.push_back(f);
+    requested.push_back({f});
   }
   for (size_t u = 0; u < unique.size(); ++u)
     if (file_of[u]) {
@@ -367,7 +416,22 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   if (!requests.empty()) {
     std::vector<LoadedMeshes> read =
         load_meshes_isolated(requests, threads, load_timeout, load_memory_mb, before_load);
-    for (size_t r = 0; r < read.size(); ++r) mesh_files[requested[r]].read = std::move(read[r]);
+    for (size_t r = 0; r < read.size(); ++r) {
+      if (!requests[r].by_node) {
+        mesh_files[requested[r][0]].read = std::move(read[r]);
+        continue;
+      }
+      std::map<std::string, std::vector<size_t>> meshes_of_node;
+      for (size_t m = 0; m < read[r].nodes.size(); ++m)
+        meshes_of_node[read[r].nodes[m]].push_back(m);
+      for (size_t f : requested[r]) {
+        const auto it = meshes_of_node.find(*file_spec[f]->node);
+        mesh_files[f].read =
+            node_read(read[r], it == meshes_of_node.end() ? std::vector<size_t>{} : it->second,
+                      *file_spec[f]);
+      }
+      read[r] = {};
+    }
   }
   parallel_for(unique.size(), threads, [&](size_t u) {
     built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr,
@@ -397,6 +461,7 @@ std::vector<Part> load_scene_parts(const std::string& path, const std::optional<
                                    std::optional<double> tolerance, int threads,
                                    double load_timeout) {
   SceneSpec scene = load_scene_file(path, units, threads);
+  split_node_parts(scene, {threads, load_timeout, kAutoLoadMemory, {}, ""});
   if (tolerance) scene.tolerance = *tolerance;
   return build_parts(scene, threads, {}, load_timeout);
 }

@@ -63,6 +63,14 @@ struct PartSpec {
   /// `/`-separated product path ("wing/rib-7/bracket"; "" = none).
   std::vector<std::string> tags;
   std::string group;
+  /// `"split": "nodes"`: the scene part stands for one part per node of its
+  /// mesh file, made by split_node_parts before anything plans with parts.
+  bool split_nodes = false;
+  /// A node part (split_node_parts): the node path of its meshes in `mesh`.
+  std::optional<std::string> node;
+  /// Why the part cannot be built, known before its geometry is read (a split
+  /// part whose file cannot be read: it stays one part, with this error).
+  std::optional<std::string> error;
 };
 
 /// `"tolerance": "auto"` (docs/numerics.md, "Tessellation sag"): each pair's
@@ -192,6 +200,8 @@ void override_pieces(SceneSpec& s, Pieces p);
 void attach_rules(SceneSpec& s, Rules rules);
 
 /// Checks that ids are unique and pairs name known parts (throws SceneError).
+/// Before split_node_parts (scene/split_nodes.h), an id under a split part
+/// ("<id>/...") counts as known; split_node_parts checks again.
 void validate_scene(const SceneSpec& s);
 
 }  // namespace pd

@@ -20,6 +20,7 @@
 #include "scene/json_split.h"
 #include "scene/json_strict.h"
 #include "scene/scene.h"
+#include "scene/split_nodes.h"
 #include "scene/units.h"
 #include "scene/vertex_scan.h"
 
@@ -140,9 +141,9 @@ void part_labels(const Ctx& c, const json& j, const std::string& at, PartSpec& p
 PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::string& base_dir,
               const std::string& scene_units, std::optional<Points>* scanned) {
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
-  only_keys(
-      c, j, at,
-      {"id", "mesh", "vertices", "units", "transform", "pieces", "motion", "sag", "tags", "group"});
+  only_keys(c, j, at,
+            {"id", "mesh", "vertices", "units", "transform", "pieces", "motion", "sag", "tags",
+             "group", "split"});
   PartSpec p;
   p.where = c.file + ": " + at;
   if (!j.contains("id")) c.fail(at, "missing \"id\"");
@@ -181,6 +182,12 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     p.pieces = *mode;
     if ((p.pieces == Pieces::kMeshes || p.pieces == Pieces::kDecompose) && !has_mesh)
       c.fail(at + ".pieces", "\"" + v + "\" needs a mesh file");
+  }
+  if (j.contains("split")) {
+    const std::string v = string(c, j["split"], at + ".split");
+    if (v != "nodes") c.fail(at + ".split", "expected \"nodes\", got \"" + v + "\"");
+    if (!has_mesh) c.fail(at + ".split", "\"nodes\" needs a mesh file");
+    p.split_nodes = true;
   }
   return p;
 }
@@ -660,7 +667,7 @@ void validate_scene(const SceneSpec& s) {
     for (size_t k = 0; k < s.pairs->size(); ++k) {
       const auto& [a, b] = (*s.pairs)[k];
       for (const auto& id : {a, b})
-        if (!ids.count(id))
+        if (!ids.count(id) && !under_unsplit_part(s, id))
           throw SceneError(s.path + ": pairs[" + std::to_string(k) + "]: unknown part id \"" + id +
                            "\"");
       if (a == b)
@@ -670,7 +677,7 @@ void validate_scene(const SceneSpec& s) {
   if (s.checks.clearance) {
     for (size_t k = 0; k < s.checks.clearance->pairs.size(); ++k)
       for (const auto& id : {s.checks.clearance->pairs[k].a, s.checks.clearance->pairs[k].b})
-        if (!ids.count(id))
+        if (!ids.count(id) && !under_unsplit_part(s, id))
           throw SceneError(s.path + ": checks.clearance.pairs[" + std::to_string(k) +
                            "]: unknown part id \"" + id + "\"");
   }
