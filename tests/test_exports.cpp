@@ -4,6 +4,7 @@
 // xmllint) and its zip layout listed; the same bytes for the same input, in
 // any time zone, and from a merge of shards as from the unsharded run.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -128,8 +129,10 @@ std::string scene(const std::string& name, double lid_z) {
   return write_temp(name, json{{"units", "mm"}, {"tolerance", 0.1}, {"parts", parts}}.dump());
 }
 
+// A path of this test process's own: other test processes (sanitizer builds,
+// worktrees) may run these tests at the same time.
 std::string tmp(const std::string& name) {
-  const std::string p = testing::TempDir() + name;
+  const std::string p = testing::TempDir() + "pdcheck" + std::to_string(getpid()) + "_" + name;
   std::remove(p.c_str());
   return p;
 }
@@ -381,7 +384,7 @@ TEST(Exports, EveryStatusGivesAValidBcf) {
   const pd::Review review = pd::review_run(run, opt, true);
   const std::string path = tmp("exports_statuses.bcf");
   std::ofstream(path, std::ios::binary) << pd::render_bcf({ctx, run, review, opt});
-  const std::string dir = testing::TempDir() + "exports_statuses";
+  const std::string dir = tmp("exports_statuses");
   const std::vector<std::string> topics = check_bcf(path, dir);
   // The interference (c, d) and the clearance violation (d, e) both move d
   // along −z: one finding group, one topic keyed by the group's id, its
@@ -494,7 +497,7 @@ TEST(Exports, CsvAndBcfMatchTheReport) {
   EXPECT_NE(all.find("\"press fit, drawing \"\"4711\"\"\""), std::string::npos);
   EXPECT_EQ(rows.size(), 5u);  // lid, bushing, pin, ell/block
 
-  const std::string dir = testing::TempDir() + "exports_bcf";
+  const std::string dir = tmp("exports_bcf");
   const std::vector<std::string> topics = check_bcf(bcf, dir);
   std::set<std::string> want;
   for (const std::string& fp : needs_topic) want.insert(pd::bcf_guid("topic", fp));
@@ -566,7 +569,7 @@ TEST(Exports, ShardsMergedWriteTheUnshardedExports) {
   ASSERT_EQ(m.code, 1) << m.err;
   EXPECT_EQ(read_text(mcsv), read_text(csv));
   EXPECT_TRUE(read_text(mbcf) == read_text(bcf)) << "the merged BCF differs from the run's";
-  EXPECT_EQ(check_bcf(mbcf, testing::TempDir() + "exports_merged_bcf").size(), 3u);
+  EXPECT_EQ(check_bcf(mbcf, tmp("exports_merged_bcf")).size(), 3u);
 
   const CliResult refused = pdcheck(s + " -q --shard 1/3 -o /dev/null --bcf " + tmp("x.bcf"));
   EXPECT_EQ(refused.code, 2);
