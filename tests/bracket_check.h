@@ -20,9 +20,12 @@ struct BracketTally {
 };
 
 /// The exact reference's own rounding (qhull's facet offsets, its closest
-/// point): the slack allowed on its side of each comparison, far below the
-/// kEpaRounding the lower bound already subtracts.
-inline constexpr double kExactRounding = 2e-15;
+/// point): the slack allowed on its side of each comparison. It is of the
+/// order of kGapRounding, the rounding of a gap at unit scale below which a
+/// depth counts as contact: a touching pair's exact depth of 1.4e-14 and a
+/// bracket's upper end of 0.94e-14 differ by rounding alone (seen under clang
+/// with ASan: its code rounds differently from gcc's at that level).
+inline constexpr double kExactRounding = tol::kGapRounding;
 
 inline void expect_bracket_holds(const std::string& what, const Points& a, const Points& b,
                                  BracketTally* tally = nullptr) {
