@@ -84,6 +84,12 @@ inline constexpr double kEpaBracket = 2 * kEpaRounding;
 /// pair. Past them the bracket so far seeds MLSL, which decides as before.
 inline constexpr int kGjkMaxIterations = 64;
 inline constexpr int kEpaMaxIterations = 400;
+/// A certified EPA depth (unit frame) below this is recomputed exactly from the
+/// input coordinates (solve/exact_facet.h): the bracket's width kEpaBracket and
+/// the unit frame's rounding (~1e-16) are then more than 2e-10 of the depth,
+/// and the exact step brings the error to one rounding of the result. Above
+/// it the certified bracket alone is within 2e-10 relative.
+inline constexpr double kExactFacetDepth = 1e-4;
 
 /// A vertex counts as active at a direction v when its support value is within
 /// this of the extreme value; used to read the optimal facet off a local solve.

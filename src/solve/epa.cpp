@@ -30,6 +30,7 @@ struct Face {
 class Polytope {
  public:
   std::vector<Vec3> x;
+  std::vector<MinkowskiIndex> id;  // each vertex's p_i − q_j, for the exact step
   std::vector<Face> faces;
   // Scratch of one expansion, kept across expansions (allocations were a tenth
   // of a 30+30 pair's time under perf).
@@ -38,6 +39,7 @@ class Polytope {
 
   Polytope() {
     x.reserve(64);
+    id.reserve(64);
     faces.reserve(128);
   }
 
@@ -92,7 +94,7 @@ class Polytope {
   // False when the step cannot (the boundary is not a simple cycle, or a new
   // face is degenerate): the polytope may then be partly rebuilt and is not
   // used again.
-  bool expand(int start, const Vec3& w, int pass) {
+  bool expand(int start, const Vec3& w, const MinkowskiIndex& wid, int pass) {
     removed.assign(1, start);
     horizon.clear();
     faces[start].pass = pass;
@@ -113,6 +115,7 @@ class Polytope {
     for (int f : removed) faces[f].alive = false;
     const int wi = static_cast<int>(x.size());
     x.push_back(w);
+    id.push_back(wid);
     const int first = static_cast<int>(faces.size());
     for (size_t i = 0; i < h; ++i) {
       // The kept face's edge (from → to) is (to → from) in the new face.
@@ -143,11 +146,16 @@ class Polytope {
 // The four faces of GJK's tetrahedron, outward. The origin may lie on a face or
 // an edge of it (symmetric pairs): the expansion lifts such faces first, since
 // they are the nearest. False when the tetrahedron is flat.
-bool start_polytope(Polytope& poly, const std::array<Vec3, 4>& t) {
+bool start_polytope(Polytope& poly, const std::array<Vec3, 4>& t,
+                    const std::array<MinkowskiIndex, 4>& ids) {
   poly.x.assign(t.begin(), t.end());
+  poly.id.assign(ids.begin(), ids.end());
   const double volume = (t[1] - t[0]).cross(t[2] - t[0]).dot(t[3] - t[0]);
   if (volume == 0) return false;
-  if (volume > 0) std::swap(poly.x[1], poly.x[2]);
+  if (volume > 0) {
+    std::swap(poly.x[1], poly.x[2]);
+    std::swap(poly.id[1], poly.id[2]);
+  }
   // Now vertex 3 lies below face (0, 1, 2): every face below is outward.
   static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
   for (const auto& f : kFaces)
@@ -166,6 +174,25 @@ bool start_polytope(Polytope& poly, const std::array<Vec3, 4>& t) {
   return true;
 }
 
+// A closed bracket at a depth where its width is a sizeable fraction of it:
+// the faces an exact recomputation must look at (solve/exact_facet.h), those
+// whose bound is within 4·kEpaRounding of the nearest one's. Every other face
+// is farther than the nearest by more than the rounding of the unit frame and
+// of its bound (each below kEpaRounding), exactly too.
+void keep_near_faces(const Polytope& poly, const Face& nearest, DepthBracket& b) {
+  if (!(b.upper < tol::kExactFacetDepth)) return;
+  b.nearest_low = nearest.low;
+  for (const Face& f : poly.faces) {
+    if (!f.alive || f.low > nearest.low + 4 * tol::kEpaRounding) continue;
+    if (b.near_faces.size() == kMaxNearFaces) {
+      b.near_faces.clear();  // too many near-tied faces: no exact step
+      return;
+    }
+    b.near_faces.push_back({poly.id[f.v[0]], poly.id[f.v[1]], poly.id[f.v[2]]});
+  }
+  b.vertices = poly.id;
+}
+
 }  // namespace
 
 DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
@@ -180,7 +207,7 @@ DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
   }
   if (g.outcome != GjkResult::Outcome::kEnclosed) return b;
   Polytope poly;
-  if (!start_polytope(poly, g.tetrahedron)) return b;
+  if (!start_polytope(poly, g.tetrahedron, g.tetrahedron_ids)) return b;
   for (int it = 0; it < max_iterations; ++it) {
     const int f = poly.nearest();
     const Face face = poly.faces[f];
@@ -191,19 +218,23 @@ DepthBracket epa_bracket(const PairProblem& pr, int max_iterations) {
     // tetrahedron) the expansion lifts the nearest face and no bound is taken.
     if (face.low > tol::kEpaRounding) b.lower = std::max(b.lower, face.low - tol::kEpaRounding);
     Vec3 w;
-    const double h = pr.support(face.n, w);
+    MinkowskiIndex wid;
+    const double h = pr.support(face.n, w, wid);
     if (h < b.upper) {
       b.upper = h;
       b.direction = face.n;
     }
-    if (b.certified()) return b;
+    if (b.certified()) {
+      keep_near_faces(poly, face, b);
+      return b;
+    }
     // w must lie beyond the nearest face for the polytope to grow towards D's
     // boundary; otherwise the face is a facet up to a normal too rounded to
     // close the bracket (or, before the origin is enclosed, the pair touches
     // on that face's plane), and MLSL takes over from here.
     if (!poly.visible(face, w)) return b;
     b.iterations = it + 1;
-    if (!poly.expand(f, w, it)) return b;
+    if (!poly.expand(f, w, wid, it)) return b;
   }
   return b;
 }

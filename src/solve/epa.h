@@ -27,9 +27,14 @@
 // settled without EPA.
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "solve/objective.h"
 
 namespace pd {
+
+inline constexpr std::size_t kMaxNearFaces = 64;
 
 struct DepthBracket {
   /// depth >= lower: EPA's bound, else GJK's −|x| (the signed minimum of the gap
@@ -40,6 +45,17 @@ struct DepthBracket {
   Vec3 direction = Vec3::UnitZ();
   bool separated = false;  ///< upper <= 0: the hulls are apart or touch (depth 0)
   int iterations = 0;      ///< EPA expansions
+
+  /// A certified bracket whose upper end is below kExactFacetDepth: the
+  /// polytope's faces (vertex indices, counter-clockwise seen from outside)
+  /// whose bound is within 4·kEpaRounding of the nearest face's bound
+  /// `nearest_low`; every other face is farther than the depth, exactly too.
+  /// solve/exact_facet.h recomputes the depth from them exactly. Empty
+  /// otherwise, or when more than kMaxNearFaces faces are that near.
+  std::vector<std::array<MinkowskiIndex, 3>> near_faces;
+  double nearest_low = 0.0;
+  /// With near_faces: every vertex of the polytope (solve/exact_hull_depth.h).
+  std::vector<MinkowskiIndex> vertices;
 
   /// The bracket is closed to rounding: upper is the depth within kEpaBracket.
   bool certified() const;

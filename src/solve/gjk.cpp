@@ -13,6 +13,7 @@ namespace {
 // The simplex: up to four support points of D.
 struct Simplex {
   std::array<Vec3, 4> x;
+  std::array<MinkowskiIndex, 4> id;  // where each point came from (for EPA's exact step)
   int size = 0;
 };
 
@@ -20,7 +21,10 @@ struct Simplex {
 Simplex without(const Simplex& s, int k) {
   Simplex f;
   for (int i = 0; i < s.size; ++i)
-    if (i != k) f.x[f.size++] = s.x[i];
+    if (i != k) {
+      f.id[f.size] = s.id[i];
+      f.x[f.size++] = s.x[i];
+    }
   return f;
 }
 
@@ -105,9 +109,11 @@ class Search {
     Vec3 d = inner.squaredNorm() > 0 ? Vec3(-inner) : Vec3(Vec3::UnitX());
     double last = std::numeric_limits<double>::infinity();  // |nearest|² of the simplex
     Vec3 w;
-    while (probe(d.normalized(), w)) {
+    MinkowskiIndex id;
+    while (probe(d.normalized(), w, id)) {
       if (std::find(s_.x.begin(), s_.x.begin() + s_.size, w) != s_.x.begin() + s_.size)
         return r_;  // no new point: the origin is on D's boundary (to rounding)
+      s_.id[s_.size] = id;
       s_.x[s_.size++] = w;
       const Vec3 x = nearest(s_);
       if (s_.size == 4) return enclosed();
@@ -125,9 +131,9 @@ class Search {
  private:
   // Evaluates the support in unit v into w, keeping the lowest gap. False when
   // the search is over: v separates (gap <= 0), or the budget is spent.
-  bool probe(const Vec3& v, Vec3& w) {
+  bool probe(const Vec3& v, Vec3& w, MinkowskiIndex& id) {
     if (evaluations_++ >= budget_) return false;
-    const double g = pr_.support(v, w);
+    const double g = pr_.support(v, w, id);
     if (g < r_.gap) {
       r_.gap = g;
       r_.direction = v;
@@ -140,6 +146,7 @@ class Search {
   GjkResult enclosed() {
     r_.outcome = GjkResult::Outcome::kEnclosed;
     r_.tetrahedron = s_.x;
+    r_.tetrahedron_ids = s_.id;
     return r_;
   }
 
@@ -150,11 +157,13 @@ class Search {
   // origin (its gap is about 0, kept in r_): the pair touches.
   GjkResult complete() {
     Vec3 w;
+    MinkowskiIndex id;
     while (s_.size < 4) {
       if (s_.size == 1) return r_;  // a support point at the origin: gap(v) = v·w ≈ 0
       const Vec3 v = off_span(s_);
-      if (v == Vec3::Zero() || !probe(v, w)) return r_;
+      if (v == Vec3::Zero() || !probe(v, w, id)) return r_;
       if (!(v.dot(w) > v.dot(s_.x[0]) + tol::kEpaRounding)) return r_;
+      s_.id[s_.size] = id;
       s_.x[s_.size++] = w;
     }
     return enclosed();

@@ -34,6 +34,7 @@ struct GjkResult {
   /// unit v). −inf before the first simplex.
   double lower = -std::numeric_limits<double>::infinity();
   std::array<Vec3, 4> tetrahedron;  ///< kEnclosed: support points of D around the origin
+  std::array<MinkowskiIndex, 4> tetrahedron_ids;  ///< their vertex indices
 };
 
 /// At most `max_iterations` support evaluations.

@@ -62,9 +62,11 @@ DepthSolution solve_convex_pair(const Points& a, const Points& b, const SolverSe
     case Method::kExact:
       sol = exact_depth(pr.p(), pr.q());
       break;
-    case Method::kMlsl:
-      sol = mlsl_depth(pr, ipopt, s);
+    case Method::kMlsl: {
+      const InputPoints input{a, b};
+      sol = mlsl_depth(pr, ipopt, s, &input);
       break;
+    }
     case Method::kMlslPaper:
       sol = mlsl_paper_depth(pr, ipopt, s);
       break;

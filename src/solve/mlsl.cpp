@@ -10,6 +10,8 @@
 #include "solve/cap_subdivision.h"
 #include "solve/certificate.h"
 #include "solve/epa.h"
+#include "solve/exact_facet.h"
+#include "solve/exact_hull_depth.h"
 #include "solve/facet_snap.h"
 #include "solve/local_search.h"
 #include "solve/neighbourhood.h"
@@ -207,9 +209,10 @@ bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& st
 // the best direction so far, with one method per phase.
 class MlslSearch {
  public:
-  MlslSearch(const PairProblem& pr, const SolverSettings& s)
+  MlslSearch(const PairProblem& pr, const SolverSettings& s, const InputPoints* input)
       : pr_(pr),
         s_(s),
+        input_(input),
         t0_(Clock::now()),
         directions_(s.seed),
         smoothing_excess_(std::log(double(pr.p().cols())) + std::log(double(pr.q().cols()))) {
@@ -249,6 +252,7 @@ class MlslSearch {
     const DepthBracket bracket = s_.epa ? epa_bracket(pr_, tol::kEpaMaxIterations) : DepthBracket{};
     if (const auto why = bracket_decides(bracket)) {
       best_ = {bracket.direction, bracket.upper};
+      if (*why == StopReason::kEpaCertificate) exact_step(bracket);
       return why;
     }
     if (std::isfinite(bracket.upper)) add_sample(bracket.direction, bracket.upper);
@@ -304,6 +308,17 @@ class MlslSearch {
   }
 
  private:
+  // A closed bracket at a small depth: its facet's distance exactly from the
+  // input coordinates, when its near faces prove it (else the bracket stands).
+  void exact_step(const DepthBracket& bracket) {
+    if (!input_ || bracket.near_faces.empty()) return;
+    const double scale = pr_.frame().scale;
+    auto e = exact_facet_depth(input_->a, input_->b, bracket.near_faces,
+                               (bracket.nearest_low + 2 * tol::kEpaRounding) * scale);
+    if (!e) e = exact_hull_depth(input_->a, input_->b, bracket.vertices);
+    if (e) best_ = {e->direction, e->depth / scale};
+  }
+
   void consider(const Vec3& v, double g) {
     if (g < best_.gap) best_ = {v, g};
   }
@@ -362,6 +377,7 @@ class MlslSearch {
 
   const PairProblem& pr_;
   const SolverSettings& s_;
+  const InputPoints* input_;
   const Clock::time_point t0_;
   SampleDirections directions_;
   const double smoothing_excess_;
@@ -374,8 +390,9 @@ class MlslSearch {
   bool contact_certified_ = false, tried_certificate_ = false;
 };
 
-DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s) {
-  MlslSearch search(pr, s);
+DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s,
+                         const InputPoints* input) {
+  MlslSearch search(pr, s, input);
   if (const auto why = search.seed()) return search.stop(*why);
   if (const StopReason why = search.settled(); why != StopReason::kNone) return search.stop(why);
   StopReason why = StopReason::kCap;  // unless the Bayesian rule stops the loop

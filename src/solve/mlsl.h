@@ -14,7 +14,15 @@ namespace pd {
 /// pdcheck's MLSL: samples uniform on the unit sphere, geodesic distances (no
 /// pole, no wrap-around), the single-linkage start rule, the Bayesian stopping
 /// rule over the reduced sample, and fast_local_search. Result in the unit frame.
-DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s);
+/// `input`, when given, holds the pair's input coordinates (the points pr was
+/// built from): a closed bracket at a small depth is then recomputed exactly
+/// from them (solve/exact_facet.h).
+struct InputPoints {
+  const Points& a;
+  const Points& b;
+};
+DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s,
+                         const InputPoints* input = nullptr);
 
 /// Proves that (v, gap) is the global minimum of the gap (solve/certificate.h),
 /// replacing it by a lower facet when one exists; false when the open region is

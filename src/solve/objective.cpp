@@ -25,6 +25,15 @@ double PairProblem::support(const Vec3& v, Vec3& point) const {
   return g;
 }
 
+double PairProblem::support(const Vec3& v, Vec3& point, MinkowskiIndex& id) const {
+  ++evaluations_;
+  Eigen::Index i = 0, j = 0;
+  const double g = p_soa_.max_dot(v, &i) - q_soa_.min_dot(v, &j);
+  point = p_.col(i) - q_.col(j);
+  id = {static_cast<int>(i), static_cast<int>(j)};
+  return g;
+}
+
 void PairProblem::gaps(const Vec3* v, size_t count, double* out) const {
   evaluations_ += static_cast<long>(count);
   thread_local std::vector<double> low;  // max_i −q_i·v = −min_j q_j·v

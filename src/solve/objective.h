@@ -18,6 +18,12 @@
 
 namespace pd {
 
+/// A point of P − Q by its parts' vertex indices: p_i − q_j (a_i − b_j in the
+/// world), so that it can be recomputed from the input coordinates.
+struct MinkowskiIndex {
+  int i = -1, j = -1;
+};
+
 /// A pair in its unit frame (see geometry/frame.h). P is part a, Q is part b.
 class PairProblem {
  public:
@@ -36,6 +42,8 @@ class PairProblem {
   /// gap(v), bit for bit, and the support point p_i − q_j of P − Q at v (the
   /// first extreme vertices, as gap finds them); counts one evaluation.
   double support(const Vec3& v, Vec3& point) const;
+  /// The same, with the indices (i, j) of the two vertices: point = p_i − q_j.
+  double support(const Vec3& v, Vec3& point, MinkowskiIndex& id) const;
   /// gap(v[k]) for k < count into out, bit for bit; counts `count` evaluations.
   void gaps(const Vec3* v, size_t count, double* out) const;
   long evaluations() const { return evaluations_; }

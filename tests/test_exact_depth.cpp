@@ -1,0 +1,187 @@
+// Exact depths on the input doubles (issue 29): the exact rational reference
+// (corpus/exact_reference.h) against analytic depths, the exact step of a
+// closed EPA bracket (solve/exact_facet.h), and the default method against the
+// exact reference on near-degenerate pairs — touching, coplanar, 1e-9 and 1e-12
+// offsets, rotated, float32 far from the origin, flat parts, the hard cases:
+// within 1e-9 relative, with no floor but the contact rounding below which
+// pdcheck reports 0 (kGapRounding of the pair's scale, docs/numerics.md).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cstdio>
+
+#include "box_points.h"
+#include "corpus/exact_reference.h"
+#include "corpus/generators.h"
+#include "geometry/frame.h"
+#include "solve/epa.h"
+#include "solve/exact_facet.h"
+#include "solve/methods.h"
+#include "tolerances.h"
+
+using namespace pd;
+
+namespace {
+
+Points box(const Vec3& lo, const Vec3& hi) {
+  return pd_test::box_points(lo, hi);
+}
+
+Eigen::Matrix3d random_rotation(SphereSampler& r) {
+  return Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
+}
+
+// b's lowest x at 1 − eps (a is the unit cube), moved by (0, y, z).
+Points against(const Points& b, double eps, double y, double z) {
+  return (b.colwise() + Vec3(1 - eps - b.row(0).minCoeff(), y, z)).eval();
+}
+
+struct Tally {
+  int pairs = 0, exact_step = 0;
+};
+
+// The default method's depth against the exact reference: within 1e-9
+// relative, or both at or below the contact rounding (reported 0 by rule).
+void expect_default_exact(const std::string& what, const Points& a, const Points& b, Tally& t) {
+  static IpoptLocalSolver ipopt;
+  const DepthSolution m = solve_convex_pair(a, b, SolverSettings{}, ipopt);
+  const testgen::ExactReference e = testgen::exact_reference_depth(a, b);
+  const double contact = tol::kGapRounding * pair_frame(a, b).scale;
+  char text[240];
+  std::snprintf(text, sizeof text, "%s: exact %.17g, default %.17g (%s)", what.c_str(), e.depth,
+                m.depth, stop_reason_name(m.stats.stop_reason));
+  SCOPED_TRACE(text);
+  EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+  if (m.depth > contact || e.depth > contact) {
+    EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
+  }
+  ++t.pairs;
+  const PairProblem pr(a, b);
+  t.exact_step += !epa_bracket(pr, tol::kEpaMaxIterations).near_faces.empty();
+}
+
+testgen::PairCase posed(SphereSampler& r, const testgen::PairCase& c, double far, bool f32) {
+  const Eigen::Matrix3d rot = random_rotation(r);
+  const Vec3 shift = far * r.direction();
+  testgen::PairCase out = c;
+  for (Points* x : {&out.a, &out.b}) {
+    *x = (rot * *x).colwise() + shift;
+    if (f32) *x = x->cast<float>().cast<double>();
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(ExactReference, AxisAlignedDepthsAreTheInputsOwn) {
+  // Overlaps of 1e-9 and 1e-12 along x: the depth is 1 − fl(1 − eps), exactly
+  // (Sterbenz), not eps; touching and apart boxes have depth 0.
+  const Points a = box(Vec3::Zero(), Vec3::Ones());
+  for (double eps : {1e-9, 1e-12, 1e-15}) {
+    const Points b = box(Vec3(1 - eps, 0, 0), Vec3(2 - eps, 1, 1));
+    const testgen::ExactReference e = testgen::exact_reference_depth(a, b);
+    EXPECT_EQ(e.depth, 1.0 - (1.0 - eps)) << eps;
+    EXPECT_TRUE(e.all_points);
+    EXPECT_NEAR(std::abs(e.direction.x()), 1.0, 1e-15);
+  }
+  EXPECT_EQ(testgen::exact_reference_depth(a, box(Vec3(1, 0, 0), Vec3(2, 1, 1))).depth, 0.0);
+  EXPECT_EQ(testgen::exact_reference_depth(a, box(Vec3(1.5, 0, 0), Vec3(2, 1, 1))).depth, 0.0);
+  EXPECT_EQ(testgen::exact_reference_depth(a, a).depth, 1.0);
+  // Thin plates overlapping by 0.01 (1000 × 1000 × 1): the z facet.
+  const Points p = box(Vec3::Zero(), Vec3(1000, 1000, 1));
+  const Points q = box(Vec3(0, 0, 0.99), Vec3(1000, 1000, 1.99));
+  EXPECT_EQ(testgen::exact_reference_depth(p, q).depth, 1.0 - 0.99);
+}
+
+TEST(ExactReference, AgreesWithTheDoubleHullAwayFromContact) {
+  SphereSampler r(7);
+  IpoptLocalSolver ipopt;
+  SolverSettings exact;
+  exact.method = Method::kExact;
+  for (int k = 0; k < 10; ++k) {
+    const testgen::PairCase c = testgen::vertex_class(r, 12);
+    const double hull = solve_convex_pair(c.a, c.b, exact, ipopt).depth;
+    EXPECT_NEAR(testgen::exact_reference_depth(c.a, c.b).depth, hull,
+                tol::kGapRounding * pair_frame(c.a, c.b).scale);
+  }
+}
+
+TEST(ExactFacet, RotatedTinyOverlapsAreRecomputedExactly) {
+  // Rotated unit cubes overlapping by 1e-9 and 1e-12: the bracket closes to
+  // kEpaBracket only, and its exact step must give the exact reference's depth
+  // to one rounding.
+  SphereSampler r(291);
+  int exact_steps = 0;
+  for (double eps : {1e-9, 1e-12})
+    for (int k = 0; k < 6; ++k) {
+      const Eigen::Matrix3d rot = random_rotation(r);
+      const Points a = rot * box(Vec3::Zero(), Vec3::Ones());
+      const Points b = rot * box(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8));
+      const PairProblem pr(a, b);
+      const DepthBracket br = epa_bracket(pr, tol::kEpaMaxIterations);
+      const double truth = testgen::exact_reference_depth(a, b).depth;
+      SCOPED_TRACE("eps " + std::to_string(eps) + " #" + std::to_string(k));
+      ASSERT_TRUE(br.certified());
+      ASSERT_FALSE(br.near_faces.empty());
+      const auto e = exact_facet_depth(a, b, br.near_faces,
+                                       (br.nearest_low + 2 * tol::kEpaRounding) * pr.frame().scale);
+      if (!e) continue;
+      ++exact_steps;
+      EXPECT_NEAR(e->depth, truth, 4e-16 * truth);
+      EXPECT_NEAR(std::abs(e->direction.dot(rot.col(0))), 1.0, 1e-12);
+    }
+  // A facet flat only to rounding (a rotated cube's face) may be triangulated
+  // across a reflex edge, and then the step declines; most must go through.
+  EXPECT_GE(exact_steps, 9);
+}
+
+TEST(ExactFacet, DefaultIsExactOnNearDegeneratePairs) {
+  // Boxes face on face, edge on face, corner on face and coplanar, overlapping
+  // or apart by 0, 1e-12, 1e-9 or 1e-6; at the origin and far from it, rotated,
+  // in double and float32.
+  SphereSampler r(1e9);
+  Tally t;
+  const Points a = box(Vec3::Zero(), Vec3::Ones());
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  for (double eps : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6}) {
+    const std::string e = " eps " + std::to_string(eps);
+    const std::vector<std::pair<std::string, testgen::PairCase>> family = {
+        {"face" + e, {a, against(box(Vec3::Zero(), Vec3(1, 0.5, 0.7)), eps, 0.2, 0.1)}},
+        {"coplanar" + e, {a, against(a, eps, 0, 0)}},
+        {"edge" + e, {a, against(tilt * a, eps, 0.1, 0.1)}},
+        {"corner" + e, {a, against(turn * a, eps, 0.3, 0.3)}}};
+    for (const auto& [name, c] : family) {
+      expect_default_exact(name, c.a, c.b, t);
+      for (double far : {0.0, 20000.0})
+        for (bool f32 : {false, true}) {
+          const testgen::PairCase p = posed(r, c, far, f32);
+          expect_default_exact(name + " far " + std::to_string(far) + (f32 ? " f32" : ""), p.a, p.b,
+                               t);
+        }
+    }
+  }
+  RecordProperty("exact_steps", t.exact_step);
+  EXPECT_GT(t.exact_step, t.pairs / 4);
+}
+
+TEST(ExactFacet, DefaultIsExactOnFlatPartsAndHardCases) {
+  SphereSampler r(3);
+  Tally t;
+  const Points cube = box(Vec3::Zero(), Vec3::Ones());
+  for (double eps : {1e-9, 1e-12}) {
+    // A square just inside the cube's top face: depth eps (push it up).
+    Points square(3, 4);
+    square << 0.2, 0.8, 0.8, 0.2, 0.2, 0.2, 0.8, 0.8, 1 - eps, 1 - eps, 1 - eps, 1 - eps;
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Matrix3d rot = k ? random_rotation(r) : Eigen::Matrix3d::Identity();
+      expect_default_exact("square eps " + std::to_string(eps), rot * cube, rot * square, t);
+    }
+  }
+  for (int k = 0; k < 32; ++k) {
+    const testgen::PairCase c = testgen::hard_case(r, k);
+    expect_default_exact("hard case " + std::to_string(k), c.a, c.b, t);
+  }
+  EXPECT_GT(t.exact_step, 0);
+}
