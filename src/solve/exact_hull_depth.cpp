@@ -7,6 +7,8 @@
 #include <cmath>
 #include <set>
 
+#include "tolerances.h"
+
 namespace pd {
 
 namespace {
@@ -78,6 +80,17 @@ std::optional<ExactFacet> exact_hull_depth(const Points& a, const Points& b,
     if (!ids.insert({static_cast<int>(i), static_cast<int>(j)}).second) return std::nullopt;
   }
   return std::nullopt;
+}
+
+std::optional<ExactFacet> exact_bracket_depth(const Points& a, const Points& b,
+                                              const DepthBracket& bracket, double scale) {
+  if (bracket.near_faces.empty()) return std::nullopt;
+  // The faces beyond the band are farther than nearest_low + 3·kEpaRounding
+  // (epa.h); the bound passed keeps one kEpaRounding for the scaling's rounding.
+  if (auto e = exact_facet_depth(a, b, bracket.near_faces,
+                                 (bracket.nearest_low + 2 * tol::kEpaRounding) * scale))
+    return e;
+  return exact_hull_depth(a, b, bracket.vertices);
 }
 
 }  // namespace pd

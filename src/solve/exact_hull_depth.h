@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "solve/epa.h"
 #include "solve/exact_facet.h"
 
 namespace pd {
@@ -23,5 +24,10 @@ namespace pd {
 /// a, b: input coordinates; vertices: EPA's polytope vertices (DepthBracket).
 std::optional<ExactFacet> exact_hull_depth(const Points& a, const Points& b,
                                            const std::vector<MinkowskiIndex>& vertices);
+
+/// The exact step of a closed bracket with near faces (solve/epa.h): the near
+/// faces (exact_facet_depth), else the exact hull; `scale` is the pair frame's.
+std::optional<ExactFacet> exact_bracket_depth(const Points& a, const Points& b,
+                                              const DepthBracket& bracket, double scale);
 
 }  // namespace pd

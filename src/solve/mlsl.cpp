@@ -10,7 +10,6 @@
 #include "solve/cap_subdivision.h"
 #include "solve/certificate.h"
 #include "solve/epa.h"
-#include "solve/exact_facet.h"
 #include "solve/exact_hull_depth.h"
 #include "solve/facet_snap.h"
 #include "solve/local_search.h"
@@ -311,12 +310,10 @@ class MlslSearch {
   // A closed bracket at a small depth: its facet's distance exactly from the
   // input coordinates, when its near faces prove it (else the bracket stands).
   void exact_step(const DepthBracket& bracket) {
-    if (!input_ || bracket.near_faces.empty()) return;
+    if (!input_) return;
     const double scale = pr_.frame().scale;
-    auto e = exact_facet_depth(input_->a, input_->b, bracket.near_faces,
-                               (bracket.nearest_low + 2 * tol::kEpaRounding) * scale);
-    if (!e) e = exact_hull_depth(input_->a, input_->b, bracket.vertices);
-    if (e) best_ = {e->direction, e->depth / scale};
+    if (const auto e = exact_bracket_depth(input_->a, input_->b, bracket, scale))
+      best_ = {e->direction, e->depth / scale};
   }
 
   void consider(const Vec3& v, double g) {
