@@ -4,11 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "batch/contact_band.h"
 #include "batch/pair_solve.h"
 #include "batch/pair_tolerance.h"
+#include "cli_support.h"
 #include "corpus/cad_shapes.h"
+#include "stl_file.h"
 #include "tolerances.h"
 
 using namespace pd;
@@ -189,4 +194,132 @@ TEST(ContactBand, TheGapBandIsTheConvexSagsWhereTheGapIs) {
   none.distance = 0.1;
   note_gap_band(none, nullptr, Vec3(4.95, 0, 5));  // a fixed tolerance: no gap band
   EXPECT_FALSE(none.gap_band);
+}
+
+// ---- Through the binary, on float32 STL files (tests/stl_file.h) ----
+
+namespace {
+
+std::string fresh_dir(const std::string& name) {
+  const std::string d = testing::TempDir() + "contact_band_" + name + "_" +
+                        std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "/";
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+nlohmann::json only_pair(const test::CliResult& r) {
+  const auto rep = nlohmann::json::parse(r.out);
+  EXPECT_EQ(rep["pairs"].size(), 1u) << r.err;
+  return rep["pairs"].empty() ? nlohmann::json{} : rep["pairs"][0];
+}
+
+}  // namespace
+
+TEST(ContactBand, AFineBoreBesideACoarseFilletGetsTheBoresBand) {
+  // The flanged bushing (bore 64 segments, sag 0.0060; fillet sag > 0.1) and a
+  // 48-segment pin in its bore, touching: the pair's band is the bore's.
+  const std::string d = fresh_dir("fillet");
+  const double c = 2 / std::sqrt(2.0);
+  test::write_binary_stl(
+      d + "bushing.stl",
+      shapes::revolution(
+          {{5, 0}, {16, 0}, {16, 2}, {10, 2}, {10 - c, 4 - c}, {8, 4}, {8, 10}, {5, 10}}, 64));
+  test::write_binary_stl(d + "pin.stl",
+                         shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 48));
+  const std::string scene =
+      test::write_temp("contact_band_fillet.json",
+                       R"({"tolerance": "auto", "parts": [{"id": "bushing", "mesh": ")" + d +
+                           R"(bushing.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl"}]})");
+  const test::CliResult r = test::pdcheck(scene + " --no-cache -j 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto p = only_pair(r);
+  EXPECT_EQ(p["status"], "false_positive");
+  const double bore = sag_of(64, 5) * kMargin;
+  EXPECT_NEAR(p["tolerance"].get<double>(), bore, 0.1 * bore) << p.dump();
+  const std::string basis = p["tolerance_basis"];
+  EXPECT_EQ(basis.rfind("bushing: bore r 5 mm, 64 segments, sag 0.006", 0), 0u) << basis;
+  EXPECT_EQ(basis.find("saddle"), std::string::npos) << basis;
+  EXPECT_EQ(basis.find("does not decide"), std::string::npos) << basis;
+}
+
+TEST(ContactBand, AFineFloat32ContactFarFromTheOriginIsDecided) {
+  // A 64-segment bore and a 48-segment pin of radius 5 at x = 35,000 mm in
+  // float32 (steps 0.0039 mm): the band holds both steps, and the certified
+  // bracket closes within it.
+  const std::string d = fresh_dir("far");
+  const Vec3 far(35000, 0, 0);
+  test::write_binary_stl(
+      d + "bushing.stl",
+      shapes::translated(shapes::revolution({{5, 0}, {8, 0}, {8, 10}, {5, 10}}, 64), far));
+  test::write_binary_stl(
+      d + "pin.stl",
+      shapes::translated(shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 48), far));
+  const std::string scene =
+      test::write_temp("contact_band_far.json",
+                       R"({"tolerance": "auto", "parts": [{"id": "bushing", "mesh": ")" + d +
+                           R"(bushing.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl"}]})");
+  const test::CliResult r = test::pdcheck(scene + " --no-cache -j 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto p = only_pair(r);
+  EXPECT_EQ(p["status"], "false_positive") << p.dump();
+  const double step = 1.0 / 256;  // float32 at 32,768–65,536
+  const double band = (sag_of(64, 5) + 2 * step) * kMargin;
+  EXPECT_NEAR(p["tolerance"].get<double>(), band, 0.1 * band) << p.dump();
+  EXPECT_LE(p["depth_bounds"][1].get<double>(), p["tolerance"].get<double>());
+  EXPECT_NE(p["tolerance_basis"].get<std::string>().find("coordinate steps 0.00391 + 0.00391 mm"),
+            std::string::npos);
+}
+
+TEST(ContactBand, AClearanceIsCheckedAgainstTheGapBand) {
+  // A 48-segment pin of radius 4.6 beside a block whose face is at x = 4.6 +
+  // `gap` (the true gap), a facet (not a vertex) of the pin facing it: the
+  // pin's convex sag, 4.6 (1 − cos(π/48)) = 0.0099 mm, shows as extra gap.
+  // Clearance required: 0.105 mm. (A pin in a bore goes through the convex
+  // pieces of the bore's decomposition, whose gap is the pieces'; a block keeps
+  // the gap the meshes' own.)
+  const std::string d = fresh_dir("clearance");
+  test::write_binary_stl(d + "pin.stl",
+                         shapes::revolution({{0, -5}, {4.6, -5}, {4.6, 15}, {0, 15}}, 48));
+  const double half = M_PI / 48;
+  const auto scene_with = [&](double gap, const std::string& tolerance) {
+    test::write_binary_stl(d + "block.stl", shapes::box({4.6 + gap, -10, 0}, {10, 10, 10}));
+    char transform[256];
+    std::snprintf(transform, sizeof transform,
+                  "[[%.17g,%.17g,0,0],[%.17g,%.17g,0,0],[0,0,1,0],[0,0,0,1]]", std::cos(half),
+                  -std::sin(half), std::sin(half), std::cos(half));
+    return test::write_temp(
+        "contact_band_clearance.json",
+        R"({"tolerance": )" + tolerance +
+            R"(, "checks": {"clearance": {"min": 0.105}}, "parts": [{"id": "block", "mesh": ")" +
+            d + R"(block.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl", "transform": )" +
+            transform + "}]}");
+  };
+  const double pin_sag = sag_of(48, 4.6);
+  // True gap 0.09 (< 0.105): the mesh shows 0.0999; auto says how much of it
+  // the tessellation can have made (the boxes of a pair farther apart than the
+  // clearance are culled before any gap band is known).
+  const auto pf = only_pair(test::pdcheck(scene_with(0.09, "0.01") + " --no-cache -j 1"));
+  EXPECT_EQ(pf["status"], "clearance_violation") << pf.dump();
+  EXPECT_NEAR(pf["clearance"]["distance"].get<double>(), 0.09 + pin_sag, 1e-5);
+  EXPECT_FALSE(pf["clearance"].contains("gap_band"));
+  const test::CliResult a = test::pdcheck(scene_with(0.09, R"("auto")") + " --no-cache -j 1");
+  EXPECT_EQ(a.code, 1) << a.err;
+  const auto pa = only_pair(a);
+  EXPECT_EQ(pa["status"], "clearance_violation") << pa.dump();
+  const double band = pa["clearance"]["gap_band"];
+  EXPECT_NEAR(band, pin_sag * kMargin, 0.1 * pin_sag * kMargin);
+  EXPECT_NE(pa["clearance"]["gap_basis"].get<std::string>().find("pin: pin r 4.6 mm, 48 segments"),
+            std::string::npos)
+      << pa.dump();
+  EXPECT_NE(a.err.find(" - gap band "), std::string::npos) << a.err;
+  // Touching (true gap 0): the mesh shows the pin's sag as a gap; a fixed
+  // tolerance calls it a clearance violation, auto a contact.
+  EXPECT_EQ(only_pair(test::pdcheck(scene_with(0.0, "0.01") + " --no-cache -j 1"))["status"],
+            "clearance_violation");
+  const test::CliResult touching = test::pdcheck(scene_with(0.0, R"("auto")") + " --no-cache -j 1");
+  EXPECT_EQ(touching.code, 0) << touching.err;
+  const auto pt = only_pair(touching);
+  EXPECT_EQ(pt["status"], "separated") << pt.dump();
+  EXPECT_LE(pt["clearance"]["distance"].get<double>(), pt["clearance"]["gap_band"].get<double>());
 }

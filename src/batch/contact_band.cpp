@@ -32,8 +32,7 @@ Status status_against(double lower, double upper, double t, double slack) {
 
 void decide_at_contact(PairResult& r, const PairTolerance& wide) {
   const bool decided_by_band = r.status == Status::kFalsePositive ||
-                               r.status == Status::kInterference ||
-                               r.status == Status::kUndecided;
+                               r.status == Status::kInterference || r.status == Status::kUndecided;
   if (!wide.at_contact || !decided_by_band || !at_the_parts(r)) return;
   const double lower = r.depth_bounds ? (*r.depth_bounds)[0] : r.depth;
   const double upper = r.depth_bounds ? (*r.depth_bounds)[1] : r.depth;
@@ -71,24 +70,25 @@ void note_gap_band(PairResult& r, const PairTolerance* band, const std::optional
 }
 
 ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance& b,
-                                     double tolerance, const PairTolerance* band,
-                                     double upper_hint) {
+                                     double tolerance, const PairTolerance* band, double upper_hint,
+                                     const std::optional<Vec3>& surface_at) {
   using Outcome = ThicknessResult::Outcome;
   ThicknessResult t = overlap_thickness(a, b, tolerance, upper_hint);
-  if (!band || !band->at_contact || t.outcome != Outcome::kBelow || !(t.lower > 0)) return t;
-  const double local =
-      band->at_contact(t.at, contact_reach(t.upper, tolerance)).value;
+  if (!band || !band->at_contact || t.outcome != Outcome::kBelow) return t;
+  if (!(t.lower > 0) && !surface_at) return t;  // no place known
+  const Vec3 at = t.lower > 0 ? t.at : *surface_at;
+  const double local = band->at_contact(at, contact_reach(t.upper, tolerance)).value;
   if (!(local < tolerance) || t.upper <= local || t.lower > local) return t;
   ThicknessResult again = overlap_thickness(a, b, local, t.upper);
   again.evaluations += t.evaluations;
   again.cells += t.cells;
-  if (again.lower < t.lower) {  // keep the better lower bound with its witness
+  if (!(again.lower > t.lower)) {  // keep the better lower bound with its witness
     again.lower = t.lower;
     again.at = t.at;
     again.direction = t.direction;
   }
   again.upper = std::min(again.upper, t.upper);
-  again.outcome = again.upper <= tolerance ? Outcome::kBelow
+  again.outcome = again.upper <= tolerance  ? Outcome::kBelow
                   : again.lower > tolerance ? Outcome::kAbove
                                             : again.outcome;
   return again;

@@ -75,8 +75,8 @@ Aabb meeting_region(const Part& a, const Part& b) {
 PairTolerance pair_tolerance(const Part& a, const Part& b, const AutoTolerance& t,
                              const std::string& units) {
   const Aabb region = meeting_region(a, b);
-  PairTolerance out = band_of(a, b, t, units, sag_near(a.sag->measured, region),
-                              sag_near(b.sag->measured, region));
+  PairTolerance out =
+      band_of(a, b, t, units, sag_near(a.sag->measured, region), sag_near(b.sag->measured, region));
   out.at_contact = [&a, &b, t, units](const Vec3& at, double reach) {
     return contact_tolerance(a, b, t, units, at, reach);
   };

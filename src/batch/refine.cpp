@@ -104,7 +104,12 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
   r.depth = t.lower;
   r.direction = t.direction;
   r.depth_bounds = {{t.lower, std::min(t.upper, hull.depth)}};
-  if (t.lower > 0) r.at = t.at;
+  // Where: the thickest ball's centre, else (no common interior point found)
+  // the deepest surface point, where the surfaces cross most.
+  if (t.lower > 0)
+    r.at = t.at;
+  else if (mesh.vertex_at)
+    r.at = mesh.vertex_at;
   r.confirmed = true;
   // A part thinner than the tolerance pushed deep into another has a thin
   // overlap: the deepest point of its surface inside the other, a lower bound
@@ -307,7 +312,7 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
   // The middle of the deepest sample p and its nearest point q = p − depth·direction.
   const SurfaceDepth& deeper = ab.depth >= ba.depth ? ab : ba;
   if (deeper.depth > 0) v.vertex_at = deeper.at - 0.5 * deeper.depth * deeper.direction;
-  ThicknessResult t = thickness_at_contact(a, b, tolerance, band, r.depth);
+  ThicknessResult t = thickness_at_contact(a, b, tolerance, band, r.depth, v.vertex_at);
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();
   return t;

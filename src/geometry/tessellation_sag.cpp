@@ -430,7 +430,8 @@ LocalSag sag_at(const TessellationSag& sag, const Vec3& at, double reach) {
     if (!f.box.inflated(reach).overlaps(point)) continue;
     for (const SagPatch& p : f.patches) {
       if (!p.box.inflated(reach).overlaps(point)) continue;
-      if (p.concave > out.concave) out.concave = p.concave, out.concave_feature = static_cast<int>(k);
+      if (p.concave > out.concave)
+        out.concave = p.concave, out.concave_feature = static_cast<int>(k);
       if (p.convex > out.convex) out.convex = p.convex, out.convex_feature = static_cast<int>(k);
     }
   }

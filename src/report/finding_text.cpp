@@ -39,12 +39,13 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
       t += "; the gap band is the tessellation's possible gap artefact (" + r.gap_basis + ")";
   } else if (r.status == Status::kSeparated && r.gap_band && r.distance &&
              *r.distance > 0) {  // a gap that the convex sags can make out of a contact
-    t += ": distance " + short_number(*r.distance) + " " + units +
-         (*r.distance <= *r.gap_band ? " <= " : " > ") + "gap band " +
-         short_number(*r.gap_band) + " " + units +
-         (*r.distance <= *r.gap_band ? ", a contact within the tessellation's gap artefacts ("
-                                     : ", clearance met beyond the tessellation's gap artefacts (") +
-         r.gap_basis + ")";
+    t +=
+        ": distance " + short_number(*r.distance) + " " + units +
+        (*r.distance <= *r.gap_band ? " <= " : " > ") + "gap band " + short_number(*r.gap_band) +
+        " " + units +
+        (*r.distance <= *r.gap_band ? ", a contact within the tessellation's gap artefacts ("
+                                    : ", clearance met beyond the tessellation's gap artefacts (") +
+        r.gap_basis + ")";
   } else if (r.status == Status::kSeparated && r.depth_source == "hull") {
     t += "; separating normal " + dir;
   } else if (r.status == Status::kSeparated && r.depth_source == "mesh-test") {

@@ -66,8 +66,8 @@ struct PairResult {
   /// gap_band is; `gap_basis` names the features.
   std::optional<double> gap_band;
   std::string gap_basis;
-  std::optional<MotionTrace> motion;    ///< when a part of the pair moves
-  std::vector<std::string> warnings;    ///< e.g. a tolerance below the pair's resolution
+  std::optional<MotionTrace> motion;  ///< when a part of the pair moves
+  std::vector<std::string> warnings;  ///< e.g. a tolerance below the pair's resolution
   // Nonconvex parts (docs/solver.md): what the depth rests on.
   std::optional<std::array<int, 2>> pieces;           ///< the piece pair realising depth/direction
   std::string depth_source = "hull";                  ///< hull, pieces, vertex, mesh-test
