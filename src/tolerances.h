@@ -256,5 +256,11 @@ inline constexpr double kSagPatchMinCos = 0.5;
 /// spheres, tori and cones) and facets a little coarser than the region's
 /// measured worst.
 inline constexpr double kAutoToleranceMargin = 0.25;
+/// A sag feature is kept as patches: its facets bucketed in a grid of this many
+/// cells along its box's longest side (geometry/tessellation_sag.h, SagPatch),
+/// so that "the sag near a point" reads the surface there, not every feature
+/// whose box (a ring's box holds its axis) holds the point. 8: a bore's ring
+/// falls into ~25 patches, each an eighth of its diameter across.
+inline constexpr int kSagPatchCells = 8;
 
 }  // namespace pd::tol

@@ -114,6 +114,14 @@ TEST(AutoTolerance, CacheRoundTripsExactly) {
     EXPECT_EQ(back->features[k].box.hi, s.features[k].box.hi);
     EXPECT_EQ(back->features[k].radius, s.features[k].radius);
     EXPECT_EQ(back->features[k].segments, s.features[k].segments);
+    ASSERT_EQ(back->features[k].patches.size(), s.features[k].patches.size());
+    ASSERT_GT(s.features[k].patches.size(), 1u);  // a ring is in pieces along its surface
+    for (size_t q = 0; q < s.features[k].patches.size(); ++q) {
+      EXPECT_EQ(back->features[k].patches[q].box.lo, s.features[k].patches[q].box.lo);
+      EXPECT_EQ(back->features[k].patches[q].box.hi, s.features[k].patches[q].box.hi);
+      EXPECT_EQ(back->features[k].patches[q].concave, s.features[k].patches[q].concave);
+      EXPECT_EQ(back->features[k].patches[q].convex, s.features[k].patches[q].convex);
+    }
   }
   EXPECT_NE(sag_key("0123456789abcdef0123456789abcdef", true), key);
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "batch/contact_band.h"
 #include "batch/motion_sweep.h"
 #include "batch/piece_pairs.h"
 #include "geometry/depth_witness.h"
@@ -135,6 +136,7 @@ void note_pair_tolerance(PairResult& r, const PairChecks& c) {
   r.tolerance = c.tolerance->value;
   r.tolerance_source = c.tolerance->source;
   r.tolerance_basis = c.tolerance->basis;
+  decide_at_contact(r, *c.tolerance);
 }
 
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
@@ -181,8 +183,13 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
       if (!checks.motion) witness = static_distance(a, b, s, ipopt, r);
-      // Touching (distance within rounding of 0) is contact, as for depths.
-      if (r.distance && *r.distance > tol::kTouch * size && *r.distance < *checks.clearance)
+      // Touching (distance within rounding of 0, or under auto within the gap
+      // band of the convex sags where the gap is) is contact, as for depths.
+      note_gap_band(r, checks.tolerance ? &*checks.tolerance : nullptr,
+                    checks.motion ? r.at : witness.at(a, b));
+      const double band = r.gap_band.value_or(0.0);
+      if (r.distance && *r.distance > std::max(tol::kTouch * size, band) &&
+          *r.distance - band < *checks.clearance)
         r.status = Status::kClearanceViolation;
     }
     // Every finding says where it is; a clean pair needs no place.

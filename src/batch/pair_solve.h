@@ -23,7 +23,8 @@ inline double pair_tolerance_of(const PairChecks& c, double scene) {
   return c.tolerance ? c.tolerance->value : scene;
 }
 
-/// Records in `r` the band it was decided against, under auto (report fields).
+/// Records in `r` the band it was decided against, under auto (report fields),
+/// and decides it again against the band at its contact (decide_at_contact).
 void note_pair_tolerance(PairResult& r, const PairChecks& c);
 
 /// The rounding scale of a pair: input coordinates were rounded at their absolute

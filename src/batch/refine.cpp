@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 
+#include "batch/contact_band.h"
 #include "batch/decomposition_cache.h"
 #include "batch/pair_workers.h"
 #include "batch/progress.h"
@@ -53,6 +54,7 @@ PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const
       r.direction = pieces->direction;
       r.pieces = pieces->pieces;
       r.distance = pieces->distance;
+      r.gap_band = pieces->gap_band, r.gap_basis = pieces->gap_basis;  // tolerance auto
       if (pieces->status == Status::kClearanceViolation)
         r.status = pieces->status, r.at = pieces->at;
     }
@@ -75,6 +77,7 @@ PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const
   if (pieces && pieces->status == Status::kClearanceViolation && r.status == Status::kSeparated) {
     r.status = pieces->status;
     r.distance = pieces->distance;
+    r.gap_band = pieces->gap_band, r.gap_basis = pieces->gap_basis;
     r.at = pieces->at;
   }
   if (r.status == Status::kSeparated) r.at.reset();
@@ -101,7 +104,12 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
   r.depth = t.lower;
   r.direction = t.direction;
   r.depth_bounds = {{t.lower, std::min(t.upper, hull.depth)}};
-  if (t.lower > 0) r.at = t.at;
+  // Where: the thickest ball's centre, else (no common interior point found)
+  // the deepest surface point, where the surfaces cross most.
+  if (t.lower > 0)
+    r.at = t.at;
+  else if (mesh.vertex_at)
+    r.at = mesh.vertex_at;
   r.confirmed = true;
   // A part thinner than the tolerance pushed deep into another has a thin
   // overlap: the deepest point of its surface inside the other, a lower bound
@@ -294,7 +302,8 @@ std::vector<std::pair<size_t, StoredRefinement>> take_cached(
 // no inside of the surface's own part), then the overlap thickness; its time
 // goes to the pair's, and `why_not` says what an open surface lacks.
 ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b, double tolerance,
-                                  PairResult& r, MeshVerdict& v, std::string& why_not) {
+                                  const PairTolerance* band, PairResult& r, MeshVerdict& v,
+                                  std::string& why_not) {
   const auto t0 = Clock::now();
   const SurfaceDepth ab = surface_depth(a.mesh(), b);
   const SurfaceDepth ba = surface_depth(b.mesh(), a);
@@ -303,7 +312,7 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
   // The middle of the deepest sample p and its nearest point q = p − depth·direction.
   const SurfaceDepth& deeper = ab.depth >= ba.depth ? ab : ba;
   if (deeper.depth > 0) v.vertex_at = deeper.at - 0.5 * deeper.depth * deeper.direction;
-  ThicknessResult t = overlap_thickness(a, b, tolerance, r.depth);
+  ThicknessResult t = thickness_at_contact(a, b, tolerance, band, r.depth, v.vertex_at);
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();
   return t;
@@ -389,7 +398,9 @@ class Refinement {
     parallel_for(thick.size(), options_.jobs, [&](size_t k) {
       const size_t n = thick[k];
       const auto [a, b] = pairs_[flagged_[n]];
+      const PairChecks c = checks_(a, b);
       thickness_[n] = measure_thickness(*solids_[a], *solids_[b], tolerance(n),
+                                        c.tolerance ? &*c.tolerance : nullptr,
                                         results_[flagged_[n]], verdicts_[n], why_not_[n]);
       progress.tick();
     });

@@ -113,7 +113,10 @@ std::function<PairChecks(int, int)> RuleScope::pair_checks(
       PairDecision named;
       named.tolerance_test = d->tolerance_test;
       named.tolerance_pair = d->tolerance_pair;
-      pc.tolerance = PairTolerance{*d->tolerance, "rule", index_.tolerance_rule(named)};
+      pc.tolerance = PairTolerance{};
+      pc.tolerance->value = *d->tolerance;
+      pc.tolerance->source = "rule";
+      pc.tolerance->basis = index_.tolerance_rule(named);
     }
     // checks.clearance.pairs names a pair as rules.pairs does (pair rank):
     // between the two the larger minimum wins; over a test's, the pair's.

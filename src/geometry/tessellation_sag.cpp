@@ -324,6 +324,47 @@ std::vector<long> gather_features(const Welded& w, const FacetSags& sag, UnionFi
   return feature_of;
 }
 
+// Each feature's patches: its facets bucketed by the grid cell of their
+// centroid (kSagPatchCells cells along the feature box's longest side), in the
+// order of the cells (a sort: the result does not depend on the facets' order).
+void gather_patches(const Welded& w, const FacetSags& sag, UnionFind& regions,
+                    const std::vector<long>& feature_of, std::vector<SagFeature>& features) {
+  struct Member {
+    long feature;
+    std::array<long, 3> cell;
+    long t;
+    bool operator<(const Member& o) const {
+      return std::tie(feature, cell, t) < std::tie(o.feature, o.cell, o.t);
+    }
+  };
+  std::vector<Member> members;
+  const long nt = static_cast<long>(w.tris.size());
+  for (long t = 0; t < nt; ++t) {
+    if (sag.convex[t] <= 0 && sag.concave[t] <= 0) continue;
+    const long k = feature_of[regions.find(t)];
+    const Aabb& box = features[k].box;
+    const double size = (box.hi - box.lo).maxCoeff() / tol::kSagPatchCells;
+    const Vec3 c = (w.corner(t, 0) + w.corner(t, 1) + w.corner(t, 2)) / 3;
+    std::array<long, 3> cell{0, 0, 0};
+    for (int d = 0; d < 3; ++d)
+      if (size > 0)
+        cell[d] = std::clamp(static_cast<long>(std::floor((c(d) - box.lo(d)) / size)), 0L,
+                             static_cast<long>(tol::kSagPatchCells) - 1);
+    members.push_back({k, cell, t});
+  }
+  std::sort(members.begin(), members.end());
+  for (size_t i = 0; i < members.size(); ++i) {
+    const Member& m = members[i];
+    std::vector<SagPatch>& patches = features[m.feature].patches;
+    if (i == 0 || members[i - 1].feature != m.feature || members[i - 1].cell != m.cell)
+      patches.push_back({{w.corner(m.t, 0), w.corner(m.t, 0)}});
+    SagPatch& p = patches.back();
+    for (int k = 0; k < 3; ++k) p.box = p.box.merged({w.corner(m.t, k), w.corner(m.t, k)});
+    p.convex = std::max(p.convex, sag.convex[m.t]);
+    p.concave = std::max(p.concave, sag.concave[m.t]);
+  }
+}
+
 // Each feature's radius and segments per turn, from the medians over its
 // creases (a median: a few odd creases at a region's seam do not move it).
 void describe_features(const Welded& w, const Facets& f, const std::vector<Edge>& edges,
@@ -362,6 +403,7 @@ TessellationSag measure_tessellation_sag(const Mesh& m, CoordinateStorage storag
   const FacetSags sag = facet_sags(w, facets, table, smoothing);
   const std::vector<long> feature_of = gather_features(w, sag, smoothing.regions, out.features);
   describe_features(w, facets, table.edges, smoothing.regions, feature_of, out.features);
+  gather_patches(w, sag, smoothing.regions, feature_of, out.features);
   for (const SagFeature& x : out.features) {
     out.convex = std::max(out.convex, x.convex);
     out.concave = std::max(out.concave, x.concave);
@@ -380,19 +422,49 @@ LocalSag sag_near(const TessellationSag& sag, const Aabb& near, double reach) {
   return out;
 }
 
+LocalSag sag_at(const TessellationSag& sag, const Vec3& at, double reach) {
+  const Aabb point{at, at};
+  LocalSag out;
+  for (size_t k = 0; k < sag.features.size(); ++k) {
+    const SagFeature& f = sag.features[k];
+    if (!f.box.inflated(reach).overlaps(point)) continue;
+    for (const SagPatch& p : f.patches) {
+      if (!p.box.inflated(reach).overlaps(point)) continue;
+      if (p.concave > out.concave)
+        out.concave = p.concave, out.concave_feature = static_cast<int>(k);
+      if (p.convex > out.convex) out.convex = p.convex, out.convex_feature = static_cast<int>(k);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The box of a box's eight corners mapped by `placement`.
+Aabb placed_box(const Aabb& box, const Mat4& placement) {
+  Points corners(3, 8);
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 x(c & 1 ? box.hi.x() : box.lo.x(), c & 2 ? box.hi.y() : box.lo.y(),
+                 c & 4 ? box.hi.z() : box.lo.z());
+    corners.col(c) = placement.topLeftCorner<3, 3>() * x + placement.topRightCorner<3, 1>();
+  }
+  return Aabb::of(corners);
+}
+
+}  // namespace
+
 TessellationSag placed_sag(const TessellationSag& sag, const Mat4& placement, double stretch) {
   TessellationSag out = sag;
   out.concave *= stretch;
   out.convex *= stretch;
   out.resolution *= stretch;
   for (SagFeature& f : out.features) {
-    Points corners(3, 8);
-    for (int c = 0; c < 8; ++c) {
-      const Vec3 x(c & 1 ? f.box.hi.x() : f.box.lo.x(), c & 2 ? f.box.hi.y() : f.box.lo.y(),
-                   c & 4 ? f.box.hi.z() : f.box.lo.z());
-      corners.col(c) = placement.topLeftCorner<3, 3>() * x + placement.topRightCorner<3, 1>();
+    f.box = placed_box(f.box, placement);
+    for (SagPatch& p : f.patches) {
+      p.box = placed_box(p.box, placement);
+      p.concave *= stretch;
+      p.convex *= stretch;
     }
-    f.box = Aabb::of(corners);
     f.concave *= stretch;
     f.convex *= stretch;
     f.radius *= stretch;

@@ -29,6 +29,17 @@ namespace pd {
 /// float32 for mesh files (assimp hands them over so), double for inline vertices.
 enum class CoordinateStorage { kFloat32, kDouble };
 
+/// A piece of a feature: its facets whose centroids fall in one cell of a grid
+/// kSagPatchCells to the feature box's longest side. A revolved feature (a bore,
+/// a fillet round a boss) has a box that holds its axis and everything inside
+/// it; its patches lie along the surface, so a point can be near the feature's
+/// surface, not merely inside its box (sag_at).
+struct SagPatch {
+  Aabb box;              ///< of the patch's facets' corners
+  double concave = 0.0;  ///< the worst s⁺ of its facets
+  double convex = 0.0;   ///< the worst s⁻ of its facets
+};
+
 /// One smooth region of a mesh: facets joined across tessellation creases
 /// (dihedral angle at most kSagCreaseAngle), bounded by design edges (a box's
 /// 90° edges) or the mesh's boundary. Regions with no sag (flat faces) are not
@@ -40,6 +51,7 @@ struct SagFeature {
   double radius = 0.0;   ///< median radius of curvature across its creases
   int segments = 0;      ///< 2π / the median crease angle, rounded: segments per full turn
   long facets = 0;
+  std::vector<SagPatch> patches;  ///< its facets by place, in the order of their grid cells
 };
 
 struct TessellationSag {
@@ -62,6 +74,13 @@ struct LocalSag {
   int concave_feature = -1, convex_feature = -1;
 };
 LocalSag sag_near(const TessellationSag& sag, const Aabb& near, double reach = 0.0);
+
+/// The sags of the surface near the point `at`: the patches (SagPatch) whose
+/// box, grown by `reach`, holds it, the index of the feature of each worst one
+/// (-1: no patch is that near). Where a pair's depth was found (the centre of
+/// its thickest overlap, within half the depth of both surfaces) these are the
+/// facets that can have made it (docs/numerics.md, "The band at the contact").
+LocalSag sag_at(const TessellationSag& sag, const Vec3& at, double reach);
 
 /// The measurement of a file placed by an affine map (file → scene units):
 /// feature boxes mapped (the box of their mapped corners), lengths (sags,

@@ -18,7 +18,7 @@ namespace {
 // violation the clearance it lacks.
 double shortfall(const PairResult& r) {
   if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance)
-    return std::max(0.0, *r.clearance_min - *r.distance);
+    return std::max(0.0, *r.clearance_min - (*r.distance - r.gap_band.value_or(0.0)));
   return r.depth;
 }
 

@@ -31,8 +31,21 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
   const std::string dir =
       "(" + c(r.direction.x()) + ", " + c(r.direction.y()) + ", " + c(r.direction.z()) + ")";
   if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance) {
-    t += ": distance " + short_number(*r.distance) + " " + units + " < required clearance " +
-         short_number(*r.clearance_min) + " " + units + "; separating normal " + dir;
+    t += ": distance " + short_number(*r.distance) + " " + units;
+    if (r.gap_band) t += " - gap band " + short_number(*r.gap_band) + " " + units;
+    t += " < required clearance " + short_number(*r.clearance_min) + " " + units +
+         "; separating normal " + dir;
+    if (r.gap_band)
+      t += "; the gap band is the tessellation's possible gap artefact (" + r.gap_basis + ")";
+  } else if (r.status == Status::kSeparated && r.gap_band && r.distance &&
+             *r.distance > 0) {  // a gap that the convex sags can make out of a contact
+    t +=
+        ": distance " + short_number(*r.distance) + " " + units +
+        (*r.distance <= *r.gap_band ? " <= " : " > ") + "gap band " + short_number(*r.gap_band) +
+        " " + units +
+        (*r.distance <= *r.gap_band ? ", a contact within the tessellation's gap artefacts ("
+                                    : ", clearance met beyond the tessellation's gap artefacts (") +
+        r.gap_basis + ")";
   } else if (r.status == Status::kSeparated && r.depth_source == "hull") {
     t += "; separating normal " + dir;
   } else if (r.status == Status::kSeparated && r.depth_source == "mesh-test") {

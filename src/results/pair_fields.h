@@ -67,6 +67,8 @@ auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"reason"}.when(decided).unless_empty(), r.reason);
   visit(Field{"min"}.in("clearance").when(decided), r.clearance_min);
   visit(Field{"distance"}.in("clearance").when(decided && r.clearance_min).echoing(), r.distance);
+  visit(Field{"gap_band"}.in("clearance").when(decided), r.gap_band);
+  visit(Field{"gap_basis"}.in("clearance").when(decided).unless_empty(), r.gap_basis);
   visit(Field{"motion"}.when(decided), r.motion);
   visit(Field{"method"}, r.method);
   visit(Field{"fallback"}.unless_empty(), r.fallback);

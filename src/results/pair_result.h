@@ -60,8 +60,14 @@ struct PairResult {
   std::string fallback;
   std::string error;
   std::optional<double> clearance_min;  ///< the required clearance, when checked
-  std::optional<MotionTrace> motion;    ///< when a part of the pair moves
-  std::vector<std::string> warnings;    ///< e.g. a tolerance below the pair's resolution
+  /// tolerance auto with a clearance check: the gap artefacts the parts' convex
+  /// sags can make where they are closest (docs/numerics.md, "Clearance"): a
+  /// distance up to it is a contact, and a clearance is met when distance −
+  /// gap_band is; `gap_basis` names the features.
+  std::optional<double> gap_band;
+  std::string gap_basis;
+  std::optional<MotionTrace> motion;  ///< when a part of the pair moves
+  std::vector<std::string> warnings;  ///< e.g. a tolerance below the pair's resolution
   // Nonconvex parts (docs/solver.md): what the depth rests on.
   std::optional<std::array<int, 2>> pieces;           ///< the piece pair realising depth/direction
   std::string depth_source = "hull";                  ///< hull, pieces, vertex, mesh-test

@@ -10,7 +10,7 @@ namespace pd {
 
 namespace {
 
-constexpr CacheKind kKind{"pdcheck-sag-1", ".pds"};
+constexpr CacheKind kKind{"pdcheck-sag-2", ".pds"};
 
 }  // namespace
 
@@ -22,7 +22,7 @@ std::string sag_key(const std::string& content_hash, bool per_mesh) {
 
 // Body (hex floats round-trip exactly): "resolution concave convex creases
 // design_edges features", then per feature "lo(3) hi(3) concave convex radius
-// segments facets".
+// segments facets patches" and per patch "lo(3) hi(3) concave convex".
 std::optional<TessellationSag> read_cached_sag(const std::string& dir, const std::string& key) {
   const std::optional<std::string> body = read_cache_entry(dir, kKind, key);
   if (!body) return std::nullopt;
@@ -46,8 +46,19 @@ std::optional<TessellationSag> read_cached_sag(const std::string& dir, const std
       if (!real(f.box.lo(d))) return std::nullopt;
     for (int d = 0; d < 3; ++d)
       if (!real(f.box.hi(d))) return std::nullopt;
-    if (!real(f.concave) || !real(f.convex) || !real(f.radius) || !(in >> f.segments >> f.facets))
+    long patches = 0;
+    if (!real(f.concave) || !real(f.convex) || !real(f.radius) ||
+        !(in >> f.segments >> f.facets >> patches) || patches < 0 || patches > f.facets)
       return std::nullopt;
+    for (long q = 0; q < patches; ++q) {
+      SagPatch p;
+      for (int d = 0; d < 3; ++d)
+        if (!real(p.box.lo(d))) return std::nullopt;
+      for (int d = 0; d < 3; ++d)
+        if (!real(p.box.hi(d))) return std::nullopt;
+      if (!real(p.concave) || !real(p.convex)) return std::nullopt;
+      f.patches.push_back(p);
+    }
     s.features.push_back(f);
   }
   std::string rest;
@@ -64,7 +75,12 @@ std::string write_cached_sag(const std::string& dir, const std::string& key,
     for (int d = 0; d < 3; ++d) body << f.box.lo(d) << ' ';
     for (int d = 0; d < 3; ++d) body << f.box.hi(d) << ' ';
     body << f.concave << ' ' << f.convex << ' ' << f.radius << ' ' << f.segments << ' ' << f.facets
-         << '\n';
+         << ' ' << f.patches.size() << '\n';
+    for (const SagPatch& p : f.patches) {
+      for (int d = 0; d < 3; ++d) body << p.box.lo(d) << ' ';
+      for (int d = 0; d < 3; ++d) body << p.box.hi(d) << ' ';
+      body << p.concave << ' ' << p.convex << '\n';
+    }
   }
   return write_cache_entry(dir, kKind, key, body.str());
 }
