@@ -130,6 +130,15 @@ inline constexpr double kSnapResidual = 1e-9;
 /// normal within this angle (radians) of the fit (solve/facet_snap.cpp): a fit
 /// within kSnapResidual of edges >= 1e-3 of the frame is within 1e-6 of it.
 inline constexpr double kSnapCap = 1e-5;
+/// Polishing a descent's end point with Ipopt (solve/local_search.cpp), unit
+/// frame: the reduced problem holds the vertices within kPolishBand of the
+/// extreme at the end point (every vertex active within a few degrees of it);
+/// a vertex beyond the current level by more than kPolishSlack (rounding) joins
+/// it; the facet snap of Ipopt's answer is taken only when no higher and within
+/// kPolishSnapAngle (radians) of it (a wrong active set could jump elsewhere).
+inline constexpr double kPolishBand = 0.05;
+inline constexpr double kPolishSlack = 1e-12;
+inline constexpr double kPolishSnapAngle = 1e-3;
 
 /// --baseline: a finding of unchanged status is `updated` when its depth moved
 /// by more than both kBaselineDepthAbs · tolerance and kBaselineDepthRel · the
