@@ -64,6 +64,19 @@ inline constexpr long kSubdivisionCells = 4000;
 /// and a Q' edge) times their valuation (|P'| + |Q'| dot products) stay below
 /// this: ~20 µs of work, qhull's fixed cost per call on this class of machine.
 inline constexpr double kCandidateFacetWork = 20000;
+/// The certificate's spherical cells (solve/certificate.cpp, cap_subdivision.cpp).
+/// Geometry, not accuracy: a cell's angular radius is padded by kCellRadiusPad
+/// (relative) so that rounding never leaves a corner outside its cap; two open
+/// cells are one group when their centres are within kCellJoinSlack times the
+/// sum of their radii; a gnomonic cell has at least kMinCellAreaFraction of the
+/// mean cell area at any grid (the fail-fast count of caps); a subdivided
+/// cell's candidate lists are computed for a cap kSubdivisionValidMargin times
+/// its own, so that every child's cap lies inside its parent's (a corner
+/// child's cap reaches just to the parent's corner).
+inline constexpr double kCellRadiusPad = 1e-9;
+inline constexpr double kCellJoinSlack = 1.05;
+inline constexpr double kMinCellAreaFraction = 0.3;
+inline constexpr double kSubdivisionValidMargin = 1.25;
 
 /// The EPA bracket (solve/epa.h), unit frame, absolute. kEpaRounding bounds the
 /// rounding of a face's lower bound min(n·a, n·b, n·c): the differences a = p − q
@@ -95,10 +108,26 @@ inline constexpr double kExactFacetDepth = 1e-4;
 /// this of the extreme value; used to read the optimal facet off a local solve.
 inline constexpr double kActiveLoose = 1e-7;
 inline constexpr double kActiveTight = 1e-10;
+/// The active-set bands the facet snap tries at a solve's end point, loosest
+/// first (solve/facet_snap.cpp); a descent's end point tries the looser bands
+/// from kDescentSnapBand down before these.
+inline constexpr double kSnapBands[] = {kActiveLoose, 1e-8, 1e-9, kActiveTight};
 
 /// The loosest active-set band (unit frame) of the snap tried at a descent's end
 /// point, before any Ipopt call; tighter bands follow by factors of 10.
 inline constexpr double kDescentSnapBand = 1e-3;
+/// The smooth descent (solve/smooth_descent.cpp), unit frame. Effort and
+/// conditioning, not accuracy (its end point is only a start for the snap and
+/// Ipopt): the smoothing lengths μ it descends through, the Newton steps per μ,
+/// the gradient norm (times μ) it stops at, the Armijo constant and the
+/// halvings of its line search, and how far (times μ) below the top a term of
+/// the log-sum-exp is dropped (e^-40 ≈ 4e-18 relative).
+inline constexpr double kDescentMu[] = {3e-3, 6e-4, 1.2e-4};
+inline constexpr int kDescentSteps = 20;
+inline constexpr double kDescentStationary = 1e-3;
+inline constexpr double kDescentArmijo = 1e-4;
+inline constexpr int kDescentHalvings = 30;
+inline constexpr double kLogSumExpCut = 40.0;
 
 /// The facet snap accepts a plane when its normal fits the active vertices to
 /// this residual (smallest singular value of the active edge matrix).
@@ -107,6 +136,15 @@ inline constexpr double kSnapResidual = 1e-9;
 /// normal within this angle (radians) of the fit (solve/facet_snap.cpp): a fit
 /// within kSnapResidual of edges >= 1e-3 of the frame is within 1e-6 of it.
 inline constexpr double kSnapCap = 1e-5;
+/// Polishing a descent's end point with Ipopt (solve/local_search.cpp), unit
+/// frame: the reduced problem holds the vertices within kPolishBand of the
+/// extreme at the end point (every vertex active within a few degrees of it);
+/// a vertex beyond the current level by more than kPolishSlack (rounding) joins
+/// it; the facet snap of Ipopt's answer is taken only when no higher and within
+/// kPolishSnapAngle (radians) of it (a wrong active set could jump elsewhere).
+inline constexpr double kPolishBand = 0.05;
+inline constexpr double kPolishSlack = 1e-12;
+inline constexpr double kPolishSnapAngle = 1e-3;
 
 /// --baseline: a finding of unchanged status is `updated` when its depth moved
 /// by more than both kBaselineDepthAbs · tolerance and kBaselineDepthRel · the
@@ -146,6 +184,38 @@ inline constexpr long kDecomposeMaxWork = 4000;
 /// Samples of the coarse screen run before a piece's full estimate: a cell it
 /// finds more than twice the tolerance concave is cut without the full one.
 inline constexpr int kDecomposeScreenSamples = 64;
+/// Effort, not accuracy: the candidate cuts of one piece are drawn from at most
+/// kDecomposeCutPlanes planes of concave faces and kDecomposeCutEdges reflex
+/// edges (paired into planes through two of them), and scored on at most
+/// kDecomposeCutFaces concave faces (evenly thinned beyond). Among cuts of
+/// equal concavity the balanced one wins: the volume imbalance weighs
+/// kDecomposeBalance times the piece's concavity. The root cells lie
+/// kDecomposeRootPad (relative to the mesh's diagonal) outside it, so that no
+/// face lies in a root plane.
+inline constexpr int kDecomposeCutPlanes = 64;
+inline constexpr int kDecomposeCutEdges = 24;
+inline constexpr int kDecomposeCutFaces = 256;
+inline constexpr double kDecomposeBalance = 1e-3;
+inline constexpr double kDecomposeRootPad = 1e-6;
+/// A point is on a hull's facet when within kOnHull of its plane, relative to
+/// the point set's size (geometry/convexity.cpp): the rounding of a facet's
+/// offset, as kTouch is for a pair.
+inline constexpr double kOnHull = 1e-12;
+/// A mesh's coordinate noise (geometry/convexity.h, coordinate_noise): at least
+/// kNoiseFloor of its size, and kNoiseUlps steps of float32 (2^-24) at its
+/// largest coordinate, as mesh files store them.
+inline constexpr double kNoiseFloor = 1e-9;
+inline constexpr double kNoiseUlps = 8.0;
+/// The side of a closed mesh a point is on is read off its nearest face only
+/// when the nearest point lies inside that face by more than this in each
+/// barycentric coordinate (geometry/mesh_intersect.cpp); nearer an edge or
+/// vertex the ray test decides.
+inline constexpr double kNearestFaceMargin = 1e-6;
+/// An ASCII PLY coordinate assimp read (with its own fast_atof, not correctly
+/// rounded) agrees with the file's when within this of it, relative (scene/
+/// ply_check.cpp): a few float32 steps (2^-23 ≈ 1.2e-7) pass, a misreading
+/// (a digit lost or shifted) is off by far more.
+inline constexpr double kPlyAsciiAgreement = 1e-5;
 
 /// Overlap thickness of a nonconvex pair (solve/overlap_thickness.h). Effort,
 /// not accuracy: the bracket stays certified whatever they are, and a pair whose
@@ -207,6 +277,9 @@ inline constexpr size_t kHtmlContextParts = 24;
 /// ratio it is written with (a 16:9 screen). Display only.
 inline constexpr double kBcfFieldOfView = 60.0;
 inline constexpr double kBcfAspectRatio = 16.0 / 9.0;
+/// A camera direction (or up vector) whose part across the depth (or the
+/// view) is below this fraction of it is too near it: the next candidate is used.
+inline constexpr double kBcfAcross = 0.1;
 
 /// Where a finding is (geometry/depth_witness.h): the points of a convex set
 /// within this fraction of the pair's size of its support plane along the

@@ -1,7 +1,8 @@
 // Checked cache entries (cache_file.h), shared by the decomposition,
 // refinement and convexity caches: an entry reads back exactly; a damaged,
 // truncated or foreign file is a miss, never a crash; concurrent writers of
-// one key never leave a torn entry or a temporary file behind.
+// one key never leave a torn entry or a temporary file behind. Each cache's own
+// entries: test_decomposition_cache.cpp, test_convexity_cache.cpp, test_refine_cache.cpp.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,9 +11,7 @@
 #include <fstream>
 #include <set>
 
-#include "batch/decomposition_cache.h"
 #include "cache_file.h"
-#include "scene/convexity_cache.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -137,50 +136,5 @@ TEST(CacheFile, ConcurrentWritersNeverTearAnEntry) {
     EXPECT_EQ(e.path().filename(), "shared.pdt") << "left behind";
   }
   EXPECT_EQ(files, 1);
-  fs::remove_all(dir);
-}
-
-TEST(DecompositionCache, EntriesReadBackAndDamageIsIgnored) {
-  const fs::path dir = fresh_dir("decomposition");
-  StoredDecomposition d;
-  Points a(3, 4), b(3, 5);
-  a.setRandom();
-  b.setRandom();
-  d.pieces = {a, b};
-  d.complete = false;
-  d.note = "time box\nran out";
-  d.seconds = 1.0 / 3.0;
-  ASSERT_EQ(write_cached_decomposition(dir.string(), "k", d), "");
-  const auto back = read_cached_decomposition(dir.string(), "k");
-  ASSERT_TRUE(back);
-  ASSERT_EQ(back->pieces.size(), 2u);
-  EXPECT_EQ(back->pieces[0], a);
-  EXPECT_EQ(back->pieces[1], b);
-  EXPECT_FALSE(back->complete);
-  EXPECT_EQ(back->note, "time box ran out");
-  EXPECT_EQ(back->seconds, d.seconds);
-  const fs::path file = dir / "k.pdd";
-  fs::resize_file(file, fs::file_size(file) - 8);
-  EXPECT_FALSE(read_cached_decomposition(dir.string(), "k"));
-  fs::remove_all(dir);
-}
-
-TEST(ConvexityCache, EntriesReadBackExactlyAndKeysFollowTheirInputs) {
-  const fs::path dir = fresh_dir("convexity");
-  const std::string k = convexity_key("aaaa", 0.01, 0.02);
-  EXPECT_EQ(k, convexity_key("aaaa", 0.01, 0.02));
-  EXPECT_NE(k, convexity_key("aaab", 0.01, 0.02));                       // another file's bytes
-  EXPECT_NE(k, convexity_key("aaaa", std::nextafter(0.01, 1.0), 0.02));  // another tolerance
-  EXPECT_NE(k, convexity_key("aaaa", 0.01, std::nextafter(0.02, 1.0)));  // another threshold
-  const StoredConvexity c{1.0 / 3.0, true};
-  ASSERT_EQ(write_cached_convexity(dir.string(), k, c), "");
-  const auto back = read_cached_convexity(dir.string(), k);
-  ASSERT_TRUE(back);
-  EXPECT_EQ(back->concavity, c.concavity);  // exact bits
-  EXPECT_TRUE(back->closed);
-  EXPECT_FALSE(read_cached_convexity(dir.string(), convexity_key("aaaa", 0.01, 0.03)));
-  const fs::path file = dir / (k + ".pdv");
-  fs::resize_file(file, fs::file_size(file) - 1);
-  EXPECT_FALSE(read_cached_convexity(dir.string(), k));
   fs::remove_all(dir);
 }

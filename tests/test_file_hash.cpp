@@ -1,12 +1,11 @@
-// The one file hash (file_hash.h) and the per-part hashes built on it
-// (batch/content_hashes.h): a regular file hashes its bytes; anything else
-// never matches a readable file (a directory is not an empty file).
+// The one file hash (file_hash.cpp): a regular file hashes its bytes; anything
+// else never matches a readable file (a directory is not an empty file). The
+// per-part hashes built on it: test_content_hashes.cpp.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "batch/content_hashes.h"
 #include "file_hash.h"
 #include "hash.h"
 
@@ -51,22 +50,3 @@ TEST(FileHash, NonFilesNeverMatchAReadableFile) {
 
 // A part's hash follows its file's bytes, read once per file however many
 // parts use it (the map), and the map agrees with reading the file again.
-TEST(FileHash, PartHashesFollowTheFile) {
-  const fs::path d = fresh_dir("parts");
-  write(d / "m.stl", "one");
-  SceneSpec s;
-  for (const char* id : {"a", "b"}) {
-    PartSpec p;
-    p.id = id;
-    p.mesh = (d / "m.stl").string();
-    s.parts.push_back(p);
-  }
-  const auto files = mesh_file_hashes(s);
-  ASSERT_EQ(files.size(), 1u);
-  EXPECT_EQ(files.begin()->second, file_content_hash((d / "m.stl").string()));
-  const auto before = part_content_hashes(s, files);
-  EXPECT_EQ(before, part_content_hashes(s));
-  EXPECT_EQ(before[0], before[1]);
-  write(d / "m.stl", "two");
-  EXPECT_NE(part_content_hashes(s)[0], before[0]);
-}

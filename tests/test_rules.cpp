@@ -1,15 +1,13 @@
-// Rules (issue 28): globs, strict reading, per-pair decisions and the
-// tolerance hierarchy, and the worked example testdata/examples/rules-assembly.json
-// against what its boxes imply, unsharded and through shards and merge.
+// Rules (issue 28) through the binary: the worked example
+// testdata/examples/rules-assembly.json against what its boxes imply,
+// unsharded and through shards and merge. The rules' modules alone:
+// test_rule_glob.cpp, test_rules_json.cpp, test_rule_index.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "cli_support.h"
-#include "scene/rule_glob.h"
-#include "scene/rule_index.h"
-#include "scene/scene.h"
 
 namespace {
 
@@ -20,153 +18,6 @@ using pd::test::read_text;
 using pd::test::write_temp;
 
 const std::string kExample = kSource + "/testdata/examples/rules-assembly.json";
-
-TEST(RuleGlob, IdsAndGroups) {
-  EXPECT_TRUE(pd::glob_match("bolt-*", "bolt-12"));
-  EXPECT_TRUE(pd::glob_match("*/nut?", "asm/rib/nut7"));  // ids: `*` crosses '/'
-  EXPECT_FALSE(pd::glob_match("bolt-?", "bolt-12"));
-  EXPECT_FALSE(pd::glob_match("bolt", "bolt-1"));
-  EXPECT_TRUE(pd::glob_match("*a*b*c", "xxaxbxxc"));
-  // Groups: a pattern matching leading segments selects everything under them.
-  EXPECT_TRUE(pd::group_glob_match("wing", "wing/rib-7/bracket"));
-  EXPECT_TRUE(pd::group_glob_match("wing/rib-*", "wing/rib-7/bracket"));
-  EXPECT_FALSE(pd::group_glob_match("wing/rib-*", "wing"));
-  EXPECT_FALSE(pd::group_glob_match("wing*7", "wing/rib-7"));  // `*` never crosses '/'
-  EXPECT_TRUE(pd::group_glob_match("wing*", "wing/rib-7"));    // "wing" and what is under it
-  EXPECT_TRUE(pd::group_glob_match("wing*", "wings/rib-7"));
-  EXPECT_TRUE(pd::group_glob_match("**/bracket", "wing/rib-7/bracket"));
-  EXPECT_FALSE(pd::group_glob_match("**/bracket", "wing/rib-7/bolt"));
-  EXPECT_FALSE(pd::group_glob_match("wing", ""));  // a part without a group is in none
-  EXPECT_FALSE(pd::group_glob_match("rib-7", "wing/rib-7"));
-}
-
-pd::SceneSpec scene_with(const std::string& parts, const std::string& rules,
-                         const std::string& extra = "") {
-  return pd::parse_scene_json(
-      R"({"tolerance": 0.05, "parts": [)" + parts + "]" + extra + R"(, "rules": )" + rules + "}",
-      "s.json", "");
-}
-
-std::string part(const std::string& id, const std::string& labels) {
-  return R"({"id": ")" + id + R"(", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]])" +
-         (labels.empty() ? "" : ", " + labels) + "}";
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const pd::SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-TEST(RulesJson, StrictWithFileAndPath) {
-  const std::string parts = part("a", R"("tags": ["x"])");
-  EXPECT_EQ(error_of([&] { scene_with(parts, R"({"sets": {"s": {"tag": ["x"]}}})"); }),
-            "s.json: rules.sets.s.tag: unknown key (allowed: groups, ids, optional, tags)");
-  EXPECT_EQ(error_of([&] {
-              scene_with(parts, R"({"sets": {"s": {"tags": ["x"]}}, "tests": [{"name": "t",
-                          "a": "s", "b": "q"}]})");
-            }),
-            "s.json: rules.tests[0].b: unknown set \"q\" (sets: s)");
-  EXPECT_EQ(error_of([&] { scene_with(parts, R"({"ignore": [{"same": "group"}]})"); }),
-            "s.json: rules.ignore[0]: missing \"reason\" (say why these pairs are not checked)");
-  EXPECT_NE(error_of([&] {
-              scene_with(parts, R"({"sets": {"s": {"tags": ["x"]}}, "tests": [{"name": "t",
-                          "a": "s", "tolerance": "0.2 furlong"}]})");
-            }).find("rules.tests[0].tolerance: expected a length"),
-            std::string::npos);
-  // A clearance refines the scene's clearance check, which must be there.
-  EXPECT_NE(error_of([&] {
-              scene_with(parts, R"({"sets": {"s": {"tags": ["x"]}}, "tests": [{"name": "t",
-                          "a": "s", "clearance": 2}]})");
-            }).find("rules.tests[0]: clearance: a rule's clearance refines"),
-            std::string::npos);
-  EXPECT_NE(error_of([&] {
-              scene_with(part("a", R"("group": "w//r")"), "{}");
-            }).find("parts[0].group: expected a path"),
-            std::string::npos);
-}
-
-TEST(RulesJson, LengthsTakeUnitSuffixes) {
-  const pd::SceneSpec s = pd::parse_scene_json(
-      R"({"units": "in", "tolerance": 0.01, "parts": [{"id": "a", "tags": ["x"], "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]}],
-          "rules": {"sets": {"s": {"tags": ["x"]}}, "tests": [{"name": "t", "a": "s", "tolerance": "0.254 mm"}],
-                    "expected": [{"a": "s", "max_depth": 0.5, "reason": "r"}]}})",
-      "s.json", "");
-  ASSERT_TRUE(s.rules);
-  EXPECT_NEAR(*s.rules->tests[0].tolerance, 0.01, 1e-15);  // 0.254 mm in inches
-  EXPECT_EQ(s.rules->expected[0].max_depth, 0.5);          // a bare number: scene units
-  EXPECT_EQ(s.rules->expected[0].name, "expected[0]");
-}
-
-TEST(RuleIndex, EmptySetIsAnErrorUnlessOptional) {
-  const std::string parts = part("a", R"("tags": ["x"])") + "," + part("b", "");
-  pd::SceneSpec s =
-      scene_with(parts, R"({"sets": {"bolts": {"ids": ["bolt-*"]}, "x": {"tags": ["x"]}}})");
-  const std::string e = error_of([&] { pd::RuleIndex(*s.rules, s.parts); });
-  EXPECT_NE(e.find("s.json: rules.sets.bolts: the set \"bolts\" selects no part"),
-            std::string::npos)
-      << e;
-  s = scene_with(parts, R"({"sets": {"bolts": {"ids": ["bolt-*"], "optional": true}}})");
-  EXPECT_EQ(error_of([&] { pd::RuleIndex(*s.rules, s.parts); }), "(no error)");
-}
-
-TEST(RuleIndex, ScopeIgnoreExpectedAndToleranceHierarchy) {
-  const std::string parts = part("s1", R"("tags": ["st"], "group": "frame/w1")") + "," +
-                            part("s2", R"("tags": ["st"], "group": "frame/w1")") + "," +
-                            part("s3", R"("tags": ["st"], "group": "frame/w2")") + "," +
-                            part("p1", R"("tags": ["sys"])") + "," +
-                            part("p2", R"("tags": ["sys"])");
-  const pd::SceneSpec s = scene_with(parts, R"({
-    "sets": {"st": {"tags": ["st"]}, "sys": {"tags": ["sys"]}, "w2": {"groups": ["frame/w2"]},
-             "all": {"ids": ["*"]}},
-    "tests": [{"name": "coarse", "a": "st", "b": "sys", "tolerance": 0.3},
-              {"name": "fine", "a": "all", "b": "sys", "tolerance": 0.1},
-              {"name": "self", "a": "st"}],
-    "ignore": [{"same": "group", "reason": "welded"}],
-    "expected": [{"name": "e1", "a": "w2", "b": "sys", "max_depth": 0.2, "reason": "r"},
-                 {"name": "e2", "a": "st", "b": "sys", "max_depth": 0.4, "reason": "r"}],
-    "pairs": [{"pair": ["p1", "s1"], "tolerance": 0.7}]})");
-  const pd::RuleIndex index(*s.rules, s.parts);
-  using Scope = pd::PairDecision::Scope;
-  // s1 against p2: both tests cover it; equal rank, the smaller tolerance wins.
-  pd::PairDecision d = index.decide(0, 4);
-  EXPECT_EQ(d.scope, Scope::kChecked);
-  EXPECT_EQ(d.tests, (std::vector<int>{0, 1}));
-  EXPECT_EQ(d.tolerance, 0.1);
-  EXPECT_EQ(index.tolerance_rule(d), "tests[\"fine\"]");
-  EXPECT_EQ(d.expected, 1);  // e2: s1 is not in w2
-  // The pair's own level beats every test, whatever its value.
-  d = index.decide(3, 0);
-  EXPECT_EQ(d.tolerance, 0.7);
-  EXPECT_EQ(index.tolerance_rule(d), "pairs[0]");
-  // The first expected rule covering the pair is its.
-  EXPECT_EQ(index.decide(2, 3).expected, 0);
-  // Same group: ignored; another group: checked by the self test, no tolerance of its own.
-  d = index.decide(0, 1);
-  EXPECT_EQ(d.scope, Scope::kIgnored);
-  d = index.decide(1, 2);
-  EXPECT_EQ(d.scope, Scope::kChecked);
-  EXPECT_EQ(d.tests, (std::vector<int>{2}));
-  EXPECT_FALSE(d.tolerance);
-  // Systems against systems: "fine" needs one side in sys and the other in all: covered;
-  EXPECT_EQ(index.decide(3, 4).scope, Scope::kChecked);
-  EXPECT_EQ(index.sets_of(2), (std::vector<std::string>{"all", "st", "w2"}));
-}
-
-TEST(RuleIndex, OutOfScopeWhenNoTestCovers) {
-  const pd::SceneSpec s =
-      scene_with(part("a", R"("tags": ["x"])") + "," + part("b", R"("tags": ["y"])") + "," +
-                     part("c", R"("tags": ["y"])"),
-                 R"({"sets": {"x": {"tags": ["x"]}, "y": {"tags": ["y"]}},
-                     "tests": [{"name": "x-y", "a": "x", "b": "y"}]})");
-  const pd::RuleIndex index(*s.rules, s.parts);
-  EXPECT_EQ(index.decide(0, 1).scope, pd::PairDecision::Scope::kChecked);
-  EXPECT_EQ(index.decide(2, 0).scope, pd::PairDecision::Scope::kChecked);
-  EXPECT_EQ(index.decide(1, 2).scope, pd::PairDecision::Scope::kOutOfScope);
-}
 
 // ---- the worked example, against its boxes ----
 
@@ -267,7 +118,6 @@ void expect_example_report(const json& report, const json& truth) {
 json truth() {
   return json::parse(read_text(kSource + "/testdata/examples/rules-assembly.expected.json"));
 }
-
 TEST(RulesExample, ReportMatchesTheGeometry) {
   const std::string out = testing::TempDir() + "rules-example.json";
   const auto r = pdcheck(kExample + " -o " + out + " --jobs 1 --quiet");

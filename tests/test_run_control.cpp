@@ -19,7 +19,6 @@
 #include <thread>
 #include <vector>
 
-#include "printable.h"
 #include "shell_run.h"
 #include "termination.h"
 #include "work_queue.h"
@@ -229,11 +228,6 @@ TEST(Limits, AHugePairTimeoutDoesNotBusyPoll) {
       [&](size_t, bool ok, const std::string&) { done += ok; });
   EXPECT_EQ(done, 2);
   EXPECT_LT(cpu() - before, 0.3);
-}
-
-TEST(Printable, ControlCharactersAreEscaped) {
-  EXPECT_EQ(pd::printable("a\nb\x1b[2K\r\t\x7f\x01 \xc2\x9b \xc3\xbc\\"),
-            "a\\nb\\e[2K\\r\\t\\x7f\\x01 \\u009b \xc3\xbc\\");
 }
 
 TEST(Printable, PartIdsCannotForgeLogLines) {

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "tolerances.h"
+
 namespace pd {
 
 std::optional<Hull> convex_overlap(const Points& a, const Points& b) {
@@ -16,7 +18,7 @@ std::optional<Hull> convex_overlap(const Points& a, const Points& b) {
   const double scale =
       std::max((ha.vertices.rowwise().maxCoeff() - ha.vertices.rowwise().minCoeff()).norm(),
                (hb.vertices.rowwise().maxCoeff() - hb.vertices.rowwise().minCoeff()).norm());
-  const double eps = 1e-12 * std::max(1.0, scale);
+  const double eps = tol::kOnHull * std::max(1.0, scale);
   std::vector<Vec3> found;
   // Each edge of one hull, clipped to the other (Cyrus–Beck): what is left of it
   // lies in both; its ends are the intersection's vertices.

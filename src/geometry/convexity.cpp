@@ -11,6 +11,7 @@
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
 #include "geometry/surface_polygons.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -108,12 +109,12 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
       const double s = h.f.normals[f].dot(y) + h.f.offsets[f];
       if (s > best) best = s, near = f;
     }
-    const double on = 1e-12 * (hi - lo).norm();
+    const double on = tol::kOnHull * (hi - lo).norm();
     if (best > on) continue;  // outside this hull
     const Vec3 x = best >= -on ? y : Vec3(y - best * h.f.normals[near]);
     bool in = true;
     for (std::size_t f = 0; f < h.f.normals.size() && in; ++f)
-      in = h.f.normals[f].dot(x) + h.f.offsets[f] <= 1e-12 * (hi - lo).norm();
+      in = h.f.normals[f].dot(x) + h.f.offsets[f] <= on;
     if (in) consider(x);
     if (c.stopped) return finish();
   }
@@ -232,7 +233,8 @@ bool nested(const std::vector<Mesh>& shells) {
 double coordinate_noise(const Points& v) {
   if (v.cols() == 0) return 0.0;
   const double size = (v.rowwise().maxCoeff() - v.rowwise().minCoeff()).norm();
-  return std::max(1e-9 * size, 8.0 * std::ldexp(v.cwiseAbs().maxCoeff(), -24));
+  return std::max(tol::kNoiseFloor * size,
+                  tol::kNoiseUlps * std::ldexp(v.cwiseAbs().maxCoeff(), -24));
 }
 
 SurfacePolygons triangle_polygons(const Mesh& m, double within) {

@@ -324,13 +324,13 @@ bool reflex_cut(const Context& c, const Cell& cell, const Piece& p, Plane& out) 
   for (int t : concave) planes.push_back(c.reflex.plane_id[t]);
   std::sort(planes.begin(), planes.end());
   planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
-  thin(planes, 64);
+  thin(planes, tol::kDecomposeCutPlanes);
   for (int id : planes) cand.push_back(c.reflex.planes[id]);
   // Planes through two reflex edges (a fan through a hole's axis, a chord of
   // its facets): they split the notch between the sides without cutting a
   // concave face, so hole facets are shared out in halves, not peeled one by
   // one (a peel makes the cut depth grow with the facet count).
-  thin(edges, 24);
+  thin(edges, tol::kDecomposeCutEdges);
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t j = 0; j < edges.size(); ++j) {
       if (i == j) continue;
@@ -351,7 +351,7 @@ bool reflex_cut(const Context& c, const Cell& cell, const Piece& p, Plane& out) 
     const Vec3 u = n.normalized();
     cand.push_back({u, u.dot(e.a)});
   }
-  thin(concave, 256);
+  thin(concave, tol::kDecomposeCutFaces);
   std::tuple<int, int, double> best{INT32_MAX, 0, INFINITY};
   bool found = false;
   for (const Plane& pl : cand) {
@@ -449,7 +449,7 @@ bool witness_cut(Context& c, const Cell& cell, const Piece& p, Plane& out) {
     const Piece b = piece_of(c, cb, tol::kDecomposeSamples / 5, probes, best);
     if (a.points.cols() == 0 || b.points.cols() == 0) continue;
     const double cost = std::max(a.concavity.value, b.concavity.value) +
-                        1e-3 * p.concavity.value * std::abs(a.volume - b.volume) /
+                        tol::kDecomposeBalance * p.concavity.value * std::abs(a.volume - b.volume) /
                             std::max(a.volume + b.volume, 1e-300);
     if (cost < best) best = cost, out = pl;
   }
@@ -588,7 +588,7 @@ Cell root_cell(const Mesh& m, const std::vector<int>& tris, double pad) {
 std::deque<Cell> root_cells(const Context& c, const Convexity& whole, bool voids) {
   const Mesh& m = c.m;
   const double size = (m.vertices.rowwise().maxCoeff() - m.vertices.rowwise().minCoeff()).norm();
-  const double pad = 1e-6 * size + 4 * c.eps;  // no face lies in a root plane
+  const double pad = tol::kDecomposeRootPad * size + 4 * c.eps;  // no face lies in a root plane
   std::deque<Cell> work;
   if (whole.shells > 1 && !voids) {
     for (const std::vector<int>& tris : shell_triangles(m)) work.push_back(root_cell(m, tris, pad));

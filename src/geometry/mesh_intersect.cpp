@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "tolerances.h"
+
 namespace pd {
 
 namespace {
@@ -219,7 +221,7 @@ int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& 
   const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0),
                d21 = e2.dot(e1), den = d00 * d11 - d01 * d01;
   const double l1 = (d11 * d20 - d01 * d21) / den, l2 = (d00 * d21 - d01 * d20) / den;
-  const double margin = 1e-6;
+  const double margin = tol::kNearestFaceMargin;
   if (!(den > 0 && l1 > margin && l2 > margin && 1 - l1 - l2 > margin)) return 0;
   return e0.cross(e1).dot(Vec3(v - x)) > 0 ? 1 : -1;
 }

@@ -22,7 +22,7 @@ Vec3 centre(const Aabb& b) {
 std::optional<Vec3> across(const Vec3& v, const Vec3& n) {
   const Vec3 w = v - v.dot(n) * n;
   const double len = w.norm();
-  if (len < 0.1 * v.norm()) return std::nullopt;
+  if (len < tol::kBcfAcross * v.norm()) return std::nullopt;
   return w / len;
 }
 

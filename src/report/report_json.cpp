@@ -32,6 +32,10 @@ json pair_json(const PairResult& r, const std::vector<Part>& parts) {
   return pair_to_report(r, parts[r.a].id, parts[r.b].id);
 }
 
+namespace {
+
+// A shard's manifest (docs/report-format.md, "shard"); checked and pairs
+// counts are the shard's summary.
 json shard_json(const ShardManifest& m) {
   return {{"index", m.shard.index},
           {"total", m.shard.total},
@@ -45,6 +49,8 @@ json shard_json(const ShardManifest& m) {
           {"part_index", m.part_index},
           {"owned", m.owned}};
 }
+
+}  // namespace
 
 json summary_json(const Summary& s) {
   json j = {{"parts", s.parts},
@@ -88,6 +94,8 @@ json method_json(const SolverSettings& s) {
   return method;
 }
 
+namespace {
+
 // The report's view of part k (results/part_result.h).
 PartResult part_result(const RunResult& r, size_t k) {
   const Part& p = r.parts[k];
@@ -124,6 +132,8 @@ PartResult part_result(const RunResult& r, size_t k) {
   out.error = p.error;
   return out;
 }
+
+}  // namespace
 
 json report_json(const ReportContext& ctx, const RunResult& r) {
   json parts = json::array();

@@ -28,9 +28,6 @@ nlohmann::ordered_json report_json(const ReportContext& ctx, const RunResult& r)
 nlohmann::ordered_json summary_json(const Summary& s);
 /// The report's `method`: the depth method's name and the settings it uses.
 nlohmann::ordered_json method_json(const SolverSettings& s);
-/// A shard's manifest (docs/report-format.md, "shard"); checked and pairs
-/// counts are the shard's summary.
-nlohmann::ordered_json shard_json(const ShardManifest& m);
 /// One line for stderr: "pdcheck: 12 parts, 7 pairs checked: 1 interference, ...".
 std::string summary_line(const Summary& s, double seconds);
 

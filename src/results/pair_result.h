@@ -46,7 +46,7 @@ struct MotionTrace {
 
 /// Adding a field: declare it here and describe it once in for_each_field
 /// (results/pair_fields.h); the worker messages, the refinement cache, the
-/// report and its reader (merge, --reuse) all follow (tests/test_results_codec.cpp).
+/// report and its reader (merge, --reuse) all follow (tests/test_codec.cpp).
 struct PairResult {
   int a = -1, b = -1;  ///< part indices
   Status status = Status::kError;

@@ -14,7 +14,7 @@ namespace pd {
 
 /// Adding a field: declare it here and describe it once in for_each_field
 /// (results/part_fields.h); the report and its readers follow
-/// (tests/test_results_codec.cpp).
+/// (tests/test_codec.cpp).
 struct PartResult {
   std::string id;
   std::string source;  ///< the mesh path, or "inline"

@@ -337,39 +337,54 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
   return part;
 }
 
+/// The scene's distinct geometry: the same mesh file under the same units,
+/// transform and pieces is hulled once, and read once under any transform.
+/// Inline parts are distinct.
+struct DistinctParts {
+  std::vector<const PartSpec*> unique;
+  std::vector<std::optional<size_t>> file_of;  ///< per distinct part: its mesh file
+  size_t files = 0;                            ///< distinct mesh files
+  std::vector<size_t> users;                   ///< scene parts per distinct geometry
+  std::vector<size_t> source;                  ///< per scene part: its distinct part
+};
+
+DistinctParts distinct_parts(const SceneSpec& scene) {
+  DistinctParts d;
+  d.source.resize(scene.parts.size());
+  std::map<std::string, size_t> files, seen;
+  for (size_t k = 0; k < scene.parts.size(); ++k) {
+    const PartSpec& spec = scene.parts[k];
+    if (spec.mesh) {
+      const auto [it, fresh] = seen.emplace(instance_key(spec), d.unique.size());
+      d.source[k] = it->second;
+      if (!fresh) {
+        ++d.users[it->second];
+        continue;
+      }
+    } else {
+      d.source[k] = d.unique.size();
+    }
+    d.unique.push_back(&spec);
+    d.users.push_back(1);
+    d.file_of.emplace_back();
+    if (spec.mesh && !spec.error)
+      d.file_of.back() = files.emplace(file_key(spec), files.size()).first->second;
+  }
+  d.files = files.size();
+  return d;
+}
+
 }  // namespace
 
 std::vector<Part> build_parts(const SceneSpec& scene, int threads,
                               const std::function<void(size_t)>& on_built, double load_timeout,
                               const PartsCache& cache, double load_memory_mb,
                               const MeshLoadHook& before_load) {
-  // Distinct geometry first: the same mesh file under the same units,
-  // transform and pieces is hulled once, and read once under any transform.
-  // Inline parts are distinct.
-  std::vector<const PartSpec*> unique;
-  std::vector<std::optional<size_t>> file_of;  // per distinct part: its mesh file
-  std::map<std::string, size_t> files;
-  std::vector<size_t> users;  // scene parts per distinct geometry
-  std::vector<size_t> source(scene.parts.size());
-  std::map<std::string, size_t> seen;
-  for (size_t k = 0; k < scene.parts.size(); ++k) {
-    const PartSpec& spec = scene.parts[k];
-    if (spec.mesh) {
-      const auto [it, fresh] = seen.emplace(instance_key(spec), unique.size());
-      source[k] = it->second;
-      if (!fresh) {
-        ++users[it->second];
-        continue;
-      }
-    } else {
-      source[k] = unique.size();
-    }
-    unique.push_back(&spec);
-    users.push_back(1);
-    file_of.emplace_back();
-    if (spec.mesh && !spec.error)
-      file_of.back() = files.emplace(file_key(spec), files.size()).first->second;
-  }
+  const DistinctParts distinct = distinct_parts(scene);
+  const std::vector<const PartSpec*>& unique = distinct.unique;
+  const std::vector<std::optional<size_t>>& file_of = distinct.file_of;
+  const std::vector<size_t>& users = distinct.users;
+  const std::vector<size_t>& source = distinct.source;
 
   // Hulls are independent: qhull_r keeps its state per run, each assimp
   // Importer its own, and build_part catches whatever it throws. The first
@@ -377,14 +392,14 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   const double concavity_tol = tol::kConcavityFraction * scene.tolerance.value_or(0.0);
   const AutoTolerance* auto_tol = scene.auto_tolerance ? &*scene.auto_tolerance : nullptr;
   std::vector<Part> built(unique.size());
-  std::vector<MeshFile> mesh_files(files.size());
+  std::vector<MeshFile> mesh_files(distinct.files);
   // Every mesh file is read first, in loader processes: forked here, while
   // this process has one thread (see mesh_loader_processes.cpp).
   // A file whose hulls are cached is read only when its surface is kept.
   // A split file is read once, by node, for all its node parts.
   std::vector<MeshRequest> requests;
   std::vector<std::vector<size_t>> requested;  // per request: its files
-  std::vector<const PartSpec*> file_spec(files.size());
+  std::vector<const PartSpec*> file_spec(distinct.files);
   std::map<std::string, size_t> by_node;  // a split file's path -> its request
   for (size_t u = 0; u < unique.size(); ++u) {
     if (!file_of[u] || file_spec[*file_of[u]]) continue;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scene/mesh_loader.h"
+#include "tolerances.h"
 
 // Two behaviours of Debian's assimp 5.2.5 PLY reader are worked around here,
 // by handing it an equivalent file from memory (remove when assimp is fixed):
@@ -472,7 +473,8 @@ void check_ply_read(const PlyFile& file, const Eigen::Matrix<float, 3, Eigen::Dy
     if (!file.ascii) return want == got;
     // assimp parses ASCII numbers with its own fast_atof, not correctly
     // rounded: a misreading is off by far more than a few units in the last place.
-    return std::abs(double(want) - double(got)) <= 1e-5 * std::abs(double(want)) + 1e-30;
+    return std::abs(double(want) - double(got)) <=
+           tol::kPlyAsciiAgreement * std::abs(double(want)) + 1e-30;
   };
   std::ostringstream m;
   m.precision(9);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "solve/objective.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -19,11 +20,6 @@ struct Cell {
   double valid_radius;
   Vec3 parent_point;  // the parent's support point: a point of P − Q, a bound too
 };
-
-// Candidate lists are computed for a cap this much larger than the cell's own,
-// so that every child's cap lies inside its parent's (a corner child's cap
-// reaches just to the parent cell's corner).
-constexpr double kValidMargin = 1.25;
 
 }  // namespace
 
@@ -46,8 +42,10 @@ SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const
 
   // The root square holds the cap (its gnomonic image is a disc of radius tan r).
   const double half = std::tan(radius);
-  Cell root{-half,       half, -half,  half,
-            {},          {},   centre, kValidMargin * std::atan(half * std::sqrt(2.0)) * 1.001,
+  Cell root{-half,       half,
+            -half,       half,
+            {},          {},
+            centre,      tol::kSubdivisionValidMargin * std::atan(half * std::sqrt(2.0)) * 1.001,
             Vec3::Zero()};
   root.pi = extreme_in_cap(p, centre, root.valid_radius, true);
   root.qj = extreme_in_cap(q, centre, root.valid_radius, false);
@@ -67,7 +65,7 @@ SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const
     const Vec3 corners[4] = {dir(c.s0, c.t0), dir(c.s1, c.t0), dir(c.s1, c.t1), dir(c.s0, c.t1)};
     double rho = 0;
     for (const Vec3& k : corners) rho = std::max(rho, angle_between(mid, k));
-    rho *= 1 + 1e-9;
+    rho *= 1 + tol::kCellRadiusPad;
     // Outside the cap: nothing to search (other cells of the certificate cover it).
     if (mid.dot(centre) < cos_cap && angle_between(mid, centre) - rho > radius) continue;
     // The support point at the centre, over the candidates (exact: they hold
@@ -96,7 +94,7 @@ SubdividedSearch lowest_facet_subdivided(const Points& p, const Points& q, const
     };
     if (std::max(bound(x), bound(c.parent_point)) > prune) continue;  // closed
     // Open: the cell's own candidates (within its parent's, a larger cap).
-    const double vr = kValidMargin * rho;
+    const double vr = tol::kSubdivisionValidMargin * rho;
     if (angle_between(mid, c.valid_centre) + vr > c.valid_radius) {
       c.pi = extreme_in_cap(p, mid, vr, true);  // not nested (never expected): from scratch
       c.qj = extreme_in_cap(q, mid, vr, false);

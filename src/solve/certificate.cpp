@@ -8,6 +8,8 @@
 #include <mutex>
 #include <numeric>
 
+#include "tolerances.h"
+
 namespace pd {
 
 namespace {
@@ -45,7 +47,7 @@ const std::vector<SphereCell>& cube_sphere_cells(int n) {
                                           cube_point(f, s1, t1), cube_point(f, s0, t1)};
         double r = 0;
         for (const Vec3& k : corners) r = std::max(r, angle_between(c, k));
-        cells.push_back({c, r * (1 + 1e-9), corners, f, i, j});
+        cells.push_back({c, r * (1 + tol::kCellRadiusPad), corners, f, i, j});
       }
     }
   }
@@ -114,10 +116,10 @@ CapCover open_region_caps(const CellSupports& s, double best, int grid, double m
     if (!closed) open.push_back(k);
   }
   // Fail fast: a cap of max_radius holds at most its area over the smallest
-  // cell's (a gnomonic cell is >= 0.3 of the mean area at any grid), so more
+  // cell's (a gnomonic cell is >= kMinCellAreaFraction of the mean area at any grid), so more
   // open cells than max_caps such caps can hold cannot be covered.
   const double cap_area = 2 * M_PI * (1 - std::cos(max_radius));
-  const double min_cell = 0.3 * 4 * M_PI / double(nc);
+  const double min_cell = tol::kMinCellAreaFraction * 4 * M_PI / double(nc);
   if (double(open.size()) > max_caps * cap_area / min_cell) {
     out.ok = false;
     return out;
@@ -133,7 +135,7 @@ CapCover open_region_caps(const CellSupports& s, double best, int grid, double m
   for (size_t u = 0; u < open.size(); ++u)
     for (size_t w = u + 1; w < open.size(); ++w) {
       const SphereCell &cu = cells[open[u]], &cw = cells[open[w]];
-      if (angle_between(cu.centre, cw.centre) <= 1.05 * (cu.radius + cw.radius))
+      if (angle_between(cu.centre, cw.centre) <= tol::kCellJoinSlack * (cu.radius + cw.radius))
         group[root(int(u))] = root(int(w));
     }
   std::map<int, std::vector<size_t>> groups;

@@ -1,6 +1,7 @@
 #include "solve/facet_snap.h"
 
 #include <Eigen/SVD>
+#include <iterator>
 #include <vector>
 
 #include "solve/neighbourhood.h"
@@ -71,13 +72,13 @@ std::optional<Vec3> snap_with(const Points& p, const Points& q, const Vec3& v,
 }  // namespace
 
 std::optional<Vec3> snap_to_facet(const Points& p, const Points& q, const Vec3& v) {
-  return snap_with(p, q, v, {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight});
+  return snap_with(p, q, v, {std::begin(tol::kSnapBands), std::end(tol::kSnapBands)});
 }
 
 std::optional<Vec3> snap_from_descent(const Points& p, const Points& q, const Vec3& v) {
   std::vector<double> bands;
   for (double t = tol::kDescentSnapBand; t > tol::kActiveLoose * 1.5; t *= 0.1) bands.push_back(t);
-  for (double t : {tol::kActiveLoose, 1e-8, 1e-9, tol::kActiveTight}) bands.push_back(t);
+  bands.insert(bands.end(), std::begin(tol::kSnapBands), std::end(tol::kSnapBands));
   return snap_with(p, q, v, bands);
 }
 

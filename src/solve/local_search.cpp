@@ -23,7 +23,7 @@ size_t add_violators(const Points& x, const Vec3& v, double level, bool top,
   std::vector<char> in(s.size(), 0);
   for (int k : ids) in[k] = 1;
   size_t added = 0;
-  const double slack = 1e-12;
+  const double slack = tol::kPolishSlack;
   for (Eigen::Index k = 0; k < s.size(); ++k) {
     if (in[k]) continue;
     if (top ? s[k] > level + slack : s[k] < level - slack) {
@@ -56,9 +56,9 @@ DescentOutcome descend(const PairProblem& pr, const Vec3& v0, SolveStats& stats)
 
 LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v0,
                    SolveStats& stats, bool alpha_free) {
-  // The reduced problem: a band of 0.05 in the unit frame holds every vertex that
+  // The reduced problem: a band in the unit frame that holds every vertex that
   // is active within a few degrees of the descent's end point.
-  const double band = 0.05;
+  const double band = tol::kPolishBand;
   std::vector<int> pi = near_extreme(pr.p(), v0, band, true);
   std::vector<int> qj = near_extreme(pr.q(), v0, band, false);
   LocalStart start = IpoptLocalSolver::paper_start(pr.p(), pr.q(), v0);
@@ -87,7 +87,7 @@ LocalResult polish(const PairProblem& pr, IpoptLocalSolver& ipopt, const Vec3& v
     const double g = pr.gap(*n);
     // Both values bound the minimum from above; the snap must also stay at this
     // optimum (a wrong active set could jump elsewhere).
-    if (g <= r.gap && angle_between(*n, o.v) < 1e-3) r = {*n, g, true, ""};
+    if (g <= r.gap && angle_between(*n, o.v) < tol::kPolishSnapAngle) r = {*n, g, true, ""};
   }
   return r;
 }

@@ -4,6 +4,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "tolerances.h"
+
 namespace pd {
 
 namespace {
@@ -19,7 +21,7 @@ struct Smoothed {
 // in the derivatives, which then cost O(active) after the O(n) dot products.
 Smoothed log_sum_exp(const Points& x, const Vec3& v, double s, double mu, bool derivatives) {
   const Eigen::RowVectorXd t = s * (v.transpose() * x);
-  const double top = t.maxCoeff(), cut = top - 40.0 * mu;
+  const double top = t.maxCoeff(), cut = top - tol::kLogSumExpCut * mu;
   double z = 0.0;
   Vec3 g = Vec3::Zero();
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
@@ -63,15 +65,15 @@ DescentOutcome smooth_descent(const Points& p, const Points& q, const Vec3& star
   DescentOutcome out{start.normalized(), 0};
   Vec3& v = out.v;
   // The unit frame puts both parts in the unit ball, so μ is an absolute length.
-  for (double mu : {3e-3, 6e-4, 1.2e-4}) {
-    for (int it = 0; it < 20; ++it) {
+  for (double mu : tol::kDescentMu) {
+    for (int it = 0; it < tol::kDescentSteps; ++it) {
       const Smoothed f = smoothed_gap(p, q, v, mu, true);
       ++out.evaluations;
       out.smoothed = f.value;
       out.mu = mu;
       const auto b = tangent_basis(v);
       const Eigen::Vector2d g = b.transpose() * f.grad;
-      if (g.norm() < 1e-3 * mu) break;
+      if (g.norm() < tol::kDescentStationary * mu) break;
       // Riemannian Hessian on the sphere: projected Hessian minus (v·∇f)·I.
       Eigen::Matrix2d h = b.transpose() * f.hess * b - v.dot(f.grad) * Eigen::Matrix2d::Identity();
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(h);
@@ -84,11 +86,11 @@ DescentOutcome smooth_descent(const Points& p, const Points& q, const Vec3& star
       // Backtracking (Armijo) along the retraction v ← normalise(v + B d).
       double step = 1.0;
       bool moved = false;
-      for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+      for (int ls = 0; ls < tol::kDescentHalvings; ++ls, step *= 0.5) {
         const Vec3 trial = (v + b * (step * d)).normalized();
         ++out.evaluations;
         const double ft = smoothed_gap(p, q, trial, mu, false).value;
-        if (ft <= f.value + 1e-4 * step * g.dot(d)) {
+        if (ft <= f.value + tol::kDescentArmijo * step * g.dot(d)) {
           v = trial;
           out.smoothed = ft;
           moved = true;

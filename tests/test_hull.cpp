@@ -1,8 +1,6 @@
+// The convex hull of a point set (hull.cpp): degenerate sets keep their shape.
 #include <gtest/gtest.h>
 
-#include "batch/broad_phase.h"
-#include "corpus/generators.h"
-#include "geometry/frame.h"
 #include "geometry/hull.h"
 
 using namespace pd;
@@ -67,27 +65,4 @@ TEST(Hull, RejectsEmptyAndNonFinite) {
   Points p = cube(1);
   p(0, 3) = std::nan("");
   EXPECT_THROW(convex_hull(p), std::invalid_argument);
-}
-
-TEST(Frame, PairFrameMapsIntoUnitBall) {
-  const Points a = cube(10, Vec3(35000, 0, 0)), b = cube(1, Vec3(35010, 5, 0));
-  const Frame f = pair_frame(a, b);
-  EXPECT_LE(f.to_local(a).colwise().norm().maxCoeff(), 1.0 + 1e-12);
-  EXPECT_LE(f.to_local(b).colwise().norm().maxCoeff(), 1.0 + 1e-12);
-}
-
-TEST(BroadPhase, MatchesBruteForce) {
-  SphereSampler r(7);
-  std::vector<Aabb> boxes;
-  for (int k = 0; k < 400; ++k) {
-    const Vec3 c(100 * r.uniform(), 100 * r.uniform(), 100 * r.uniform());
-    const Vec3 h(5 * r.uniform(), 5 * r.uniform(), 5 * r.uniform());
-    boxes.push_back({c - h, c + h});
-  }
-  boxes.push_back({boxes[0].hi, boxes[0].hi + Vec3::Ones()});  // touching a corner counts
-  std::vector<std::pair<int, int>> brute;
-  for (int i = 0; i < int(boxes.size()); ++i)
-    for (int j = i + 1; j < int(boxes.size()); ++j)
-      if (boxes[i].overlaps(boxes[j])) brute.emplace_back(i, j);
-  EXPECT_EQ(overlapping_boxes(boxes, 0.0), brute);
 }

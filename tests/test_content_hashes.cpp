@@ -1,0 +1,47 @@
+// The per-part content hashes (content_hashes.cpp): a part's hash follows its
+// mesh file's bytes (file_hash.h), computed once per file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "batch/content_hashes.h"
+#include "file_hash.h"
+
+using namespace pd;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(PDCHECK_BINARY_DIR) / "test-content-hashes" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+void write(const fs::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+}  // namespace
+
+TEST(ContentHashes, PartHashesFollowTheFile) {
+  const fs::path d = fresh_dir("parts");
+  write(d / "m.stl", "one");
+  SceneSpec s;
+  for (const char* id : {"a", "b"}) {
+    PartSpec p;
+    p.id = id;
+    p.mesh = (d / "m.stl").string();
+    s.parts.push_back(p);
+  }
+  const auto files = mesh_file_hashes(s);
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files.begin()->second, file_content_hash((d / "m.stl").string()));
+  const auto before = part_content_hashes(s, files);
+  EXPECT_EQ(before, part_content_hashes(s));
+  EXPECT_EQ(before[0], before[1]);
+  write(d / "m.stl", "two");
+  EXPECT_NE(part_content_hashes(s)[0], before[0]);
+}

@@ -1,0 +1,42 @@
+// The convexity cache (convexity_cache.cpp): entries read back exactly, keys follow their inputs.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "scene/convexity_cache.h"
+
+using namespace pd;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d =
+      fs::path(testing::TempDir()) / ("cache_file_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+}  // namespace
+
+TEST(ConvexityCache, EntriesReadBackExactlyAndKeysFollowTheirInputs) {
+  const fs::path dir = fresh_dir("convexity");
+  const std::string k = convexity_key("aaaa", 0.01, 0.02);
+  EXPECT_EQ(k, convexity_key("aaaa", 0.01, 0.02));
+  EXPECT_NE(k, convexity_key("aaab", 0.01, 0.02));                       // another file's bytes
+  EXPECT_NE(k, convexity_key("aaaa", std::nextafter(0.01, 1.0), 0.02));  // another tolerance
+  EXPECT_NE(k, convexity_key("aaaa", 0.01, std::nextafter(0.02, 1.0)));  // another threshold
+  const StoredConvexity c{1.0 / 3.0, true};
+  ASSERT_EQ(write_cached_convexity(dir.string(), k, c), "");
+  const auto back = read_cached_convexity(dir.string(), k);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->concavity, c.concavity);  // exact bits
+  EXPECT_TRUE(back->closed);
+  EXPECT_FALSE(read_cached_convexity(dir.string(), convexity_key("aaaa", 0.01, 0.03)));
+  const fs::path file = dir / (k + ".pdv");
+  fs::resize_file(file, fs::file_size(file) - 1);
+  EXPECT_FALSE(read_cached_convexity(dir.string(), k));
+  fs::remove_all(dir);
+}
