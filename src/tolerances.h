@@ -242,8 +242,8 @@ inline constexpr long kSurfaceDepthSamples = 20000;
 /// accepted: 2, a spread <= 60 degrees (a shaft's shoulder, a 90-degree inner
 /// corner, has sqrt 2); a larger kappa would only loosen the bound.
 inline constexpr int kLocalPlanesMaxFaces = 512;
-inline constexpr int kLocalPlanesMaxPlanes = 16;
-inline constexpr int kLocalPlanesMaxChoices = 32;
+inline constexpr int kLocalPlanesMaxPlanes = 40;
+inline constexpr int kLocalPlanesMaxChoices = 80;
 inline constexpr double kLocalPlanesMaxKappa = 2.0;
 /// The faces a plane model looks at first lie within kLocalPlanesFirstKappa·(d
 /// + r + noise) + r of the box's centre (enough for the feet of a hole whose

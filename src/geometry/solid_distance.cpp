@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -223,10 +224,41 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
 
 namespace {
 
+// A face near a ball: its part inside the ball's box, and the disk its plane
+// cuts from the ball. Every side test below is about the face's points within
+// the ball (the certificates hold there, docs/solver.md), which lie in both:
+// the disk keeps a large face's part beyond the ball, which the box still
+// holds, from failing a test for no reason.
+struct FacePart {
+  std::vector<Vec3> points;  ///< clipped to the box
+  Vec3 normal = Vec3::UnitZ();
+  Vec3 centre = Vec3::Zero();  ///< of the disk: the ball's centre projected on the face's plane
+  double radius = 0.0;
+  /// How far plane q's s can vary over the disk from its centre.
+  double spread(const FacePlane& q) const {
+    return radius * (q.normal - q.normal.dot(normal) * normal).norm();
+  }
+  /// A lower bound of s_q over the face's points within the ball.
+  /// (The disk is consulted only where the points cross the plane: the tests
+  /// care about the sign, and it costs a square root.)
+  double least(const FacePlane& q) const {
+    double m = INFINITY;
+    for (const Vec3& p : points) m = std::min(m, q.at(p));
+    return m >= 0 ? m : std::max(m, q.at(centre) - spread(q));
+  }
+  /// An upper bound of s_q over them.
+  double greatest(const FacePlane& q) const {
+    double m = -INFINITY;
+    for (const Vec3& p : points) m = std::max(m, q.at(p));
+    return m <= 0 ? m : std::min(m, q.at(centre) + spread(q));
+  }
+};
+
 // How deep a convex polygon reaches into the wedge {s_p < 0} ∩ {s_q < 0}: the
 // largest min(−s_p, −s_q) over it. That function is concave, so its largest is
 // at a corner or where the ridge s_p = s_q crosses an edge.
-double wedge_crossing(const std::vector<Vec3>& face, const FacePlane& p, const FacePlane& q) {
+double wedge_crossing(const FacePart& part, const FacePlane& p, const FacePlane& q) {
+  const std::vector<Vec3>& face = part.points;
   double m = -INFINITY;
   for (size_t k = 0; k < face.size(); ++k) {
     const Vec3 &x = face[k], &y = face[(k + 1) % face.size()];
@@ -238,14 +270,14 @@ double wedge_crossing(const std::vector<Vec3>& face, const FacePlane& p, const F
       m = std::max(m, -(px + u * (py - px)));
     }
   }
-  return m;
+  return std::min({m, -part.least(p), -part.least(q)});
 }
 
 // The faces near a ball, grouped by plane (a quad's two triangles, a flat
 // face's fan: one plane, their rounding measured as slack).
 struct PlaneGroup {
   FacePlane plane;
-  std::vector<std::vector<Vec3>> faces;  ///< each face clipped to the reach's box
+  std::vector<FacePart> faces;
   bool supporting = true;
 };
 
@@ -292,10 +324,8 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
                                              double slack, double cap, const Vec3& c, double r,
                                              double reach, bool witness, const Outside& outside) {
   using Group = PlaneGroup;
-  const auto least = [](const std::vector<Vec3>& face, const FacePlane& q, double sign) {
-    double m = INFINITY;
-    for (const Vec3& p : face) m = std::min(m, sign * q.at(p));
-    return m;
+  const auto least = [](const FacePart& face, const FacePlane& q, double sign) {
+    return sign > 0 ? face.least(q) : -face.greatest(q);
   };
   double hole_slack = slack;
   for (const Group* g : hole) {
@@ -375,8 +405,7 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
     const std::vector<const PlaneGroup*>& hole, double cap) {
   const auto outer = [&](const PlaneGroup* g, const PlaneGroup* h) {
     for (const auto& t : g->faces)
-      for (const Vec3& p : t)
-        if (h->plane.at(p) > cap) return false;
+      if (t.greatest(h->plane) > cap) return false;
     return true;
   };
   UnionFind sets(hole.size());
@@ -401,30 +430,44 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                                                    double reach, double cap) {
   const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
   std::vector<PlaneGroup> groups;
+  size_t last = 0;
   for (int f : faces) {
     const std::array<Vec3, 3> t = mesh.face(f);
     if (point_triangle_distance(c, t[0], t[1], t[2]) > reach) continue;
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return std::nullopt;
-    std::vector<Vec3> part = clip_to_box(t, box_lo, box_hi);
-    if (part.empty()) continue;
-    auto g = std::find_if(groups.begin(), groups.end(), [&](const PlaneGroup& q) {
+    FacePart part{clip_to_box(t, box_lo, box_hi), n, Vec3::Zero(), 0.0};
+    if (part.points.empty()) continue;
+    // The disk, widened for the rounding of its centre and of n (a few ulps
+    // of the coordinates), so that it holds every point of the face within the ball.
+    const double height = n.dot(c - t[0]);
+    part.centre = c - height * n;
+    part.radius = std::sqrt(std::max(0.0, reach * reach - height * height)) +
+                  8 * std::numeric_limits<double>::epsilon() * (c.cwiseAbs().maxCoeff() + reach);
+    const auto same_plane = [&](const PlaneGroup& q) {
       return q.plane.normal.dot(n) > 0.999 &&
-             std::all_of(part.begin(), part.end(),
+             std::all_of(part.points.begin(), part.points.end(),
                          [&](const Vec3& p) { return std::abs(q.plane.at(p)) <= cap; });
-    });
+    };
+    // A face's plane is most often the previous face's (a quad's two
+    // triangles, a fan), so that group is asked first.
+    auto g = last < groups.size() && same_plane(groups[last])
+                 ? groups.begin() + static_cast<std::ptrdiff_t>(last)
+                 : std::find_if(groups.begin(), groups.end(), same_plane);
     if (g == groups.end()) {
       groups.push_back({{n, n.dot(t[0])}, {}, true});
       g = groups.end() - 1;
     }
+    last = static_cast<size_t>(g - groups.begin());
     g->faces.push_back(std::move(part));
   }
   return groups;
 }
 
 // How the groups' faces lie against each other's planes: crossing[k], how far
-// any face lies beyond plane k; crosses(k, h), a face of group h beyond plane
-// k by more than cap. A group crossed so is not supporting.
+// any face lies beyond plane k (complete for the supporting planes, the only
+// ones it bounds); crosses(k, h), a face of group h beyond plane k by more
+// than cap. A group crossed so is not supporting.
 struct Crossings {
   std::vector<double> crossing;
   std::vector<char> crossed;
@@ -437,10 +480,13 @@ Crossings measure_crossings(std::vector<PlaneGroup>& groups, double cap) {
   for (size_t k = 0; k < x.n; ++k)
     for (size_t h = 0; h < x.n; ++h)
       for (const auto& t : groups[h].faces) {
-        double m = INFINITY;  // the least s over the face: < -cap, beyond the plane
-        for (const Vec3& p : t) m = std::min(m, groups[k].plane.at(p));
+        const double m = t.least(groups[k].plane);  // < -cap: beyond the plane
         x.crossing[k] = std::max(x.crossing[k], -m);
-        if (m < -cap) x.crossed[k * x.n + h] = 1, groups[k].supporting = false;
+        if (m < -cap) {
+          // Crossed: k is not supporting, so its crossing is no longer used.
+          x.crossed[k * x.n + h] = 1, groups[k].supporting = false;
+          break;
+        }
       }
   return x;
 }
@@ -568,7 +614,7 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
 
 }  // namespace
 
-LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const {
+LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r, Widen widen) const {
   // The faces near the box first (fewer planes, a smaller spread), then, where
   // they leave something unexplained, those within the largest reach.
   bool complete = false;
@@ -576,7 +622,7 @@ LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r) const
     const auto outside = [&](const Vec3& p) { return whole_.outside(p); };
     LocalPlanes near =
         planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesFirstKappa, false, outside, complete);
-    if (complete) return near;
+    if (complete || (widen == Widen::kWhenEmpty && !near.empty())) return near;
     return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, false, outside,
                        complete);
   }

@@ -109,11 +109,20 @@ class SolidDistance {
 
   DistanceBounds at(const Vec3& p) const;
 
+  /// When the faces near a box leave something unexplained, whether those
+  /// within the largest reach are tried as well: always (the best model), or
+  /// only when the nearer ones gave none at all. A model that leaves faces
+  /// unexplained still bounds the box, and the larger reach rarely explains
+  /// them (a bore's wider arc, more planes) while it costs about twice as much:
+  /// a branch and bound that splits the box anyway does better without it.
+  enum class Widen { kWhenUnexplained, kWhenEmpty };
+
   /// The plane structure of the surface around a box of half-diagonal r about
   /// c, for a centre at distance d from the surface (|at(c)|): the planes of
   /// every face within reach = kappa_max·(d + r + noise) + r of c, and only
   /// those whose bound's foot points provably stay within that reach.
-  LocalPlanes local_planes(const Vec3& c, double d, double r) const;
+  LocalPlanes local_planes(const Vec3& c, double d, double r,
+                           Widen widen = Widen::kWhenUnexplained) const;
 
  private:
   PreparedMesh whole_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <queue>
 #include <vector>
 
@@ -14,11 +15,23 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The two parts' plane models of a box. They hold for every point of that box
+// in the solid, so also over each box inside it: a cell's children try their
+// parent's models (a small LP each) before building their own.
+struct Models {
+  LocalPlanes a, b;
+};
+
 struct Cell {
   Vec3 lo, hi;
   double upper;  ///< bound of φ over the cell
   int depth;
+  std::shared_ptr<const Models> models;  ///< this cell's, else its nearest ancestor's; may be null
 };
+// A box whose models leave faces unexplained is split anyway: widening the
+// reach for them costs more than the boxes it saves (solid_distance.h).
+constexpr auto kWiden = SolidDistance::Widen::kWhenEmpty;
+
 struct ByUpper {
   bool operator()(const Cell& x, const Cell& y) const { return x.upper < y.upper; }
 };
@@ -94,8 +107,10 @@ class Search {
   }
 
   // An upper bound of φ over the cell with centre probe p; -inf when the cell
-  // holds no point of both solids.
-  double bound(const Cell& cell, const Probe& p, bool planes) const {
+  // holds no point of both solids. With `planes`, the inherited models are
+  // tried first, then the cell's own, which replace them in `cell.models`
+  // when built.
+  double bound(Cell& cell, const Probe& p, bool planes) const {
     const Vec3 c = 0.5 * (cell.lo + cell.hi);
     const double r = 0.5 * (cell.hi - cell.lo).norm();
     if (p.a.upper < -r || p.b.upper < -r) return -INFINITY;  // wholly outside a part
@@ -104,17 +119,24 @@ class Search {
     std::vector<Affine> common;
     if (std::isfinite(p.a.upper)) common.push_back({p.a.upper + r, Vec3::Zero()});
     if (std::isfinite(p.b.upper)) common.push_back({p.b.upper + r, Vec3::Zero()});
+    const double enough = std::max(best, settled_);
+    if (cell.models) {
+      upper = planes_bound(cell.models->a, cell.models->b, common, cell, upper);
+      if (upper <= enough) return upper;
+    }
     // One part's model often settles the box alone (below the best point found,
     // or below half the threshold, where it is never split): the other's is
     // then not built.
-    const LocalPlanes la = a_.local_planes(c, std::abs(p.a.lower), r);
-    if (!la.empty()) {
-      upper = planes_bound(la, LocalPlanes{}, common, cell, upper);
-      if (upper <= std::max(best, settled_)) return upper;
+    auto own = std::make_shared<Models>();
+    own->a = a_.local_planes(c, std::abs(p.a.lower), r, kWiden);
+    if (!own->a.empty()) {
+      upper = planes_bound(own->a, LocalPlanes{}, common, cell, upper);
+      if (upper <= enough) return upper;
     }
-    const LocalPlanes lb = b_.local_planes(c, std::abs(p.b.lower), r);
-    if (lb.empty()) return upper;
-    return planes_bound(la, lb, common, cell, upper);
+    own->b = b_.local_planes(c, std::abs(p.b.lower), r, kWiden);
+    if (!own->b.empty()) upper = planes_bound(own->a, own->b, common, cell, upper);
+    if (!own->a.empty() || !own->b.empty()) cell.models = std::move(own);
+    return upper;
   }
 
   // The plane models' bound over the cell (docs/solver.md): the largest, over
@@ -123,6 +145,7 @@ class Search {
   // no better or there are too many choices.
   double planes_bound(const LocalPlanes& la, const LocalPlanes& lb,
                       const std::vector<Affine>& common, const Cell& cell, double upper) const {
+    if (la.empty() && lb.empty()) return upper;
     const auto alts_a = alternatives(la, cell.lo, cell.hi),
                alts_b = alternatives(lb, cell.lo, cell.hi);
     if (alts_a.empty() || alts_b.empty()) return -INFINITY;  // outside a part throughout
@@ -182,7 +205,7 @@ class Search {
 // so cells stay about cubic and a flat region is not cut across its thickness.
 std::vector<Cell> split(const Cell& c) {
   const Vec3 e = c.hi - c.lo, mid = 0.5 * (c.lo + c.hi);
-  std::vector<Cell> out{{c.lo, c.hi, c.upper, c.depth + 1}};
+  std::vector<Cell> out{{c.lo, c.hi, c.upper, c.depth + 1, c.models}};
   for (int d = 0; d < 3; ++d) {
     if (e[d] < 0.5 * e.maxCoeff()) continue;
     const size_t n = out.size();
@@ -220,7 +243,7 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
   Search s(a, b, threshold);
   std::priority_queue<Cell, std::vector<Cell>, ByUpper> open;
   {
-    Cell root{region.min(), region.max(), cap, 0};
+    Cell root{region.min(), region.max(), cap, 0, nullptr};
     const Probe p = s.probe(0.5 * (root.lo + root.hi));
     root.upper = std::min(cap, s.bound(root, p, false));
     if (root.upper > s.best) open.push(root);
@@ -257,7 +280,7 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
       const Probe p = s.probe(c);
       ++res.cells;
       Cell next = child;
-      next.upper = std::min(cell.upper, s.bound(child, p, child.depth >= 2));
+      next.upper = std::min(cell.upper, s.bound(next, p, child.depth >= 2));
       if (next.upper > s.best) open.push(next);
       step = 0.5 * (child.hi - child.lo).norm();
     }
