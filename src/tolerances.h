@@ -240,7 +240,10 @@ inline constexpr long kSurfaceDepthSamples = 20000;
 /// part's active hole plane); beyond them the cell is split and the Lipschitz
 /// bound holds. And the largest kappa = 1/cos(spread of a hole's normals)
 /// accepted: 2, a spread <= 60 degrees (a shaft's shoulder, a 90-degree inner
-/// corner, has sqrt 2); a larger kappa would only loosen the bound.
+/// corner, has sqrt 2); a larger kappa would only loosen the bound. 40 hole
+/// planes let a whole small bore within the reach (a 6 mm bore of 72 facets
+/// seen from a 1.3 mm box) be one hole: on the CAD hinge's pin pair, 16 split
+/// its boxes down to 0.6 mm (9,987 boxes against 5,251).
 inline constexpr int kLocalPlanesMaxFaces = 512;
 inline constexpr int kLocalPlanesMaxPlanes = 40;
 inline constexpr int kLocalPlanesMaxChoices = 80;
