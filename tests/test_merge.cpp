@@ -8,6 +8,7 @@
 #include "batch/run.h"
 #include "report/merge.h"
 #include "report/report_json.h"
+#include "report/writer.h"
 #include "scene/scene.h"
 
 using namespace pd;
@@ -61,8 +62,20 @@ ShardReport shard_report(const SceneSpec& spec, int k, int n) {
           nlohmann::ordered_json::parse(report_json(context(spec), r).dump())};
 }
 
+// The report as a run writes it (with its review: finding groups, exit code).
+json run_report(const SceneSpec& spec, const RunResult& r) {
+  const ReportContext ctx = context(spec);
+  ReviewOptions options;
+  options.tolerance = ctx.tolerance;
+  options.units = ctx.units;
+  const Review review = review_run(r, options, summarize(r).incomplete());
+  return json::parse(report_document({ctx, r, review, options}).dump());
+}
+
 // The report without what depends on the clock.
 json timeless(json d) {
+  d.erase("seconds");
+  d.erase("stage_seconds");
   for (auto& p : d["pairs"]) p.erase("time_ms");
   return d;
 }
@@ -72,7 +85,7 @@ json timeless(json d) {
 TEST(Merge, ShardsInAnyOrderMakeTheUnshardedRunsPairsAndCounts) {
   const SceneSpec spec = scene();
   const RunResult whole = run(spec, std::nullopt);
-  const json want = timeless(json::parse(report_json(context(spec), whole).dump()));
+  const json want = timeless(run_report(spec, whole));
   // The scene has what the merge must get right.
   for (const char* k : {"separated", "false_positive", "interference", "culled"})
     ASSERT_GT(want["summary"][k].get<long>(), 0) << k << ": " << want["summary"].dump();
@@ -84,8 +97,11 @@ TEST(Merge, ShardsInAnyOrderMakeTheUnshardedRunsPairsAndCounts) {
     const json got = timeless(json::parse(m.doc.dump()));
     EXPECT_EQ(got["pairs"], want["pairs"]);
     EXPECT_EQ(got["parts"], want["parts"]);
+    EXPECT_EQ(got["groups"], want["groups"]);
     for (const auto& [key, value] : want["summary"].items())
       EXPECT_EQ(got["summary"][key], value) << "summary." << key;
+    for (const auto& [key, value] : want.items()) EXPECT_EQ(got[key], value) << key;
+    EXPECT_EQ(got.size(), want.size());
     EXPECT_EQ(m.run.pairs.size(), whole.pairs.size());
     EXPECT_EQ(m.run.parts.size(), whole.parts.size());
     EXPECT_NE(m.summary_line.find("interference"), std::string::npos) << m.summary_line;
