@@ -9,9 +9,11 @@ is "report/foo"); it is covered when tests/test_<foo>.cpp exists (tests/ is
 flat, so two modules of one name would share a test file: listed as a
 collision). A few modules are exempt, each with its reason below (pure
 declarations, test fixtures). Prints the modules without a test file (with
---all every module and its test), the test files named after no module (story
-tests: through the binary, or across modules), then the figure:
-"N of M modules without a test file (E exempt)". Exit 0 (a map, not a gate).
+--all every module and its test), the test files named after no module: the
+story files listed in STORY with their reason (through the binary, or across
+modules; printed with --all), and any other (listed always), then the figures:
+"N of M modules without a test file (E exempt)" and "S story file(s), U
+unlisted". Exit 0 (a map, not a gate).
 """
 import collections
 import os
@@ -32,6 +34,26 @@ EXEMPT = {
     "corpus/cad_shapes": "test and benchmark fixtures, not the product",
     "corpus/contacts": "test and benchmark fixtures, not the product",
     "corpus/generators": "test and benchmark fixtures, not the product",
+}
+
+# Test files named after no module, and why they stay as they are: each tells
+# a story through the binary, or across several modules, that no one module's
+# file could hold. A file that tests one module belongs in that module's file.
+STORY = {
+    "checks": "clearance and motion checks through run_scene and the report",
+    "ci_cli": "the nightly CI loop through the binary (baseline, suppressions, JUnit, SARIF)",
+    "cli": "the binary end to end: exit codes, messages, reports",
+    "cli_mesh_input": "the binary on bad mesh input (hangs, crashes, damaged files)",
+    "cli_numbers": "the binary at the edges of double precision and on malformed text",
+    "exact_depth": "the default method against the exact reference (methods, epa, exact step)",
+    "exports": "--csv and --bcf through the binary, against the JSON report and BCF schemas",
+    "hard_cases": "known-hard geometry through the whole pair check (hulls, solve, status)",
+    "html": "the HTML report through the binary (--html, pdcheck html)",
+    "nonconvex": "a generated nonconvex assembly end to end, cold and cached",
+    "output": "where the binary writes its report (-o, stdout, bad options)",
+    "report_outputs": "the binary's report against its schema and the fields CI keys on",
+    "run_control": "the binary under signals, a closed reader and process limits",
+    "settings_hashes": "every setting against every hash (content_hashes, refine_cache, report)",
 }
 
 
@@ -72,15 +94,24 @@ def main():
                     print(f"  tested   {m}: tests/test_{stem}.cpp")
             else:
                 print(f"  missing  {m}: no tests/test_{stem}.cpp")
-        story = sorted(t for t in tests if t not in by_stem)
-        print(f"{len(story)} test file(s) named after no module: " +
-              ", ".join(f"test_{t}.cpp" for t in story))
+        for t in sorted(t for t in tests if t not in by_stem):
+            if t not in STORY:
+                print(f"  unlisted test_{t}.cpp: named after no module, not in STORY")
+            elif show_all:
+                print(f"  story    test_{t}.cpp: {STORY[t]}")
         for stem, ms in sorted(by_stem.items()):
             if len(ms) > 1:
                 print(f"collision: {', '.join(ms)} share tests/test_{stem}.cpp")
     for m in stale:
         print(f"exempt but not found: {m} (remove it from EXEMPT)")
+    for t in sorted(set(STORY) - tests):
+        print(f"story but not found: test_{t}.cpp (remove it from STORY)")
+    for t in sorted(set(STORY) & set(by_stem)):
+        print(f"story but named after a module: test_{t}.cpp (remove it from STORY)")
+    story = [t for t in tests if t not in by_stem]
+    unlisted = [t for t in story if t not in STORY]
     print(f"{len(missing)} of {len(mods)} modules without a test file ({len(EXEMPT)} exempt)")
+    print(f"{len(story)} story file(s), {len(unlisted)} unlisted")
     return 0
 
 

@@ -1,15 +1,12 @@
-// Clearance checks and motion sweeps, against exact values; and a static scene
-// pays nothing for them.
+// Clearance checks and motion sweeps through a run, against exact values; and
+// a static scene pays nothing for them. The sweep alone: test_motion_sweep;
+// the signed distance: test_signed_distance.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "batch/motion_sweep.h"
 #include "batch/run.h"
-#include "corpus/generators.h"
 #include "report/report_json.h"
-#include "solve/exact.h"
-#include "solve/signed_distance.h"
 
 using namespace pd;
 using nlohmann::json;
@@ -91,28 +88,6 @@ TEST(Checks, ClearanceViolationsAgainstExactDistances) {
   EXPECT_EQ(r["summary"]["exit_code"], 1);
 }
 
-TEST(Checks, IpoptDistanceMatchesTheExactDistance) {
-  SphereSampler rng(606);
-  IpoptLocalSolver ipopt;
-  SolverSettings s;
-  int separated = 0;
-  for (int k = 0; k < 40; ++k) {
-    const testgen::PairCase c = testgen::paper_like_any(rng);
-    SolverSettings e = s;
-    e.method = Method::kExact;
-    const SignedSolution exact = signed_distance(c.a, c.b, e, ipopt, std::nullopt);
-    const SignedSolution m = signed_distance(c.a, c.b, s, ipopt, std::nullopt);
-    const double size = (c.a.rowwise().maxCoeff() - c.a.rowwise().minCoeff()).norm();
-    EXPECT_NEAR(m.value, exact.value, 1e-9 * size) << k;
-    // Warm-started from a nearby direction: the same value.
-    const SignedSolution w = signed_distance(
-        c.a, c.b, s, ipopt, Vec3(m.direction + Vec3(0.05, -0.03, 0.02)).normalized());
-    EXPECT_NEAR(w.value, exact.value, 1e-9 * size) << k;
-    separated += exact.value < 0;
-  }
-  EXPECT_GT(separated, 5);  // the set holds both kinds
-}
-
 TEST(Checks, MotionSweepAgainstAnalyticValues) {
   // b slides along −x through a at 1 unit/s: s(t) = t − 2 until contact at t = 2,
   // then the overlap 1 − |t − 3| (the x overlap is the smallest way out).
@@ -136,38 +111,6 @@ TEST(Checks, MotionSweepAgainstAnalyticValues) {
   }
   EXPECT_EQ((*ab)["status"], "interference");
   EXPECT_EQ(r["simulated"], json({"interference", "motion"}));
-}
-
-TEST(Checks, WarmStartGivesTheColdValues) {
-  SphereSampler rng(2006);
-  const testgen::PairCase c = testgen::zhou_spheres(rng, 60);
-  Part a, b;
-  a.pieces.push_back(convex_hull(c.a));
-  b.pieces.push_back(convex_hull(c.b));
-  a.motion = RigidMotion{Vec3(0, 0, 0.05), Vec3::Zero(), Vec3::Zero()};
-  b.motion = RigidMotion{Vec3::Zero(), Vec3::Zero(), -0.01 * Vec3(2, 1, 3)};
-  MotionCheck m;
-  m.grid = {0, 1200, 20};  // apart until t ≈ 480 s, then overlapping
-  m.series = true;
-  IpoptLocalSolver ipopt;
-  const MotionSweep warm = sweep_pair(a, b, m, SolverSettings{}, ipopt, true);
-  const MotionSweep cold = sweep_pair(a, b, m, SolverSettings{}, ipopt, false);
-  ASSERT_EQ(warm.trace.series.size(), cold.trace.series.size());
-  int apart = 0, overlapping = 0;
-  for (size_t k = 0; k < warm.trace.series.size(); ++k) {
-    (warm.trace.series[k].second < 0 ? apart : overlapping)++;
-    const double t = warm.trace.series[k].first;
-    // Both against the exact hull at that time.
-    const Points pa = a.motion->at(a.pieces[0].vertices, t),
-                 pb = b.motion->at(b.pieces[0].vertices, t);
-    SolverSettings e;
-    e.method = Method::kExact;
-    const double exact = signed_distance(pa, pb, e, ipopt, std::nullopt).value;
-    EXPECT_NEAR(warm.trace.series[k].second, exact, 1e-8) << t;
-    EXPECT_NEAR(cold.trace.series[k].second, exact, 1e-8) << t;
-  }
-  EXPECT_GT(apart, 10);  // both branches of the warm start were exercised
-  EXPECT_GT(overlapping, 10);
 }
 
 TEST(Checks, MotionNeedsATimeGrid) {

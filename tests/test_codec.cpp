@@ -17,6 +17,7 @@
 #include <map>
 #include <sstream>
 
+#include "awkward_doubles.h"
 #include "batch/refine_cache.h"
 #include "batch/reuse.h"
 #include "report/merge.h"
@@ -324,4 +325,49 @@ TEST(ResultsCodec, APartSurvivesTheReportAndItsReaders) {
                       "cached", "decomposition_note", "tags", "group", "sets", "error"}));
   EXPECT_EQ(j["box"].size(), 2u);
   EXPECT_EQ(j["sag"].size(), 3u);
+}
+
+// The worker message alone, at the edges of double precision (issue 11).
+TEST(PairResultCodec, KeepsEveryDoubleBitForBit) {
+  for (const double x : pd_test::kAwkward) {
+    const PairResult r =
+        pd::decode_pair_result(pd::encode_pair_result(pd_test::with_every_double(x)));
+    SCOPED_TRACE(x);
+    EXPECT_EQ(r.a, 3);
+    EXPECT_EQ(r.b, 7);
+    EXPECT_EQ(r.status, pd::Status::kInterference);
+    EXPECT_EQ(pd_test::raw_bits(r.depth), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.direction.x()), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.direction.y()), pd_test::raw_bits(-x));
+    EXPECT_EQ(pd_test::raw_bits(r.direction.z()), pd_test::raw_bits(0.5));
+    ASSERT_TRUE(r.distance);
+    EXPECT_EQ(pd_test::raw_bits(*r.distance), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.margin), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.time_ms), pd_test::raw_bits(x));
+    ASSERT_TRUE(r.clearance_min);
+    EXPECT_EQ(pd_test::raw_bits(*r.clearance_min), pd_test::raw_bits(x));
+    ASSERT_TRUE(r.motion);
+    EXPECT_EQ(r.motion->steps, 5);
+    EXPECT_EQ(pd_test::raw_bits(r.motion->max_depth), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.motion->t_max_depth), pd_test::raw_bits(x));
+    ASSERT_TRUE(r.motion->min_distance);
+    EXPECT_EQ(pd_test::raw_bits(*r.motion->min_distance), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.motion->t_min_distance), pd_test::raw_bits(x));
+    ASSERT_EQ(r.motion->series.size(), 2u);
+    EXPECT_EQ(pd_test::raw_bits(r.motion->series[0].first), pd_test::raw_bits(x));
+    EXPECT_EQ(pd_test::raw_bits(r.motion->series[1].second), pd_test::raw_bits(x));
+    EXPECT_EQ(r.warnings, (std::vector<std::string>{"first", "second"}));
+  }
+}
+
+TEST(PairResultCodec, RefusesDamagedPayloadsWithAnException) {
+  const std::string good = pd::encode_pair_result(pd_test::with_every_double(1.0));
+  EXPECT_NO_THROW(pd::decode_pair_result(good));
+  EXPECT_ANY_THROW(pd::decode_pair_result(""));
+  EXPECT_ANY_THROW(pd::decode_pair_result("{\"a\": 1}"));
+  EXPECT_ANY_THROW(pd::decode_pair_result(good.substr(0, good.size() / 2)));
+  // A status outside the enum is not cast into one.
+  PairResult bad = pd_test::with_every_double(1.0);
+  bad.status = static_cast<pd::Status>(99);
+  EXPECT_ANY_THROW(pd::decode_pair_result(pd::encode_pair_result(bad)));
 }

@@ -12,7 +12,6 @@
 #include "corpus/contacts.h"
 #include "corpus/generators.h"
 #include "geometry/frame.h"
-#include "solve/gjk.h"
 #include "solve/methods.h"
 
 using namespace pd;
@@ -229,24 +228,4 @@ TEST(Epa, FlatParts) {
                          {"squares", {square, square2}}};
   check_posed(r, family, poses({0.0, 20000.0}), 3, bt, dt);
   EXPECT_GT(bt.certified, 0);
-}
-
-TEST(Epa, GjkSeparatesApartPairsAndEnclosesOverlappingOnes) {
-  SphereSampler r(5);
-  for (int k = 0; k < 20; ++k) {
-    const testgen::PairCase apart = testgen::apart_boxes_overlapping(r, 30);
-    const PairProblem pa(apart.a, apart.b);
-    const GjkResult ga = gjk_enclose_origin(pa, tol::kGjkMaxIterations);
-    EXPECT_EQ(ga.outcome, GjkResult::Outcome::kSeparated);
-    EXPECT_LE(pa.gap(ga.direction), 0.0);
-    const testgen::PairCase over = testgen::vertex_class(r, 30);
-    const PairProblem po(over.a, over.b);
-    const GjkResult go = gjk_enclose_origin(po, tol::kGjkMaxIterations);
-    ASSERT_EQ(go.outcome, GjkResult::Outcome::kEnclosed);
-    // The origin is inside the tetrahedron: a convex combination with weights > 0.
-    Eigen::Matrix4d m;
-    for (int c = 0; c < 4; ++c) m.col(c) << go.tetrahedron[c], 1.0;
-    const Eigen::Vector4d w = m.fullPivLu().solve(Eigen::Vector4d(0, 0, 0, 1));
-    EXPECT_GT(w.minCoeff(), 0.0);
-  }
 }

@@ -1,10 +1,10 @@
-// Exact depths on the input doubles (issue 29): the exact rational reference
-// (corpus/exact_reference.h) against analytic depths, the exact step of a
-// closed EPA bracket (solve/exact_facet.h), and the default method against the
-// exact reference on near-degenerate pairs — touching, coplanar, 1e-9 and 1e-12
-// offsets, rotated, float32 far from the origin, flat parts, the hard cases:
-// within 1e-9 relative, with no floor but the contact rounding below which
-// pdcheck reports 0 (kGapRounding of the pair's scale, docs/numerics.md).
+// The default method against the exact reference (issue 29), a story across
+// methods, epa and the exact step: near-degenerate pairs — touching, coplanar,
+// 1e-9 and 1e-12 offsets, rotated, float32 far from the origin, flat parts, the
+// hard cases — within 1e-9 relative, with no floor but the contact rounding
+// below which pdcheck reports 0 (kGapRounding of the pair's scale,
+// docs/numerics.md). The reference itself: test_exact_reference.cpp; the exact
+// step: test_exact_facet.cpp, test_exact_hull_depth.cpp.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -15,8 +15,6 @@
 #include "corpus/generators.h"
 #include "geometry/frame.h"
 #include "solve/epa.h"
-#include "solve/exact_facet.h"
-#include "solve/exact_hull_depth.h"
 #include "solve/methods.h"
 #include "tolerances.h"
 
@@ -73,69 +71,6 @@ testgen::PairCase posed(SphereSampler& r, const testgen::PairCase& c, double far
 }
 
 }  // namespace
-
-TEST(ExactReference, AxisAlignedDepthsAreTheInputsOwn) {
-  // Overlaps of 1e-9 and 1e-12 along x: the depth is 1 − fl(1 − eps), exactly
-  // (Sterbenz), not eps; touching and apart boxes have depth 0.
-  const Points a = box(Vec3::Zero(), Vec3::Ones());
-  for (double eps : {1e-9, 1e-12, 1e-15}) {
-    const Points b = box(Vec3(1 - eps, 0, 0), Vec3(2 - eps, 1, 1));
-    const testgen::ExactReference e = testgen::exact_reference_depth(a, b);
-    EXPECT_EQ(e.depth, 1.0 - (1.0 - eps)) << eps;
-    EXPECT_TRUE(e.all_points);
-    EXPECT_NEAR(std::abs(e.direction.x()), 1.0, 1e-15);
-  }
-  EXPECT_EQ(testgen::exact_reference_depth(a, box(Vec3(1, 0, 0), Vec3(2, 1, 1))).depth, 0.0);
-  EXPECT_EQ(testgen::exact_reference_depth(a, box(Vec3(1.5, 0, 0), Vec3(2, 1, 1))).depth, 0.0);
-  EXPECT_EQ(testgen::exact_reference_depth(a, a).depth, 1.0);
-  // Thin plates overlapping by 0.01 (1000 × 1000 × 1): the z facet.
-  const Points p = box(Vec3::Zero(), Vec3(1000, 1000, 1));
-  const Points q = box(Vec3(0, 0, 0.99), Vec3(1000, 1000, 1.99));
-  EXPECT_EQ(testgen::exact_reference_depth(p, q).depth, 1.0 - 0.99);
-}
-
-TEST(ExactReference, AgreesWithTheDoubleHullAwayFromContact) {
-  SphereSampler r(7);
-  IpoptLocalSolver ipopt;
-  SolverSettings exact;
-  exact.method = Method::kExact;
-  for (int k = 0; k < 10; ++k) {
-    const testgen::PairCase c = testgen::vertex_class(r, 12);
-    const double hull = solve_convex_pair(c.a, c.b, exact, ipopt).depth;
-    EXPECT_NEAR(testgen::exact_reference_depth(c.a, c.b).depth, hull,
-                tol::kGapRounding * pair_frame(c.a, c.b).scale);
-  }
-}
-
-TEST(ExactFacet, RotatedTinyOverlapsAreRecomputedExactly) {
-  // Rotated unit cubes overlapping by 1e-9 and 1e-12: the bracket closes to
-  // kEpaBracket only, and its exact step must give the exact reference's depth
-  // to one rounding.
-  SphereSampler r(291);
-  int by_faces = 0;
-  for (double eps : {1e-9, 1e-12})
-    for (int k = 0; k < 6; ++k) {
-      const Eigen::Matrix3d rot = random_rotation(r);
-      const Points a = rot * box(Vec3::Zero(), Vec3::Ones());
-      const Points b = rot * box(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8));
-      const PairProblem pr(a, b);
-      const DepthBracket br = epa_bracket(pr, tol::kEpaMaxIterations);
-      const double truth = testgen::exact_reference_depth(a, b).depth;
-      SCOPED_TRACE("eps " + std::to_string(eps) + " #" + std::to_string(k));
-      ASSERT_TRUE(br.certified());
-      ASSERT_FALSE(br.near_faces.empty());
-      by_faces += exact_facet_depth(a, b, br.near_faces,
-                                    (br.nearest_low + 2 * tol::kEpaRounding) * pr.frame().scale)
-                      .has_value();
-      const auto e = exact_bracket_depth(a, b, br, pr.frame().scale);
-      ASSERT_TRUE(e.has_value());
-      EXPECT_NEAR(e->depth, truth, 4e-16 * truth);
-      EXPECT_NEAR(std::abs(e->direction.dot(rot.col(0))), 1.0, 1e-12);
-    }
-  // A rotated cube's face is flat only to rounding: the near faces rarely
-  // prove it, the exact hull does.
-  RecordProperty("by_near_faces", by_faces);
-}
 
 TEST(ExactFacet, DefaultIsExactOnNearDegeneratePairs) {
   // Boxes face on face, edge on face, corner on face and coplanar, overlapping

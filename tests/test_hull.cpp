@@ -1,6 +1,8 @@
 // The convex hull of a point set (hull.cpp): degenerate sets keep their shape.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "geometry/hull.h"
 
 using namespace pd;
@@ -65,4 +67,25 @@ TEST(Hull, RejectsEmptyAndNonFinite) {
   Points p = cube(1);
   p(0, 3) = std::nan("");
   EXPECT_THROW(convex_hull(p), std::invalid_argument);
+}
+
+// The hull's dimension test works in the frame of the point set: its scale
+// must not overflow (coordinates beyond ~1e154 squared) or underflow.
+TEST(HugeCoordinates, HullDimensionIsScaleFree) {
+  pd::Points tet(3, 5);
+  tet << 0, 1, 0, 0, 0.2,  //
+      0, 0, 1, 0, 0.2,     //
+      0, 0, 0, 1, 0.2;
+  for (const double s : {1e-300, 1e-160, 1.0, 1e160, 1e250, 1e307}) {
+    const pd::Hull h = pd::convex_hull(tet * s);
+    EXPECT_EQ(h.dimension, 3) << s;
+    EXPECT_EQ(h.vertices.cols(), 4) << s;
+    EXPECT_TRUE(h.warnings.empty()) << s;
+  }
+  // A set whose box half-diagonal exceeds the double range has no frame.
+  pd::Points vast(3, 4);
+  vast << -1.7e308, 1.7e308, 0, 0,  //
+      0, 0, 1.7e308, 0,             //
+      0, 0, 0, 1.7e308;
+  EXPECT_THROW(pd::convex_hull(vast), std::invalid_argument);
 }

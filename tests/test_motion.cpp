@@ -38,3 +38,11 @@ TEST(Motion, TimeGridStepsIncludeTheEnd) {
   EXPECT_EQ((TimeGrid{0.0, 999999.0, 1.0}.steps()), kMaxTimeSteps);
   EXPECT_THROW((TimeGrid{0.0, 1000000.0, 1.0}.steps()), std::domain_error);
 }
+
+TEST(TimeGridLimits, StepsNeverCastOutOfRange) {
+  EXPECT_EQ((pd::TimeGrid{0, 4, 1}).steps(), 5);
+  EXPECT_EQ((pd::TimeGrid{0, 4, 0.5}).steps(), 9);
+  EXPECT_THROW((pd::TimeGrid{0, 4, 1e-300}).steps(), std::domain_error);
+  EXPECT_THROW((pd::TimeGrid{-1e308, 1e308, 1}).steps(), std::domain_error);
+  EXPECT_THROW((pd::TimeGrid{0, 9.3e18, 1}).steps(), std::domain_error);
+}

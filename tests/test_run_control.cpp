@@ -20,7 +20,6 @@
 #include <vector>
 
 #include "shell_run.h"
-#include "termination.h"
 #include "work_queue.h"
 
 using namespace pd_test;
@@ -123,44 +122,6 @@ TEST(Signals, TerminationEndsTheWorkersAndLeavesNoFile) {
       EXPECT_TRUE(name == "out.txt" || name == "err.txt") << name << " left behind";
     }
   }
-}
-
-TEST(Signals, TheHandlerReapsTrackedChildrenAndRemovesTrackedFiles) {
-  // The handler itself, on a temporary file as the atomic writer tracks it.
-  const std::string dir = scratch_dir("signal_handler");
-  const std::string tmp = dir + "/.report.json.abcdef";
-  int report[2];
-  ASSERT_EQ(pipe(report), 0);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    pd::install_termination_handlers();
-    pid_t child;
-    {
-      const pd::TerminationBlocked blocked;
-      child = fork();
-      if (child == 0) {
-        blocked.reset_in_child();
-        for (;;) pause();
-      }
-      pd::track_child(child);
-    }
-    if (write(report[1], &child, sizeof child) != sizeof child) _exit(1);
-    close(open(tmp.c_str(), O_WRONLY | O_CREAT, 0644));
-    pd::TrackedTempFile tracked;
-    tracked.track(tmp);
-    raise(SIGTERM);
-    _exit(0);
-  }
-  close(report[1]);
-  pid_t child = -1;
-  ASSERT_EQ(read(report[0], &child, sizeof child), static_cast<ssize_t>(sizeof child));
-  close(report[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) << status;
-  EXPECT_NE(kill(child, 0), 0) << "the tracked child outlived its parent";
-  kill(child, SIGKILL);
-  EXPECT_FALSE(fs::exists(tmp));
 }
 
 TEST(BrokenPipe, JsonLinesStopAtTheFirstFailedWrite) {

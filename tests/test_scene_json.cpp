@@ -136,3 +136,61 @@ TEST(SceneJson, ThreadsDoNotChangeTheScene) {
   ASSERT_TRUE(four.parts[2].motion);
   EXPECT_EQ(four.parts[2].motion->about, Vec3(1, 2, 3));
 }
+
+namespace {
+
+// The error of a scene with a moving pair that interferes at dt = 1 (b moves
+// through a), under the given motion grid; "" when it reads.
+std::string grid_error(const std::string& grid) {
+  const std::string text = R"({"tolerance": 0.01, "checks": {"motion": {)" + grid + R"(}},
+    "parts": [{"id": "a", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]},
+              {"id": "b", "motion": {"velocity": [-1,0,0]},
+               "vertices": [[3,0,0],[4,0,0],[3,1,0],[3,0,1]]}]})";
+  try {
+    pd::parse_scene_json(text, "s.json", "");
+  } catch (const pd::SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// More than 2^63 grid steps used to cast to long out of range, pass the step
+// cap and skip the sweep: the interfering pair was `separated`, exit 0.
+TEST(TimeGridLimits, HugeStepCountsAreRefusedNamingTheField) {
+  EXPECT_EQ(grid_error(R"("t1": 4, "dt": 1)"), "");
+  EXPECT_EQ(grid_error(R"("t1": 4, "dt": 1e-300)"),
+            "s.json: checks.motion.dt: gives 4e+300 time steps, more than 1000000: use a larger "
+            "dt");
+  EXPECT_EQ(grid_error(R"("t1": 9.3e18)"),
+            "s.json: checks.motion.dt: gives 9.3e+18 time steps, more than 1000000: use a larger "
+            "dt");
+  EXPECT_EQ(grid_error(R"("t0": -1e308, "t1": 1e308)"),
+            "s.json: checks.motion.t1: t1 - t0 is beyond the double range");
+  EXPECT_EQ(grid_error(R"("t1": 999999)"), "");  // 1,000,000 steps: the cap itself
+  EXPECT_NE(grid_error(R"("t1": 1000000)").find("more than 1000000"), std::string::npos);
+  // Times that cannot differ by dt at their magnitude would repeat one time.
+  EXPECT_EQ(grid_error(R"("t0": 1e20, "t1": 1.000000000000002e20)"),
+            "s.json: checks.motion.dt: below the resolution of double-precision times at |t| = "
+            "1e+20: use a larger dt or shift t0");
+}
+
+// solver.grid / solver.gs_local up to 100,000 meant hours for one pair.
+TEST(SolverLimits, GridAndGsLocalAreBounded) {
+  auto error = [](const std::string& solver) -> std::string {
+    try {
+      pd::parse_scene_json(R"({"tolerance": 1, "parts": [], "solver": {)" + solver + "}}", "s.json",
+                           "");
+    } catch (const pd::SceneError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error(R"("grid": 1000, "gs_local": 10)"), "");
+  EXPECT_EQ(error(R"("grid": 1001)"), "s.json: solver.grid: expected an integer from 1 to 1000");
+  EXPECT_EQ(error(R"("grid": 100000)"), "s.json: solver.grid: expected an integer from 1 to 1000");
+  EXPECT_EQ(error(R"("gs_local": 11)"),
+            "s.json: solver.gs_local: expected an integer from 1 to 10");
+  EXPECT_EQ(error(R"("samples": 100000)"), "");
+}

@@ -1,10 +1,12 @@
-// A shard's scene load (load_scene_file with keep_vertices false): it keeps a
+// Inline vertex lists kept as a summary (scene/inline_vertices.cpp). A shard's
+// scene load (load_scene_file with keep_vertices false): it keeps a
 // VertexSummary, not the vertices, of every inline part; its plan and content
 // hashes are those of the whole load, and read_inline_vertices gives back the
 // very same vertices of the parts it loads, or refuses a file changed since.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -144,4 +146,33 @@ TEST(ShardScan, RefusesASceneFileChangedSinceItWasRead) {
   pd::SceneSpec other = shard;  // a part whose list did not change still reads
   other.parts = {shard.parts[changed == 0 ? 1 : 0]};
   EXPECT_NO_THROW(pd::read_inline_vertices(other));
+}
+
+TEST(InlineVertices, PlacedInSceneUnitsThenTransformed) {
+  pd::Points p(3, 2);
+  p << 1, 0,  //
+      0, 2,   //
+      0, 0;
+  pd::PartSpec spec;
+  spec.to_scene_units = 10;       // cm in a mm scene
+  spec.transform << 0, -1, 0, 5,  // a quarter turn about z, then a shift
+      1, 0, 0, 0,                 //
+      0, 0, 1, 1,                 //
+      0, 0, 0, 1;
+  const pd::Points placed = pd::place_points(p, spec);
+  EXPECT_EQ(placed.col(0), pd::Vec3(5, 10, 1));   // (10, 0, 0) turned to (0, 10, 0)
+  EXPECT_EQ(placed.col(1), pd::Vec3(-15, 0, 1));  // (0, 20, 0) turned to (-20, 0, 0)
+}
+
+TEST(InlineVertices, TheDigestIsTheListsBits) {
+  pd::Points p(3, 2);
+  p << 1, 0.1, 0, 2, -0.0, 3;
+  pd::Points same = p;
+  EXPECT_EQ(pd::vertex_digest(p), pd::vertex_digest(same));
+  pd::Points signed_zero = p;
+  signed_zero(2, 0) = 0.0;  // +0 for -0: equal numbers, other bits
+  EXPECT_NE(pd::vertex_digest(p), pd::vertex_digest(signed_zero));
+  pd::Points last_bit = p;
+  last_bit(0, 1) = std::nextafter(0.1, 1.0);
+  EXPECT_NE(pd::vertex_digest(p), pd::vertex_digest(last_bit));
 }

@@ -1,0 +1,180 @@
+// SolidDistance's models against the exact distance: every plane, hole and
+// wedge bound of a box's local model holds at the points of the box inside the
+// solid, and the surface depth never falls below the deepest vertex.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "corpus/cad_shapes.h"
+#include "geometry/solid_distance.h"
+
+namespace pd {
+namespace {
+
+namespace sh = shapes;
+
+// Checks every plane, hole and wedge bound of s's models about boxes centred
+// by `centre(rng)` (half-size up to 0.4 of `scale`) against the exact distance
+// at points of the box inside the solid; counts the models with holes and
+// wedges and the points checked.
+struct ModelCounts {
+  int holes = 0, several_holes = 0, wedges = 0, checked = 0;
+};
+template <class Centre>
+ModelCounts check_local_planes(const SolidDistance& s, double scale, Centre centre,
+                               std::mt19937& rng, int trials) {
+  std::uniform_real_distribution<double> u(0, 1);
+  ModelCounts n;
+  for (int trial = 0; trial < trials; ++trial) {
+    const Vec3 c = centre(rng);
+    const Vec3 half = Vec3::Constant(scale * (0.02 + 0.4 * u(rng)));
+    // Both reaches the branch and bound may ask for; the counts are the widest's.
+    const LocalPlanes wide = s.local_planes(c, std::abs(s.at(c).lower), half.norm());
+    n.holes += !wide.holes.empty();
+    n.several_holes += wide.holes.size() > 1;
+    n.wedges += !wide.wedges.empty();
+    const LocalPlanes near =
+        s.local_planes(c, std::abs(s.at(c).lower), half.norm(), SolidDistance::Widen::kWhenEmpty);
+    for (const LocalPlanes* model : {&wide, &near})
+      for (int k = 0; k < 40; ++k) {
+        const LocalPlanes& m = *model;
+        const Vec3 x = c + Vec3(2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1).cwiseProduct(half);
+        const double sd = s.at(x).lower;
+        if (sd <= 0) continue;
+        ++n.checked;
+        const double eps = 1e-12 * (1 + x.norm());  // the planes' own rounding
+        for (const FacePlane& q : m.supporting) EXPECT_LE(sd, q.at(x) + m.slack + eps);
+        for (const LocalPlanes::Hole& h : m.holes) {
+          double most = -INFINITY;
+          for (const FacePlane& q : h.planes) most = std::max(most, q.at(x));
+          EXPECT_LE(sd, h.kappa * (most + h.slack) + eps) << "trial " << trial;
+        }
+        for (const LocalPlanes::Wedge& w : m.wedges)
+          EXPECT_LE(sd, w.kappa * (std::max(w.p.at(x), w.q.at(x)) + w.slack) + eps)
+              << "trial " << trial;
+      }
+  }
+  return n;
+}
+
+TEST(LocalPlanes, EveryBoundHoldsAtAShoulder) {
+  // Boxes about a stepped shaft's shoulder, near the origin in double and far
+  // from it in float32 (rounding crossings become slack).
+  const int n = 32;
+  const Vec3 far(28000, 3000, -900);
+  for (const bool far_away : {false, true}) {
+    const Vec3 origin = far_away ? far : Vec3::Zero();
+    const Mesh shaft = sh::stepped_shaft(3, 5, 0, 10, 12, n);
+    const SolidDistance s(far_away ? sh::float32(sh::translated(shaft, far)) : shaft);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    const ModelCounts counts = check_local_planes(
+        s, 1.0,
+        [&](std::mt19937& g) {
+          const double angle = 2 * M_PI * u(g), rad = 2.6 + 0.8 * u(g);
+          return Vec3(origin +
+                      Vec3(rad * std::cos(angle), rad * std::sin(angle), 9.6 + 0.8 * u(g)));
+        },
+        rng, 200);
+    EXPECT_GT(counts.wedges, 20);  // the shoulder is modelled, not only bounded by Lipschitz
+    EXPECT_GT(counts.checked, 1000);
+  }
+}
+
+TEST(LocalPlanes, EveryBoundHoldsAboutSmallAndLargeHoles) {
+  // A board's 0.5 mm hole fits wholly within a box's reach (their normals
+  // spread all round: only the facets facing the box enter its bound); a
+  // plate's 5 mm bore spans many boxes.
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (const double radius : {0.5, 5.0}) {
+    const Mesh mesh = radius < 1 ? sh::plate_with_hole(2.54, 1.6, radius, 32)
+                                 : sh::plate_with_hole(40, 6, radius, 64);
+    const SolidDistance s(mesh);
+    const ModelCounts counts = check_local_planes(
+        s, radius,
+        [&](std::mt19937& g) {
+          const double angle = 2 * M_PI * u(g), rad = radius * (1 + 0.3 * u(g));
+          return Vec3(rad * std::cos(angle), rad * std::sin(angle), 1.6 * u(g));
+        },
+        rng, 200);
+    EXPECT_GT(counts.holes, 40) << "hole radius " << radius;
+    EXPECT_GT(counts.checked, 1000) << "hole radius " << radius;
+  }
+}
+
+TEST(LocalPlanes, EveryBoundHoldsBetweenNeighbouringHoles) {
+  // A drilled board's row: boxes between two 0.75 mm holes 2 mm apart see
+  // both within their reach; each hole is modelled on its own.
+  const double pitch = 2, radius = 0.75;
+  const SolidDistance s(sh::drilled_board(3, 1, pitch, 1.6, radius, 32));
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  const ModelCounts counts = check_local_planes(
+      s, 0.25,
+      [&](std::mt19937& g) {
+        return Vec3(pitch * (0.5 + u(g)), pitch * (0.5 * u(g) - 0.25) + 0.5 * pitch, 1.6 * u(g));
+      },
+      rng, 300);
+  EXPECT_GT(counts.several_holes, 8) << counts.several_holes;
+  EXPECT_GT(counts.checked, 1000);
+}
+
+TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {
+  // A unit cube whose top face has a vertex in the middle of its front edge,
+  // closed by a needle (a collinear triangle, as float32 exports make them)
+  // against the front face's edge: the needle lies on that edge, so the cube's
+  // planes still model it.
+  Mesh cube;
+  cube.vertices.resize(3, 9);
+  cube.vertices << 0, 1, 1, 0, 0, 1, 1, 0, 0.5,  //
+      0, 0, 1, 1, 0, 0, 1, 1, 0,                 //
+      0, 0, 0, 0, 1, 1, 1, 1, 1;
+  const std::vector<Eigen::Vector3i> tris{{0, 2, 1}, {0, 3, 2}, {4, 8, 7}, {8, 5, 6}, {8, 6, 7},
+                                          {5, 8, 4}, {0, 1, 5}, {0, 5, 4}, {3, 7, 6}, {3, 6, 2},
+                                          {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  cube.triangles.resize(3, static_cast<long>(tris.size()));
+  for (size_t t = 0; t < tris.size(); ++t) cube.triangles.col(static_cast<long>(t)) = tris[t];
+  const SolidDistance s(cube);
+  ASSERT_TRUE(s.closed());
+  ASSERT_TRUE(s.mesh().has_segments());
+  const Vec3 c(0.5, 0.1, 0.9);
+  const LocalPlanes m = s.local_planes(c, s.at(c).lower, 0.05);
+  ASSERT_FALSE(m.supporting.empty());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 x = c + Vec3(u(rng), u(rng), u(rng));
+    for (const FacePlane& q : m.supporting) EXPECT_LE(s.at(x).lower, q.at(x) + m.slack + 1e-12);
+  }
+}
+
+TEST(SurfaceDepth, NeverBelowTheDeepestVertexWhateverTheBudget) {
+  namespace sh = shapes;
+  const std::pair<Mesh, Mesh> cases[] = {
+      {sh::box(Vec3(5, 5, 7), Vec3(15, 5.05, 13)), sh::box(Vec3(0, 0, 0), Vec3(20, 20, 10))},
+      {sh::cylinder({0, 0}, 5.3, -4, 10, 32), sh::plate_with_hole(40, 6, 5, 32)},
+      {sh::box(Vec3(3, 3, 3), Vec3(20, 12, 9.5)),
+       sh::hollow_box(Vec3(0, 0, 0), Vec3(30, 20, 10), 1.5)}};
+  for (const auto& [a, b] : cases) {
+    const SolidDistance sa(a), sb(b);
+    const MeshDepthBound vertex = deepest_vertex_depth(sa.mesh(), sb.mesh());
+    ASSERT_GT(vertex.depth, 0.0);
+    for (long budget : {0L, 100L, 20000L}) {
+      const double surface = std::max(surface_depth(sa.mesh(), sb, budget).depth,
+                                      surface_depth(sb.mesh(), sa, budget).depth);
+      EXPECT_GE(surface, vertex.depth - 1e-12) << budget;
+    }
+  }
+  // A rod through a wall whose corners all lie outside it: only the samples
+  // inside the wall's faces see it.
+  const Mesh wall = sh::box(Vec3(0, 0, 0), Vec3(40, 40, 1));
+  const Mesh rod = sh::cylinder({20, 20}, 1.0, -10, 10, 16);
+  const SolidDistance s_wall(wall), s_rod(rod);
+  EXPECT_EQ(deepest_vertex_depth(s_wall.mesh(), s_rod.mesh()).depth, 0.0);
+  EXPECT_GT(surface_depth(s_wall.mesh(), s_rod).depth, 0.5);
+}
+
+}  // namespace
+}  // namespace pd
