@@ -7,6 +7,7 @@
 
 #include "batch/content_hashes.h"
 #include "file_hash.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -14,14 +15,11 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(PDCHECK_BINARY_DIR) / "test-content-hashes" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+  return pd_test::scratch_dir("content_hashes", name);
 }
-
+using pd_test::write_bytes;
 void write(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary) << bytes;
+  write_bytes(p, bytes);
 }
 
 }  // namespace

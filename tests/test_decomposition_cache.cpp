@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "batch/decomposition_cache.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -13,10 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::path(testing::TempDir()) / ("cache_file_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
+  return pd_test::scratch_dir("decomposition_cache", name);
 }
 
 }  // namespace

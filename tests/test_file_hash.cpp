@@ -8,6 +8,7 @@
 
 #include "file_hash.h"
 #include "hash.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -15,14 +16,11 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(PDCHECK_BINARY_DIR) / "test-file-hash" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+  return pd_test::scratch_dir("file_hash", name);
 }
-
+using pd_test::write_bytes;
 void write(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary) << bytes;
+  write_bytes(p, bytes);
 }
 
 }  // namespace

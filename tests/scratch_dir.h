@@ -1,0 +1,27 @@
+// Per-test scratch directories and files: each test process writes under its
+// own path, so parallel ctest runs never share one.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace pd_test {
+
+/// An empty directory `group`_`name`_<pid> under the test temp dir.
+inline std::filesystem::path scratch_dir(const std::string& group, const std::string& name) {
+  const std::filesystem::path d = std::filesystem::path(testing::TempDir()) /
+                                  (group + "_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+inline void write_bytes(const std::filesystem::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+}  // namespace pd_test
