@@ -36,10 +36,14 @@ ModelCounts check_local_planes(const SolidDistance& s, double scale, Centre cent
     n.wedges += !wide.wedges.empty();
     const LocalPlanes near =
         s.local_planes(c, std::abs(s.at(c).lower), half.norm(), SolidDistance::Widen::kWhenEmpty);
+    // The near model's points come from their own generator, so the centres
+    // (and the counts above) are those of the wide model alone.
+    std::mt19937 near_rng(static_cast<unsigned>(trial));
     for (const LocalPlanes* model : {&wide, &near})
       for (int k = 0; k < 40; ++k) {
         const LocalPlanes& m = *model;
-        const Vec3 x = c + Vec3(2 * u(rng) - 1, 2 * u(rng) - 1, 2 * u(rng) - 1).cwiseProduct(half);
+        std::mt19937& g = model == &wide ? rng : near_rng;
+        const Vec3 x = c + Vec3(2 * u(g) - 1, 2 * u(g) - 1, 2 * u(g) - 1).cwiseProduct(half);
         const double sd = s.at(x).lower;
         if (sd <= 0) continue;
         ++n.checked;
