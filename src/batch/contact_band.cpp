@@ -11,9 +11,7 @@ namespace pd {
 namespace {
 
 std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
+  return band_number(x);
 }
 
 // The depth and witness are the parts' own, not a hull's or a piece pair's

@@ -7,12 +7,16 @@
 
 namespace pd {
 
-namespace {
-
-std::string number(double x) {
+std::string band_number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", x);
   return buf;
+}
+
+namespace {
+
+std::string number(double x) {
+  return band_number(x);
 }
 
 // One part's share of a band: its sag of one sign where the parts meet, and the

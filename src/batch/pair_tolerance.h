@@ -34,6 +34,9 @@ struct PairTolerance {
 /// the gap when they are apart, for clearance pairs).
 Aabb meeting_region(const Part& a, const Part& b);
 
+/// A length as the bands' texts write it (three significant digits).
+std::string band_number(double x);
+
 /// The band of a pair: AutoTolerance::band of each part's concave sag near
 /// meeting_region (its declared `sag` instead when given) and coordinate
 /// step. Both parts carry their sag (build_parts under auto). `units` names the
