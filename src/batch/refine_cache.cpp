@@ -19,7 +19,7 @@ namespace {
 // 7: StopReason gained epa-certificate before certificate (enum values moved).
 // 8: every finding has `at` (pieces and vertex pairs had none); several holes
 //    per plane model.
-constexpr CacheKind kKind{"pdcheck-refinement-8", ".pdr"};
+constexpr CacheKind kKind{"pdcheck-refinement-9", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));

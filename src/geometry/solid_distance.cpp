@@ -179,11 +179,12 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   a.faces_in_box(box.min(), box.max(), faces);
   const auto sample = [&](const Vec3& p) {
     const DistanceBounds d = b.at(p);
-    if (!(d.lower > best.depth)) return;
+    if (!(d.lower > best.depth)) return d.lower;
     best.depth = d.lower;
     best.at = p;
     const Vec3 dir = (p - d.nearest).normalized();
     if (dir.allFinite()) best.direction = dir;
+    return d.lower;
   };
   // Every corner in b's box, once (so the bound is never below the deepest
   // vertex's, whatever the budget), then points inside the faces.
@@ -207,9 +208,20 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
     tb.extend(t[1]).extend(t[2]);
     if (!tb.intersects(box)) continue;
     const Vec3 centroid = (t[0] + t[1] + t[2]) / 3;
-    if (box.contains(centroid)) ++samples, sample(centroid);
     const double longest =
         std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
+    if (box.contains(centroid)) {
+      ++samples;
+      // sd's lower bound is 1-Lipschitz (a distance to the triangles, its sign
+      // changing only on them), so no point of the piece, and no later
+      // sample in it, exceeds it at the centroid by more than the farthest
+      // corner's distance: a piece that cannot beat the best is not split (the
+      // result is the same, its samples are not taken).
+      const double at_centroid = sample(centroid);
+      const double farthest =
+          std::max({(t[0] - centroid).norm(), (t[1] - centroid).norm(), (t[2] - centroid).norm()});
+      if (at_centroid + farthest <= best.depth) continue;
+    }
     if (longest <= spacing || level >= 16) continue;
     const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
     for (const Vec3& m : {m01, m12, m20})
