@@ -221,7 +221,8 @@ inline constexpr double kPlyAsciiAgreement = 1e-5;
 /// not accuracy: the bracket stays certified whatever they are, and a pair whose
 /// bracket still straddles the tolerance when they run out is `undecided`.
 /// Distance evaluations (one per part and cell centre or ascent step, ~2-10 us
-/// each) per pair: deterministic, so the result is the same for every --jobs.
+/// each) per pair, and as many boxes (a child settled by its parent's models
+/// costs none): deterministic, so the result is the same for every --jobs.
 inline constexpr long kThicknessMaxEvaluations = 400000;
 /// The wall-clock box per pair, seconds: the users' safety net, never reached on
 /// the benchmark assemblies (their slowest pair stays far below it).
