@@ -14,7 +14,6 @@
 #include <set>
 #include <sstream>
 
-#include "batch/refine.h"
 #include "batch/refine_cache.h"
 #include "scene/convexity_cache.h"
 
@@ -257,44 +256,6 @@ TEST(Nonconvex, ConvexityComesFromTheCache) {
     if (p.contains("convex")) {
       EXPECT_TRUE(p["convex"].get<bool>()) << p["id"];
     }
-}
-
-TEST(Nonconvex, DecideRefinedNeverQuietlyPassesAnUndecidedPair) {
-  PairResult hull;
-  hull.status = Status::kInterference;
-  hull.depth = 3.0;
-  MeshVerdict m;
-  m.intersect = true;
-  m.vertex_depth = 0.01;
-  PairResult pieces;
-  pieces.status = Status::kFalsePositive;
-  pieces.depth = 0.02;
-  pieces.pieces = {{2, 0}};
-  // Complete decompositions: the pieces decide.
-  PairResult r = decide_refined(hull, m, &pieces, true, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kFalsePositive);
-  EXPECT_EQ(r.depth_source, "pieces");
-  EXPECT_EQ(*r.hull_depth, 3.0);
-  EXPECT_EQ((*r.depth_bounds)[0], 0.01);
-  EXPECT_EQ((*r.depth_bounds)[1], 3.0);
-  EXPECT_TRUE(*r.confirmed);
-  // A decomposition past its time box: nothing decides, the pair is flagged.
-  r = decide_refined(hull, m, &pieces, false, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kInterference);
-  EXPECT_FALSE(*r.confirmed);
-  // ... unless the vertex bound alone exceeds the tolerance.
-  m.vertex_depth = 0.2;
-  r = decide_refined(hull, m, &pieces, false, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kInterference);
-  EXPECT_TRUE(*r.confirmed);
-  EXPECT_EQ(r.depth_source, "vertex");
-  EXPECT_EQ(r.depth, 0.2);
-  // Meshes apart: separated, whatever the hulls said.
-  m.intersect = false;
-  r = decide_refined(hull, m, nullptr, true, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kSeparated);
-  EXPECT_EQ(r.depth_source, "mesh-test");
-  EXPECT_EQ(r.depth, 0.0);
 }
 
 TEST(Nonconvex, ConvexOnlySceneReportIsUnchangedApartFromTheNewFields) {
