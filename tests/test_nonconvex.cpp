@@ -4,7 +4,6 @@
 // pdcheck must recover every one, and a cached rerun must repeat the cold run.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +15,7 @@
 
 #include "batch/refine_cache.h"
 #include "scene/convexity_cache.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 using nlohmann::json;
@@ -46,18 +46,10 @@ json read_json(const fs::path& p) {
   return json::parse(in);
 }
 
-// A fresh directory per test process (ctest runs tests in parallel).
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(testing::TempDir()) / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 // 8-gon holes and bores keep each decomposition well inside its time box (about a
 // second per test; tol::kDecomposeSeconds is never reached, so runs are reproducible).
 fs::path generate(const std::string& name, const std::string& args = "--segments 8") {
-  const fs::path d = fresh_dir(name);
+  const fs::path d = pd_test::scratch_dir("nonconvex", name);
   const Run g =
       shell("python3 " + kSource + "/scripts/make_nonconvex.py " + d.string() + " " + args);
   EXPECT_EQ(g.code, 0);
