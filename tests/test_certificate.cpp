@@ -9,9 +9,8 @@
 #include <tuple>
 
 #include "box_points.h"
-#include "corpus/generators.h"
+#include "method_solve.h"
 #include "solve/certificate.h"
-#include "solve/methods.h"
 #include "solve/mlsl.h"
 #include "tolerances.h"
 
@@ -132,13 +131,10 @@ TEST(Certificate, TheCubesDepthDirectionIsTheOnlyOpenRegion) {
 
 TEST(Certificate, TheExactDepthDirectionIsCovered) {
   SphereSampler r(8);
-  IpoptLocalSolver ipopt;
-  SolverSettings exact;
-  exact.method = Method::kExact;
   for (int k = 0; k < 3; ++k) {
     const testgen::PairCase pc = testgen::vertex_class(r, 12);
     const PairProblem pr(pc.a, pc.b);
-    const DepthSolution e = solve_convex_pair(pc.a, pc.b, exact, ipopt);
+    const DepthSolution e = pd_test::solve(pc, Method::kExact);
     ASSERT_GT(e.depth, 0);
     const double best = pr.gap(e.direction);
     EXPECT_NEAR(best * pr.frame().scale, e.depth, 1e-9 * e.depth);

@@ -4,7 +4,6 @@
 // sessions alive at once keep their own results.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <vector>
 
 #include "geometry/qhull_session.h"
@@ -12,17 +11,6 @@
 using namespace pd;
 
 namespace {
-
-std::vector<int> vertex_ids(QhullSession& s) {
-  qhT* qh = s.qh();
-  std::vector<int> ids;
-  vertexT* vertex;
-  FORALLvertices {
-    ids.push_back(qh_pointid(qh, vertex->point));
-  }
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
 
 // The regular tetrahedron's corners of the cube [−1, 1]³, then its centre.
 const std::vector<double> kTetrahedron = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1, 0, 0, 0};
@@ -35,14 +23,14 @@ TEST(QhullSession, ATetrahedronHasFourFacetsAndItsCornersAsVertices) {
   EXPECT_TRUE(s.error().empty());
   EXPECT_EQ(s.qh()->num_facets, 4);
   EXPECT_EQ(s.qh()->num_vertices, 4);
-  EXPECT_EQ(vertex_ids(s), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(s.vertex_ids(), (std::vector<int>{0, 1, 2, 3}));
 }
 
 TEST(QhullSession, ASquareIn2DHasFourEdges) {
   QhullSession s(2, {0, 0, 2, 0, 2, 2, 0, 2, 1, 1, 1, 0}, "qhull");
   ASSERT_TRUE(s.ok()) << s.error();
   EXPECT_EQ(s.qh()->num_facets, 4);
-  EXPECT_EQ(vertex_ids(s), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(s.vertex_ids(), (std::vector<int>{0, 1, 2, 3}));
 }
 
 TEST(QhullSession, FlatInputIsRefusedWithQhullsMessage) {
@@ -59,8 +47,8 @@ TEST(QhullSession, SessionsAliveAtOnceKeepTheirOwnResults) {
     for (int bit : {1, 2, 4}) cube.push_back(k & bit ? 1.0 : -1.0);
   QhullSession box(3, cube, "qhull");
   ASSERT_TRUE(tetra.ok() && box.ok());
-  EXPECT_EQ(vertex_ids(tetra), (std::vector<int>{0, 1, 2, 3}));
-  EXPECT_EQ(vertex_ids(box), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_EQ(tetra.vertex_ids(), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(box.vertex_ids(), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
   EXPECT_EQ(tetra.qh()->num_facets, 4);
   EXPECT_EQ(box.qh()->num_facets, 6);  // merged coplanar facets: the cube's faces
 }
