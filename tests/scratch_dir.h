@@ -1,5 +1,6 @@
 // Per-test scratch directories and files: each test process writes under its
-// own path, so parallel ctest runs never share one.
+// own path, so parallel ctest runs never share one. And the message of an
+// error a test expects.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 namespace pd_test {
@@ -22,6 +24,18 @@ inline std::filesystem::path scratch_dir(const std::string& group, const std::st
 
 inline void write_bytes(const std::filesystem::path& p, const std::string& bytes) {
   std::ofstream(p, std::ios::binary) << bytes;
+}
+
+/// The message of the E that `f` throws, or "(no error)" when it throws none
+/// (any other exception goes on).
+template <class E>
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "(no error)";
 }
 
 }  // namespace pd_test

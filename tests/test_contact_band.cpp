@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "batch/contact_band.h"
@@ -13,6 +12,7 @@
 #include "batch/pair_tolerance.h"
 #include "cli_support.h"
 #include "corpus/cad_shapes.h"
+#include "scratch_dir.h"
 #include "stl_file.h"
 #include "tolerances.h"
 
@@ -201,11 +201,7 @@ TEST(ContactBand, TheGapBandIsTheConvexSagsWhereTheGapIs) {
 namespace {
 
 std::string fresh_dir(const std::string& name) {
-  const std::string d = testing::TempDir() + "contact_band_" + name + "_" +
-                        std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "/";
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
+  return pd_test::scratch_dir("contact_band", name).string() + "/";
 }
 
 nlohmann::json only_pair(const test::CliResult& r) {
@@ -214,24 +210,31 @@ nlohmann::json only_pair(const test::CliResult& r) {
   return rep["pairs"].empty() ? nlohmann::json{} : rep["pairs"][0];
 }
 
+// pdcheck under tolerance auto on a bushing and a pin, written as float32 STL
+// files in a fresh directory `name`.
+test::CliResult check_bushing_and_pin(const std::string& name, const Mesh& bushing,
+                                      const Mesh& pin) {
+  const std::string d = fresh_dir(name);
+  test::write_binary_stl(d + "bushing.stl", bushing);
+  test::write_binary_stl(d + "pin.stl", pin);
+  const std::string scene =
+      test::write_temp("contact_band_" + name + ".json",
+                       R"({"tolerance": "auto", "parts": [{"id": "bushing", "mesh": ")" + d +
+                           R"(bushing.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl"}]})");
+  return test::pdcheck(scene + " --no-cache -j 1");
+}
+
 }  // namespace
 
 TEST(ContactBand, AFineBoreBesideACoarseFilletGetsTheBoresBand) {
   // The flanged bushing (bore 64 segments, sag 0.0060; fillet sag > 0.1) and a
   // 48-segment pin in its bore, touching: the pair's band is the bore's.
-  const std::string d = fresh_dir("fillet");
   const double c = 2 / std::sqrt(2.0);
-  test::write_binary_stl(
-      d + "bushing.stl",
+  const test::CliResult r = check_bushing_and_pin(
+      "fillet",
       shapes::revolution(
-          {{5, 0}, {16, 0}, {16, 2}, {10, 2}, {10 - c, 4 - c}, {8, 4}, {8, 10}, {5, 10}}, 64));
-  test::write_binary_stl(d + "pin.stl",
-                         shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 48));
-  const std::string scene =
-      test::write_temp("contact_band_fillet.json",
-                       R"({"tolerance": "auto", "parts": [{"id": "bushing", "mesh": ")" + d +
-                           R"(bushing.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl"}]})");
-  const test::CliResult r = test::pdcheck(scene + " --no-cache -j 1");
+          {{5, 0}, {16, 0}, {16, 2}, {10, 2}, {10 - c, 4 - c}, {8, 4}, {8, 10}, {5, 10}}, 64),
+      shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 48));
   ASSERT_EQ(r.code, 0) << r.err;
   const auto p = only_pair(r);
   EXPECT_EQ(p["status"], "false_positive");
@@ -247,19 +250,10 @@ TEST(ContactBand, AFineFloat32ContactFarFromTheOriginIsDecided) {
   // A 64-segment bore and a 48-segment pin of radius 5 at x = 35,000 mm in
   // float32 (steps 0.0039 mm): the band holds both steps, and the certified
   // bracket closes within it.
-  const std::string d = fresh_dir("far");
   const Vec3 far(35000, 0, 0);
-  test::write_binary_stl(
-      d + "bushing.stl",
-      shapes::translated(shapes::revolution({{5, 0}, {8, 0}, {8, 10}, {5, 10}}, 64), far));
-  test::write_binary_stl(
-      d + "pin.stl",
+  const test::CliResult r = check_bushing_and_pin(
+      "far", shapes::translated(shapes::revolution({{5, 0}, {8, 0}, {8, 10}, {5, 10}}, 64), far),
       shapes::translated(shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 48), far));
-  const std::string scene =
-      test::write_temp("contact_band_far.json",
-                       R"({"tolerance": "auto", "parts": [{"id": "bushing", "mesh": ")" + d +
-                           R"(bushing.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl"}]})");
-  const test::CliResult r = test::pdcheck(scene + " --no-cache -j 1");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto p = only_pair(r);
   EXPECT_EQ(p["status"], "false_positive") << p.dump();

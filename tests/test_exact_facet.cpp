@@ -11,20 +11,13 @@
 #include "tolerances.h"
 
 using namespace pd;
-
-namespace {
-
-Points box(const Vec3& lo, const Vec3& hi) {
-  return pd_test::box_points(lo, hi);
-}
-
-}  // namespace
+using pd_test::box_points;
 
 TEST(ExactFacet, AxisAlignedOverlapsAreProvedByTheNearFaces) {
-  const Points a = box(Vec3::Zero(), Vec3::Ones());
+  const Points a = box_points(Vec3::Zero(), Vec3::Ones());
   for (double eps : {1e-9, 1e-12}) {
     SCOPED_TRACE("eps " + std::to_string(eps));
-    const Points b = box(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8));
+    const Points b = box_points(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8));
     const PairProblem pr(a, b);
     const DepthBracket br = epa_bracket(pr, tol::kEpaMaxIterations);
     ASSERT_TRUE(br.certified());

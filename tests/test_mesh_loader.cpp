@@ -6,37 +6,22 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <functional>
 #include <string>
 
 #include "scene/mesh_loader.h"
+#include "scratch_dir.h"
 
 using namespace pd;
+using pd_test::error_of;
 
 namespace {
 
 const std::string kFormats = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/";
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const MeshError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-std::string temp_dir() {
-  const auto d =
-      std::filesystem::temp_directory_path() / ("pdcheck_mesh_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(d);
-  return d.string() + "/";
-}
-
 }  // namespace
 
 TEST(MeshPaths, WhatIsNotAFileIsNamed) {
-  const std::string d = temp_dir();
+  const std::string d = pd_test::scratch_dir("mesh_loader", "paths").string() + "/";
   std::filesystem::create_directories(d + "dir.stl");
   ::unlink((d + "fifo.stl").c_str());
   ASSERT_EQ(::mkfifo((d + "fifo.stl").c_str(), 0600), 0);
@@ -50,13 +35,13 @@ TEST(MeshPaths, WhatIsNotAFileIsNamed) {
       {d + "missing.stl", "no such file"},
   };
   for (const auto& [path, says] : cases) {
-    const std::string e = error_of([&, p = path] { load_meshes(p, false); });
+    const std::string e = error_of<MeshError>([&, p = path] { load_meshes(p, false); });
     EXPECT_NE(e.find(says), std::string::npos) << e;
     EXPECT_NE(e.find(path), std::string::npos) << e;
   }
   struct stat st {};
   if (::stat("/dev/zero", &st) == 0 && S_ISCHR(st.st_mode)) {  // a device node, as it should be
-    const std::string e = error_of([&] { load_meshes("/dev/zero", false); });
+    const std::string e = error_of<MeshError>([&] { load_meshes("/dev/zero", false); });
     EXPECT_NE(e.find("is a device"), std::string::npos) << e;
   }
   std::filesystem::remove_all(d);

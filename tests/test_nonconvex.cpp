@@ -4,7 +4,6 @@
 // pdcheck must recover every one, and a cached rerun must repeat the cold run.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -14,9 +13,9 @@
 #include <set>
 #include <sstream>
 
-#include "batch/refine.h"
 #include "batch/refine_cache.h"
 #include "scene/convexity_cache.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 using nlohmann::json;
@@ -47,18 +46,10 @@ json read_json(const fs::path& p) {
   return json::parse(in);
 }
 
-// A fresh directory per test process (ctest runs tests in parallel).
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(testing::TempDir()) / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 // 8-gon holes and bores keep each decomposition well inside its time box (about a
 // second per test; tol::kDecomposeSeconds is never reached, so runs are reproducible).
 fs::path generate(const std::string& name, const std::string& args = "--segments 8") {
-  const fs::path d = fresh_dir(name);
+  const fs::path d = pd_test::scratch_dir("nonconvex", name);
   const Run g =
       shell("python3 " + kSource + "/scripts/make_nonconvex.py " + d.string() + " " + args);
   EXPECT_EQ(g.code, 0);
@@ -257,44 +248,6 @@ TEST(Nonconvex, ConvexityComesFromTheCache) {
     if (p.contains("convex")) {
       EXPECT_TRUE(p["convex"].get<bool>()) << p["id"];
     }
-}
-
-TEST(Nonconvex, DecideRefinedNeverQuietlyPassesAnUndecidedPair) {
-  PairResult hull;
-  hull.status = Status::kInterference;
-  hull.depth = 3.0;
-  MeshVerdict m;
-  m.intersect = true;
-  m.vertex_depth = 0.01;
-  PairResult pieces;
-  pieces.status = Status::kFalsePositive;
-  pieces.depth = 0.02;
-  pieces.pieces = {{2, 0}};
-  // Complete decompositions: the pieces decide.
-  PairResult r = decide_refined(hull, m, &pieces, true, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kFalsePositive);
-  EXPECT_EQ(r.depth_source, "pieces");
-  EXPECT_EQ(*r.hull_depth, 3.0);
-  EXPECT_EQ((*r.depth_bounds)[0], 0.01);
-  EXPECT_EQ((*r.depth_bounds)[1], 3.0);
-  EXPECT_TRUE(*r.confirmed);
-  // A decomposition past its time box: nothing decides, the pair is flagged.
-  r = decide_refined(hull, m, &pieces, false, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kInterference);
-  EXPECT_FALSE(*r.confirmed);
-  // ... unless the vertex bound alone exceeds the tolerance.
-  m.vertex_depth = 0.2;
-  r = decide_refined(hull, m, &pieces, false, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kInterference);
-  EXPECT_TRUE(*r.confirmed);
-  EXPECT_EQ(r.depth_source, "vertex");
-  EXPECT_EQ(r.depth, 0.2);
-  // Meshes apart: separated, whatever the hulls said.
-  m.intersect = false;
-  r = decide_refined(hull, m, nullptr, true, 0.05, 1.0);
-  EXPECT_EQ(r.status, Status::kSeparated);
-  EXPECT_EQ(r.depth_source, "mesh-test");
-  EXPECT_EQ(r.depth, 0.0);
 }
 
 TEST(Nonconvex, ConvexOnlySceneReportIsUnchangedApartFromTheNewFields) {

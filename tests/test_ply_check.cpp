@@ -2,8 +2,6 @@
 // rewritten before it reads them, damaged PLY files named with where. Other
 // formats and paths that are not files: test_mesh_loader.cpp.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <cstdint>
 #include <cstring>
@@ -13,8 +11,10 @@
 
 #include "scene/mesh_loader.h"
 #include "scene/ply_check.h"
+#include "scratch_dir.h"
 
 using namespace pd;
+using pd_test::error_of;
 
 namespace {
 
@@ -92,22 +92,6 @@ std::string binary_ply(const PlyLayout& l, Points& written) {
 /// What assimp can hold of `written`: single precision.
 Points as_float(const Points& written) {
   return written.cast<float>().cast<double>();
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const MeshError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-std::string temp_dir() {
-  const auto d =
-      std::filesystem::temp_directory_path() / ("pdcheck_mesh_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(d);
-  return d.string() + "/";
 }
 
 }  // namespace
@@ -201,8 +185,9 @@ TEST(PlyInput, DamagedFilesAreErrors) {
        "unknown format"},
   };
   for (const Case& c : cases)
-    EXPECT_NE(error_of([&] { read_meshes(c.bytes, "ply", false); }).find(c.says), std::string::npos)
-        << c.what << ": " << error_of([&] { read_meshes(c.bytes, "ply", false); });
+    EXPECT_NE(error_of<MeshError>([&] { read_meshes(c.bytes, "ply", false); }).find(c.says),
+              std::string::npos)
+        << c.what << ": " << error_of<MeshError>([&] { read_meshes(c.bytes, "ply", false); });
 }
 
 // assimp's own test model Wuson.ply (Blender 2.47's exporter) has a header line
@@ -236,7 +221,7 @@ TEST(PlyInput, AHeaderLineAssimpSkipsIsSkippedWithAWarning) {
     EXPECT_EQ(warnings, p.warnings);
   }
   // A file by path names itself in the warning.
-  const std::string path = temp_dir() + "wuson_like.ply";
+  const std::string path = (pd_test::scratch_dir("ply_check", "wuson") / "wuson_like.ply").string();
   std::ofstream(path, std::ios::binary) << wuson;
   std::vector<std::string> warnings;
   EXPECT_EQ(load_meshes(path, false, &warnings)[0].vertices, want);
@@ -251,15 +236,17 @@ TEST(PlyInput, AHeaderLineAssimpSkipsIsSkippedWithAWarning) {
   std::string among = wuson;
   among.replace(among.find(blender), blender.size() + 1, "");
   among.insert(among.find("property float y"), "made with care\r\n");
-  EXPECT_NE(error_of([&] { check_ply(among); }).find("after the first element"), std::string::npos)
-      << error_of([&] { check_ply(among); });
+  EXPECT_NE(error_of<MeshError>([&] { check_ply(among); }).find("after the first element"),
+            std::string::npos)
+      << error_of<MeshError>([&] { check_ply(among); });
   // Bytes that are not text are a damaged header still, not a skipped line.
   std::string damaged = wuson;
   damaged[damaged.find("Created") + 3] = '\x01';
-  EXPECT_NE(error_of([&] { check_ply(damaged); }).find("header line 3: unknown line"),
+  EXPECT_NE(error_of<MeshError>([&] { check_ply(damaged); }).find("header line 3: unknown line"),
             std::string::npos)
-      << error_of([&] { check_ply(damaged); });
-  EXPECT_NE(error_of([&] { check_ply(damaged); }).find("is not text"), std::string::npos);
+      << error_of<MeshError>([&] { check_ply(damaged); });
+  EXPECT_NE(error_of<MeshError>([&] { check_ply(damaged); }).find("is not text"),
+            std::string::npos);
   // A binary file with the line and the 0x0a first byte: both worked around.
   Points written;
   std::string binary = binary_ply({false, false, false, false, 0x0a}, written);
@@ -277,8 +264,9 @@ TEST(PlyInput, AFileNamedPlyMustStartWithThePlyLine) {
                                    std::string("plyply\nformat binary_little_endian 1.0\nelement"),
                                    std::string("solid x\n"), std::string()}) {
     for (const char* ext : {"ply", "PLY", ".ply"})
-      EXPECT_NE(error_of([&] { read_meshes(bytes, ext, false); }).find("does not start with"),
-                std::string::npos)
+      EXPECT_NE(
+          error_of<MeshError>([&] { read_meshes(bytes, ext, false); }).find("does not start with"),
+          std::string::npos)
           << ext << " " << bytes;
   }
 }
@@ -289,13 +277,16 @@ TEST(PlyInput, AMisreadingIsBlamedOnTheLoader) {
   Eigen::Matrix<float, 3, Eigen::Dynamic> read = written.cast<float>();
   EXPECT_NO_THROW(check_ply_read(p, read));
   read(1, 2) = std::nanf("");
-  EXPECT_NE(
-      error_of([&] { check_ply_read(p, read); }).find("the mesh loader misread the file (PLY)"),
-      std::string::npos);
+  EXPECT_NE(error_of<MeshError>([&] {
+              check_ply_read(p, read);
+            }).find("the mesh loader misread the file (PLY)"),
+            std::string::npos);
   read(1, 2) = 0.5f;  // finite but not what the file holds
-  EXPECT_NE(error_of([&] { check_ply_read(p, read); }).find("misread"), std::string::npos);
+  EXPECT_NE(error_of<MeshError>([&] { check_ply_read(p, read); }).find("misread"),
+            std::string::npos);
   read = written.cast<float>().leftCols(3);  // another vertex list, all finite
   EXPECT_NO_THROW(check_ply_read(p, read));
   read(0, 0) = INFINITY;
-  EXPECT_NE(error_of([&] { check_ply_read(p, read); }).find("misread"), std::string::npos);
+  EXPECT_NE(error_of<MeshError>([&] { check_ply_read(p, read); }).find("misread"),
+            std::string::npos);
 }

@@ -33,16 +33,8 @@ QhullSession::~QhullSession() {
   qh_memfreeshort(&qh_, &curlong, &totlong);
 }
 
-namespace {
-
-std::vector<double> interleave(const Points& p, const Eigen::MatrixXd& basis) {
-  // Project onto the columns of `basis` (3 × d) and store point after point.
-  const Eigen::MatrixXd proj = basis.transpose() * p;
-  return std::vector<double>(proj.data(), proj.data() + proj.size());
-}
-
-std::vector<int> hull_vertex_ids(QhullSession& s) {
-  qhT* qh = s.qh();
+std::vector<int> QhullSession::vertex_ids() {
+  qhT* qh = &qh_;
   std::vector<int> ids;
   vertexT* vertex;
   FORALLvertices {
@@ -50,6 +42,14 @@ std::vector<int> hull_vertex_ids(QhullSession& s) {
   }
   std::sort(ids.begin(), ids.end());
   return ids;
+}
+
+namespace {
+
+std::vector<double> interleave(const Points& p, const Eigen::MatrixXd& basis) {
+  // Project onto the columns of `basis` (3 × d) and store point after point.
+  const Eigen::MatrixXd proj = basis.transpose() * p;
+  return std::vector<double>(proj.data(), proj.data() + proj.size());
 }
 
 Points select(const Points& p, const std::vector<int>& ids) {
@@ -95,7 +95,7 @@ Hull convex_hull(const Points& pts) {
   if (dim == 3) {
     QhullSession s(3, interleave(c, Eigen::Matrix3d::Identity()), "qhull");
     if (s.ok()) {
-      h.vertices = select(pts, hull_vertex_ids(s));
+      h.vertices = select(pts, s.vertex_ids());
       h.dimension = 3;
       return h;
     }
@@ -108,7 +108,7 @@ Hull convex_hull(const Points& pts) {
   if (dim == 2) {
     QhullSession s(2, interleave(c, axes.rightCols(2)), "qhull");
     if (!s.ok()) throw std::runtime_error("qhull failed on a flat point set: " + s.error());
-    h.vertices = select(pts, hull_vertex_ids(s));
+    h.vertices = select(pts, s.vertex_ids());
     h.warnings.push_back("flat part (zero thickness): its hull is a polygon of " +
                          std::to_string(h.vertices.cols()) + " vertices");
   } else if (dim == 1) {

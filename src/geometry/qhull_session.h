@@ -22,6 +22,8 @@ class QhullSession {
   bool ok() const { return exit_code_ == 0; }
   const std::string& error() const { return error_; }
   qhT* qh() { return &qh_; }
+  /// The indices of the input points that are vertices of the hull, ascending.
+  std::vector<int> vertex_ids();
 
  private:
   qhT qh_;
