@@ -4,13 +4,16 @@ tolerance against auto, with its parts inline (as scripts/make_assembly.py write
 reads their double step) and as binary STL files (auto measures every file's sag).
 
 usage: bench_auto_tolerance.py PDCHECK OUTDIR [--parts 10000] [--runs 3] [--only inline|stl]
-                               [--measure-only]
+                               [--measure-only] [--baseline OTHER_PDCHECK]
 
 Writes OUTDIR/a.json (make_assembly.py), OUTDIR/meshes/*.stl (each prism as a closed float32 mesh:
 its n-gon caps fanned from their first vertex, its sides two triangles each) and OUTDIR/m.json (the
 same parts as mesh files), then times `pdcheck SCENE -q -j 2 --cache DIR` for each scene and
 tolerance (the scene's 0.1 and auto): cold (an empty cache directory) and cached (the same
-directory again). Prints a Markdown table of the medians.
+directory again). Prints a Markdown table of the medians, and per build the ratios of the CPU
+medians to the fixed tolerance's (and the median of the per-run ratios). `--baseline OTHER_PDCHECK`
+runs a second build in the same loop (each run: both builds, their order alternating between runs),
+so that a before/after comparison sees the same machine load.
 """
 import argparse
 import json
@@ -70,6 +73,8 @@ def main():
     ap.add_argument("--only", choices=["inline", "stl"])
     ap.add_argument("--measure-only", action="store_true",
                     help="only 0.1 and auto clamped at 0.1: what measuring costs, the same decisions")
+    ap.add_argument("--baseline", metavar="OTHER_PDCHECK",
+                    help="a second build, run interleaved with PDCHECK (labelled 'baseline')")
     a = ap.parse_args()
     os.makedirs(os.path.join(a.outdir, "meshes"), exist_ok=True)
     inline = os.path.join(a.outdir, "a.json")
@@ -94,30 +99,44 @@ def main():
             json.dump(dict(sc, tolerance={"auto": True, "min": 0.1}), f)
         scenes[label] = [("0.1", [path]), ("auto, min 0.1", [clamped]),
                          ("auto", [path, "--tolerance", "auto"])][:2 if a.measure_only else 3]
-    print("| scene | tolerance | cold: wall, CPU (s) | cached: wall, CPU (s) | interference / "
+    builds = [("new", a.pdcheck)] + ([("baseline", a.baseline)] if a.baseline else [])
+    print("| scene | build | tolerance | cold: wall, CPU (s) | cached: wall, CPU (s) | interference / "
           "false_positive |")
-    print("|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|")
     labels = {"inline": ["inline"], "stl": ["STL files"]}.get(a.only, ["inline", "STL files"])
+    med = statistics.median
     for label in labels:
-        results = {name: ([], [], [], [], None) for name, _ in scenes[label]}
-        for _ in range(a.runs):  # interleaved, so a change in the machine's load hits all alike
-            for name, args in scenes[label]:
-                cache = os.path.join(a.outdir, "cache")
-                shutil.rmtree(cache, ignore_errors=True)
-                cmd = [a.pdcheck] + args + ["-q", "-j", "2", "--cache", cache]
-                r = results[name]
-                w, c, _ = timed(cmd)
-                r[0].append(w), r[1].append(c)
-                w, c, rep = timed(cmd)
-                r[2].append(w), r[3].append(c)
-                results[name] = r[:4] + (rep,)
-        for name, _ in scenes[label]:
-            r = results[name]
-            s = r[4]["summary"]
-            med = statistics.median
-            print("| %s | %s | %.2f, %.2f | %.2f, %.2f | %d / %d |" % (
-                label, name, med(r[0]), med(r[1]), med(r[2]), med(r[3]), s["interference"],
-                s["false_positive"]))
+        # per (build, tolerance): cold wall, cold CPU, cached wall, cached CPU, the last report
+        results = {(b, name): [[], [], [], [], None] for b, _ in builds for name, _ in scenes[label]}
+        for run in range(a.runs):  # interleaved, so a change in the machine's load hits all alike
+            order = builds if run % 2 == 0 else builds[::-1]
+            for b, pdcheck in order:
+                for name, args in scenes[label]:
+                    cache = os.path.join(a.outdir, "cache")
+                    shutil.rmtree(cache, ignore_errors=True)
+                    cmd = [pdcheck] + args + ["-q", "-j", "2", "--cache", cache]
+                    r = results[(b, name)]
+                    w, c, _ = timed(cmd)
+                    r[0].append(w), r[1].append(c)
+                    w, c, rep = timed(cmd)
+                    r[2].append(w), r[3].append(c)
+                    r[4] = rep
+            print("run %d of %d done" % (run + 1, a.runs), file=sys.stderr)
+        for b, _ in builds:
+            for name, _ in scenes[label]:
+                r = results[(b, name)]
+                s = r[4]["summary"]
+                print("| %s | %s | %s | %.2f, %.2f | %.2f, %.2f | %d / %d |" % (
+                    label, b, name, med(r[0]), med(r[1]), med(r[2]), med(r[3]), s["interference"],
+                    s["false_positive"]))
+        fixed = scenes[label][0][0]
+        for b, _ in builds:
+            for name, _ in scenes[label][1:]:
+                r, f = results[(b, name)], results[(b, fixed)]
+                print("%s, %s: %s / %s CPU: cold %.3f (per run %.3f), cached %.3f (per run %.3f)" % (
+                    label, b, name, fixed, med(r[1]) / med(f[1]),
+                    med([x / y for x, y in zip(r[1], f[1])]), med(r[3]) / med(f[3]),
+                    med([x / y for x, y in zip(r[3], f[3])])))
         sys.stdout.flush()
 
 

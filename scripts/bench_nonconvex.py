@@ -2,7 +2,7 @@
 """Nonconvex benchmark (issue 17): cold, cached and hull-only runs of one assembly.
 
 usage: bench_nonconvex.py [--pdcheck build/bin/pdcheck] [--out build/bench_nonconvex]
-                          [--copies 8] [--segments 96] [--runs 3] [--jobs 2]
+                          [--copies 8] [--segments 96] [--runs 3] [--jobs 2] [--tolerance auto]
 
 Writes the assembly with scripts/make_nonconvex.py --bench (per copy 4 nonconvex parts of
 1,440-2,112 triangles and a 76-triangle component, with bolts, a pin; 8 copies = 32 + 8
@@ -10,6 +10,7 @@ nonconvex parts), then per run, in this order: `--pieces hull --no-cache`, a col
 (the default, pieces auto, with an empty cache) and a cached rerun (same cache). Prints the median wall
 time of each, the ratios cold/hull and cached/hull, and for the auto runs the share of
 nominal relations recovered and the hull artefacts reported as confirmed interferences.
+`--tolerance VALUE` passes `--tolerance VALUE` to every run (`auto`: issue 27's measured bands).
 """
 import argparse
 import json
@@ -60,6 +61,7 @@ def main():
     ap.add_argument("--segments", type=int, default=96)
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--tolerance", help="passed to every run as --tolerance (e.g. auto)")
     a = ap.parse_args()
     shutil.rmtree(a.out, ignore_errors=True)
     subprocess.run([sys.executable, os.path.join(HERE, "make_nonconvex.py"), a.out, "--bench",
@@ -70,7 +72,7 @@ def main():
     print("parts: %d (%d nonconvex, %d-%d triangles), nominal relations: %d" %
           (len(expected["parts"]), len(nonconvex), min(t for _, t in nonconvex),
            max(t for _, t in nonconvex), len(expected["pairs"])), file=sys.stderr)
-    jobs = ["--jobs", str(a.jobs)]
+    jobs = ["--jobs", str(a.jobs)] + (["--tolerance", a.tolerance] if a.tolerance else [])
     times = {"hull": [], "cold": [], "cached": []}
     reports = {}
     for r in range(a.runs):

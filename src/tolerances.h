@@ -327,6 +327,14 @@ inline constexpr double kSagCreaseAngle = 0.8726646259971648;  // 50°
 /// whose normal the mesh does not define) gives no patch estimate for the
 /// facet: its crease estimate stands alone.
 inline constexpr double kSagPatchMinCos = 0.5;
+/// Relative: a facet's width across a tessellation crease, in its crease sag
+/// (c/2)·tan(θ/4), is at most this many times its neighbour's across the same
+/// edge. A large flat facet (a wall) meeting a round's first facet turns by half
+/// the round's segment angle; read as a chord of that curvature with its whole
+/// width it would be a sag of millimetres (a 67 mm wall beside an 8-segment
+/// quarter round: 0.82 mm, for a true sag of 0.024). A uniform tessellation's
+/// neighbours are within 2× (cylinders, spheres, tori, cones: equal).
+inline constexpr double kSagChordRatio = 2.0;
 /// `tolerance: auto` (docs/numerics.md): a pair's band is the concave sags and
 /// coordinate steps of its two parts where they meet, times 1 + this. Relative:
 /// it covers the measurement's error (within 10 % on generated cylinders,

@@ -1,4 +1,4 @@
-// tolerance auto (issue 27): the scene's forms, the sag cache, each pair's band
+// tolerance auto (issue 27): the scene's forms, the sag in the hull cache, each pair's band
 // from its parts' sags where they meet, and what a finding says about it.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "cli_support.h"
 #include "corpus/cad_shapes.h"
 #include "report/finding_text.h"
-#include "scene/sag_cache.h"
+#include "scene/hull_cache.h"
 #include "scene/scene.h"
 #include "tolerances.h"
 
@@ -99,10 +99,12 @@ TEST(AutoTolerance, CacheRoundTripsExactly) {
   const TessellationSag s = measure_tessellation_sag(tube, CoordinateStorage::kFloat32);
   const std::string dir = testing::TempDir() + "sag_cache_test";
   std::filesystem::remove_all(dir);
-  const std::string key = sag_key("0123456789abcdef0123456789abcdef", false);
-  EXPECT_FALSE(read_cached_sag(dir, key));
-  EXPECT_EQ(write_cached_sag(dir, key, s), "");
-  const auto back = read_cached_sag(dir, key);
+  const std::string key = hulls_key("0123456789abcdef0123456789abcdef", false);
+  EXPECT_FALSE(read_cached_hulls(dir, key));
+  EXPECT_EQ(write_cached_hulls(dir, key, {{tube.vertices.cols()}, {tube.vertices}, {}, s}), "");
+  const auto entry = read_cached_hulls(dir, key);
+  ASSERT_TRUE(entry);
+  const std::optional<TessellationSag>& back = entry->sag;
   ASSERT_TRUE(back);
   EXPECT_EQ(back->concave, s.concave);
   EXPECT_EQ(back->convex, s.convex);
@@ -123,7 +125,7 @@ TEST(AutoTolerance, CacheRoundTripsExactly) {
       EXPECT_EQ(back->features[k].patches[q].convex, s.features[k].patches[q].convex);
     }
   }
-  EXPECT_NE(sag_key("0123456789abcdef0123456789abcdef", true), key);
+  EXPECT_NE(hulls_key("0123456789abcdef0123456789abcdef", true), key);
 }
 
 TEST(AutoTolerance, EachPairGetsTheSagsWhereItsPartsMeet) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "corpus/cad_shapes.h"
 #include "geometry/coordinate_resolution.h"
@@ -194,4 +195,31 @@ TEST(TessellationSag, PlacementScalesLengthsAndMovesBoxes) {
   ASSERT_EQ(p.features.size(), 1u);
   EXPECT_NEAR(p.features[0].box.lo.x(), 1000 - 25.4 * 5, 1e-9);
   EXPECT_NEAR(p.features[0].radius, 25.4 * 5, 1e-6);
+}
+
+TEST(TessellationSag, FlatWallBesideARoundedCornerHasNoSag) {
+  // An L-shaped profile whose inner corner is a concave quarter round of
+  // radius 5 in 8 segments (32 per turn), extruded: each 67 mm flat wall meets
+  // the round at a 5.6° crease (half a segment's turn). The wall is flat; read
+  // as spanning that crease with its whole width it would be a 0.82 mm sag.
+  // Capped at twice the round's facet width, the worst is the round's own.
+  constexpr double a = 80, t = 8, r = 5;
+  constexpr int quarter = 8;
+  std::vector<Vec2> profile{{0, 0}, {a, 0}, {a, t}};
+  for (int k = 0; k <= quarter; ++k) {
+    const double phi = -M_PI / 2 - M_PI / 2 * k / quarter;  // from (t + r, t) to (t, t + r)
+    profile.emplace_back(t + r + r * std::cos(phi), t + r + r * std::sin(phi));
+  }
+  profile.insert(profile.end(), {{t, a}, {0, a}});
+  const Mesh l = prism(profile, 0, 20);
+  for (bool far : {false, true}) {
+    const Mesh m = far ? float32(translated(l, kFar)) : l;
+    const TessellationSag s =
+        measure_tessellation_sag(m, far ? CoordinateStorage::kFloat32 : CoordinateStorage::kDouble);
+    const std::string what = far ? "far, float32" : "at the origin";
+    expect_within_10_percent(s.concave, sag_of(4 * quarter, r), s.resolution, what);
+    EXPECT_EQ(s.convex, 0.0) << what;
+    ASSERT_EQ(s.features.size(), 1u) << what;  // the round and the two walls beside it
+    EXPECT_EQ(s.features[0].segments, 4 * quarter) << what;
+  }
 }

@@ -258,7 +258,12 @@ std::pair<double, double> crease_sag(const Welded& w, const Facets& f, const Edg
     const Edge& edge = table.edges[e];
     if (!edge.smooth || edge.angle <= 0) continue;
     const Vec3 along = w.corner(t, k + 1) - w.corner(t, k);
-    const double width = 2 * f.area[t] / along.norm();
+    // The facet's width across the crease, at most kSagChordRatio times its
+    // neighbour's there: a flat wall beside a round's first facet turns only
+    // by the round's half segment, and is not a chord of that round.
+    const long other = edge.t[0] == t ? edge.t[1] : edge.t[0];
+    const double width =
+        2 * std::min(f.area[t], tol::kSagChordRatio * f.area[other]) / along.norm();
     creases.push_back({0.5 * width * std::tan(edge.angle / 4), along.normalized(), edge.convex});
   }
   std::sort(creases.begin(), creases.end(),

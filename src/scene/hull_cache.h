@@ -2,7 +2,9 @@
 // hull (file coordinates), stored per file content, so a rerun, or another
 // shard on the same machine, hulls nothing it has hulled before and, where the
 // part keeps no surface (pieces "hull" or "meshes"), does not read the file at
-// all. Checked cache files (cache_file.h): an entry that does not read back
+// all. Under `tolerance: auto` the entry also holds the file's tessellation
+// sag (geometry/tessellation_sag.h), so a rerun reads one entry per file for
+// both. Checked cache files (cache_file.h): an entry that does not read back
 // whole is computed again.
 #pragma once
 
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "geometry/hull.h"
+#include "geometry/tessellation_sag.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -20,10 +23,14 @@ struct StoredHulls {
   std::vector<long> counts;           ///< vertices per mesh as read
   std::vector<Points> reduced;        ///< per mesh: its hull's vertices, file coordinates
   std::vector<std::string> warnings;  ///< the loader's about the file (one line each)
+  /// The file's sag (file units), when a run under `tolerance: auto` measured
+  /// it; a run without auto stores none, and a later auto run that finds none
+  /// measures it and stores the entry again with it.
+  std::optional<TessellationSag> sag;
 };
 
-/// The key of a file's hulls: its content hash, whether each mesh of the file
-/// is its own piece (pieces "meshes") and the format version.
+/// The key of a file's hulls (and sag): its content hash, whether each mesh of
+/// the file is its own piece (pieces "meshes") and the format version.
 std::string hulls_key(const std::string& content_hash, bool per_mesh);
 
 std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key);

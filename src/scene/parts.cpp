@@ -18,7 +18,6 @@
 #include "scene/convexity_cache.h"
 #include "scene/hull_cache.h"
 #include "scene/mesh_loader.h"
-#include "scene/sag_cache.h"
 #include "scene/setup_warnings.h"
 #include "scene/split_nodes.h"
 #include "tolerances.h"
@@ -73,10 +72,9 @@ struct MeshFile {
   double concavity = 0.0;  ///< file units
   bool closed = false;
   double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
-  // Under tolerance auto: the sag (file units), and the concavity tolerance it
-  // gives the file (scene units).
+  // Under tolerance auto: the sag (file units; from the hull cache entry when
+  // it holds one), and the concavity tolerance it gives the file (scene units).
   std::optional<TessellationSag> sag;
-  bool sag_cached = false;
   double concavity_tol = 0.0;
 };
 
@@ -163,7 +161,8 @@ LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_n
 }
 
 // The file's hulls from the cache, when an earlier run (or another shard on
-// this machine) stored them: true if found.
+// this machine) stored them: true if found. The entry's sag comes with them
+// when a run under tolerance auto stored one.
 bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   if (cache.dir.empty()) return false;
   f.hash = geometry_hash(spec, cache);
@@ -172,18 +171,8 @@ bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   f.counts = std::move(hit->counts);
   f.reduced = std::move(hit->reduced);
   f.warnings = std::move(hit->warnings);
+  f.sag = std::move(hit->sag);
   f.hulls_cached = true;
-  return true;
-}
-
-// The file's sag from the cache, when an earlier run stored it: true if found.
-bool cached_sag(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
-  if (cache.dir.empty()) return false;
-  if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
-  auto hit = read_cached_sag(cache.dir, sag_key(f.hash, spec.pieces == Pieces::kMeshes));
-  if (!hit) return false;
-  f.sag = std::move(*hit);
-  f.sag_cached = true;
   return true;
 }
 
@@ -206,23 +195,22 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     const std::vector<Mesh>& meshes = f.read.meshes;
     // Hulls first: a mesh they reject (non-finite coordinates, ...) fails as in
     // pieces "hull", before any measurement.
+    bool store = false;  // the cache entry is new, or gains the sag
     if (!f.hulls_cached) {
       f.warnings = f.read.warnings;
       for (const Mesh& m : meshes) {
         f.counts.push_back(m.vertices.cols());
         f.reduced.push_back(convex_hull(m.vertices).vertices);
       }
-      if (!f.hash.empty())
-        write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
-                           {f.counts, f.reduced, f.warnings});
+      store = true;
     }
     if (auto_tol && !f.sag) {
       f.sag = file_sag(meshes);
-      if (!cache.dir.empty()) {
-        if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
-        write_cached_sag(cache.dir, sag_key(f.hash, spec.pieces == Pieces::kMeshes), *f.sag);
-      }
+      store = true;
     }
+    if (store && !f.hash.empty())  // one entry per file: its hulls, and its sag under auto
+      write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
+                         {f.counts, f.reduced, f.warnings, f.sag});
     if (auto_tol) concavity_tol = auto_concavity_tol(f, *auto_tol);
     f.concavity_tol = concavity_tol;
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
@@ -406,9 +394,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     const size_t f = *file_of[u];
     file_spec[f] = unique[u];
     if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces) &&
-        (!auto_tol || cached_sag(*unique[u], mesh_files[f], cache)))
+        (!auto_tol || mesh_files[f].sag))
       continue;
-    if (auto_tol) cached_sag(*unique[u], mesh_files[f], cache);
     if (unique[u]->node) {
       const auto [it, fresh] = by_node.emplace(*unique[u]->mesh, requests.size());
       if (fresh) {
