@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <string_view>
 
 #include "atomic_write.h"
 #include "hash.h"
@@ -31,15 +31,29 @@ std::optional<std::string> read_cache_entry(const std::string& dir, const CacheK
                                             const std::string& key) {
   if (dir.empty()) return std::nullopt;
   try {
-    std::ifstream in(entry_path(dir, kind, key), std::ios::binary);
+    // The whole file in one read (not a character at a time: a cached run
+    // reads an entry or two per mesh file), then its three lines.
+    std::ifstream in(entry_path(dir, kind, key), std::ios::binary | std::ios::ate);
     if (!in) return std::nullopt;
-    std::string format, stored_key, checksum;
-    if (!std::getline(in, format) || format != kind.format) return std::nullopt;
-    if (!std::getline(in, stored_key) || stored_key != key) return std::nullopt;
-    if (!std::getline(in, checksum)) return std::nullopt;
-    std::string body{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad() || content_hash(body) != checksum) return std::nullopt;
-    return body;
+    const std::streamoff size = in.tellg();
+    if (size < 0) return std::nullopt;
+    std::string e(static_cast<size_t>(size), '\0');
+    if (!in.seekg(0) || !in.read(e.data(), size)) return std::nullopt;
+    size_t at = 0;
+    const auto line = [&](std::string_view& out) {
+      const size_t eol = e.find('\n', at);
+      if (eol == std::string::npos) return false;
+      out = std::string_view(e).substr(at, eol - at);
+      at = eol + 1;
+      return true;
+    };
+    std::string_view format, stored_key, checksum;
+    if (!line(format) || format != kind.format) return std::nullopt;
+    if (!line(stored_key) || stored_key != key) return std::nullopt;
+    if (!line(checksum)) return std::nullopt;
+    if (content_hash(std::string_view(e).substr(at)) != checksum) return std::nullopt;
+    e.erase(0, at);
+    return e;
   } catch (const std::exception&) {  // e.g. a directory where the entry should be
     return std::nullopt;
   }
