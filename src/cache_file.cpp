@@ -1,8 +1,12 @@
 #include "cache_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string_view>
 
 #include "atomic_write.h"
@@ -32,13 +36,25 @@ std::optional<std::string> read_cache_entry(const std::string& dir, const CacheK
   if (dir.empty()) return std::nullopt;
   try {
     // The whole file in one read (not a character at a time: a cached run
-    // reads an entry or two per mesh file), then its three lines.
-    std::ifstream in(entry_path(dir, kind, key), std::ios::binary | std::ios::ate);
-    if (!in) return std::nullopt;
-    const std::streamoff size = in.tellg();
-    if (size < 0) return std::nullopt;
-    std::string e(static_cast<size_t>(size), '\0');
-    if (!in.seekg(0) || !in.read(e.data(), size)) return std::nullopt;
+    // reads an entry or two per mesh file), then its three lines. Only a
+    // regular file is an entry: a directory or a FIFO (opened without
+    // blocking) under its name is a miss.
+    const int fd = ::open(entry_path(dir, kind, key).c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return std::nullopt;
+    struct Closer {
+      int fd;
+      ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+    std::string e(static_cast<size_t>(st.st_size), '\0');
+    size_t got = 0;
+    while (got < e.size()) {
+      const ssize_t n = ::read(fd, e.data() + got, e.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return std::nullopt;  // an error, or shorter than it said
+      got += static_cast<size_t>(n);
+    }
     size_t at = 0;
     const auto line = [&](std::string_view& out) {
       const size_t eol = e.find('\n', at);
