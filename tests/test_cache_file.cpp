@@ -4,6 +4,7 @@
 // one key never leave a torn entry or a temporary file behind. Each cache's own
 // entries: test_decomposition_cache.cpp, test_convexity_cache.cpp, test_refine_cache.cpp.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -82,6 +83,9 @@ TEST(CacheFile, DamagedOrForeignEntriesAreMisses) {
   EXPECT_FALSE(read_cache_entry(dir.string(), kKind, "k"));
   fs::create_directories(dir / "d.pdt");
   EXPECT_FALSE(read_cache_entry(dir.string(), kKind, "d"));
+  // A FIFO where the entry should be: a miss, not a read that waits for a writer.
+  ASSERT_EQ(mkfifo((dir / "f.pdt").c_str(), 0600), 0);
+  EXPECT_FALSE(read_cache_entry(dir.string(), kKind, "f"));
   fs::remove_all(dir);
 }
 

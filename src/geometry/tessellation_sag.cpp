@@ -445,20 +445,22 @@ LocalSag sag_at(const TessellationSag& sag, const Vec3& at, double reach) {
 
 namespace {
 
-// The box of a box's eight corners mapped by `placement`.
+// The box of a box's eight corners mapped by `placement` (on the stack: a
+// part's every patch box is placed, in every run).
 Aabb placed_box(const Aabb& box, const Mat4& placement) {
-  Points corners(3, 8);
+  Eigen::Matrix<double, 3, 8> corners;
   for (int c = 0; c < 8; ++c) {
     const Vec3 x(c & 1 ? box.hi.x() : box.lo.x(), c & 2 ? box.hi.y() : box.lo.y(),
                  c & 4 ? box.hi.z() : box.lo.z());
     corners.col(c) = placement.topLeftCorner<3, 3>() * x + placement.topRightCorner<3, 1>();
   }
-  return Aabb::of(corners);
+  return {corners.rowwise().minCoeff(), corners.rowwise().maxCoeff()};
 }
 
 }  // namespace
 
 TessellationSag placed_sag(const TessellationSag& sag, const Mat4& placement, double stretch) {
+  if (stretch == 1.0 && placement == Mat4::Identity()) return sag;  // parts placed as their files
   TessellationSag out = sag;
   out.concave *= stretch;
   out.convex *= stretch;
