@@ -97,7 +97,7 @@ TEST(AutoTolerance, BandIsSagsAndStepsWithTheMarginClamped) {
 TEST(AutoTolerance, CacheRoundTripsExactly) {
   const Mesh tube = shapes::revolution({{5, 0}, {8, 0}, {8, 20}, {5, 20}}, 32);
   const TessellationSag s = measure_tessellation_sag(tube, CoordinateStorage::kFloat32);
-  const std::string dir = testing::TempDir() + "sag_cache_test";
+  const std::string dir = process_dir() + "sag_cache_test";
   std::filesystem::remove_all(dir);
   const std::string key = hulls_key("0123456789abcdef0123456789abcdef", false);
   EXPECT_FALSE(read_cached_hulls(dir, key));

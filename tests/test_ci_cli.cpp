@@ -46,7 +46,7 @@ std::map<std::string, json> pairs_by_name(const json& report) {
 }
 
 std::string tmp(const std::string& name) {
-  const std::string p = testing::TempDir() + name;
+  const std::string p = process_dir() + name;
   std::remove(p.c_str());
   return p;
 }

@@ -47,7 +47,7 @@ TEST(ExtraOutputs, EachFileHasItsWritersBytes) {
 
 TEST(ExtraOutputs, ABadPathFailsBeforeAnyWorkNamingItsOption) {
   ExtraOutputPaths paths;
-  paths.junit = testing::TempDir() + "fine.xml";
+  paths.junit = process_dir() + "fine.xml";
   paths.bcf = "/nonexistent-dir/out.bcf";
   try {
     check_extra_outputs(paths);

@@ -2,6 +2,7 @@
 // else the closest gap, with the direction and pieces that realise it — for the
 // static, clearance and motion checks; against exact per-piece references.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
@@ -182,7 +183,8 @@ TEST(PiecePairs, MotionSweepTakesTheClosestPiecePair) {
 
 TEST(PiecePairs, ExactSceneWithMeshPiecesReportsTheSmallestDistance) {
   // The same through a scene: a two-object OBJ as pieces "meshes", --method exact.
-  const std::string obj = testing::TempDir() + "piece_pairs_two_cubes.obj";
+  const std::string obj =
+      testing::TempDir() + "piece_pairs_two_cubes_" + std::to_string(getpid()) + ".obj";
   {
     std::ofstream f(obj);
     int base = 0;

@@ -10,7 +10,7 @@ using nlohmann::json;
 using namespace pd::test;
 
 TEST(ReportOutputs, DemoReportValidatesAgainstTheSchema) {
-  const std::string out = testing::TempDir() + "schema_demo_report.json";
+  const std::string out = process_dir() + "schema_demo_report.json";
   const CliResult r = pdcheck(kSource + "/testdata/demo/scene.json -q -o " + out);
   ASSERT_EQ(r.code, 1) << r.err;
   bool skip = false;
