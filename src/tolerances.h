@@ -231,10 +231,18 @@ inline constexpr double kThicknessSeconds = 20.0;
 /// on until the bracket's upper end is within this fraction of its lower end,
 /// so the reported depth means something (bounded by the same budget).
 inline constexpr double kThicknessBracket = 0.25;
+/// ... and with at most as many more distance evaluations as deciding took, or
+/// this many when that was fewer: tightening a decided pair's bracket must not
+/// cost more than deciding it (a union of shells' lower bound may never reach
+/// the ratio above).
+inline constexpr long kThicknessBracketMinEvaluations = 5000;
 /// Effort, not accuracy: the most points one surface is sampled at for the
 /// deepest-surface-point bound (geometry/solid_distance.h). Any sample is a
-/// sound lower bound; more only find a deeper one.
-inline constexpr long kSurfaceDepthSamples = 20000;
+/// sound lower bound; more only find a deeper one. The deepest pieces are
+/// followed first, so a part pushed deep is found within a few hundred; a long
+/// seated contact (a pin in its bore) would take tens of thousands to sample
+/// at the spacing and finds nothing there that decides.
+inline constexpr long kSurfaceDepthSamples = 2000;
 /// Local plane models (geometry/solid_distance.h). Effort, not accuracy: at
 /// most this many faces near a cell, hole planes (the nearest supporting planes
 /// kept: each bounds on its own), and LPs per cell (one per choice of each

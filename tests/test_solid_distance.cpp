@@ -180,5 +180,24 @@ TEST(SurfaceDepth, NeverBelowTheDeepestVertexWhateverTheBudget) {
   EXPECT_GT(surface_depth(s_wall.mesh(), s_rod).depth, 0.5);
 }
 
+TEST(SurfaceDepth, ADeepPieceIsFollowedFirst) {
+  // A pin seated in its bore (256 slivers 80 mm long along the contact, none
+  // deeper than the chords' sag: split to the spacing they take ~37,000
+  // samples) and a foil through the plate beside it, every corner of the foil
+  // outside the plate. The deepest pieces are followed first (pieces outside
+  // the plate's box ranked by their distance to it), so the foil's middle is
+  // found within a small budget, whichever part the file lists first.
+  namespace sh = shapes;
+  const Mesh pin = sh::cylinder({0, 0}, 5, -40, 40, 128);
+  const Mesh foil = sh::box(Vec3(12, -30, -30), Vec3(12.05, 30, 30));
+  const SolidDistance plate(sh::plate_with_hole(40, 6, 5, 128));
+  EXPECT_LT(surface_depth(PreparedMesh(pin), plate).depth, 0.01);
+  for (const Mesh& part : {sh::joined({pin, foil}), sh::joined({foil, pin})}) {
+    const SurfaceDepth d = surface_depth(PreparedMesh(part), plate, 300);
+    EXPECT_GT(d.depth, 2.5);  // of at most 3, half the plate's thickness
+    EXPECT_NEAR(d.at.x(), 12.025, 0.025 + 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace pd

@@ -19,7 +19,10 @@ namespace {
 // 7: StopReason gained epa-certificate before certificate (enum values moved).
 // 8: every finding has `at` (pieces and vertex pairs had none); several holes
 //    per plane model.
-constexpr CacheKind kKind{"pdcheck-refinement-9", ".pdr"};
+// 10: the surface depth follows the deepest pieces first, halving them across
+//     their longest edge; a decided thick pair's bracket is tightened with a
+//     bounded effort.
+constexpr CacheKind kKind{"pdcheck-refinement-10", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -54,7 +57,9 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
   for (double x :
        {tol::kConcavityFraction, tol::kDecomposeSeconds,
         static_cast<double>(tol::kThicknessMaxEvaluations), tol::kThicknessSeconds,
-        tol::kThicknessBracket, static_cast<double>(tol::kLocalPlanesMaxFaces),
+        tol::kThicknessBracket, static_cast<double>(tol::kThicknessBracketMinEvaluations),
+        static_cast<double>(tol::kSurfaceDepthSamples),
+        static_cast<double>(tol::kLocalPlanesMaxFaces),
         static_cast<double>(tol::kLocalPlanesMaxPlanes),
         static_cast<double>(tol::kLocalPlanesMaxChoices), tol::kLocalPlanesMaxKappa,
         tol::kLocalPlanesFirstKappa, static_cast<double>(tol::kLocalPlanesMaxWedges),

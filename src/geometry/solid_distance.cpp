@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <queue>
 #include <set>
 #include <stdexcept>
 
@@ -192,44 +193,63 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   for (int f : faces)
     for (const Vec3& p : a.face(f))
       if (box.contains(p) && corners.insert({p.x(), p.y(), p.z()}).second) sample(p);
-  // Faces are split in four until a piece is within a quarter of b's thinnest
-  // extent (a rod through a large wall face is sampled across its section);
-  // pieces outside b's box are dropped, so the work follows the overlap. Each
-  // piece is sampled at its centroid and, when split, at its edge midpoints
-  // (its children's new corners; shared edges' midpoints come twice).
+  // Faces are split until a piece is within a quarter of b's thinnest extent
+  // (a rod through a large wall face is sampled across its section); pieces
+  // outside b's box are dropped, so the work follows the overlap. A piece is
+  // halved across its longest edge: CAD tessellations are mostly long slivers,
+  // which splitting in four would cut ever thinner across their width before
+  // their length came down to the spacing (Rivara's bisection keeps the
+  // pieces' shapes bounded). Each piece is sampled at its centroid and, when
+  // split, at that edge's midpoint (its children's new corner). The budget goes
+  // to the deepest pieces first (by their centroid's value): a part pushed deep
+  // is followed down before a long contact's slivers, which stay near b's
+  // surface, use the budget up.
   const double spacing = std::max(box.sizes().minCoeff() / 4, 1e-300);
   long samples = 0;
-  std::vector<std::pair<std::array<Vec3, 3>, int>> stack;
-  for (int f : faces) stack.push_back({a.face(f), 0});
-  while (!stack.empty() && samples < max_samples) {
-    const auto [t, level] = stack.back();
-    stack.pop_back();
+  struct Piece {
+    std::array<Vec3, 3> t;
+    double value;  ///< sd's lower bound at the centroid (outside b's box: a bound of it)
+    double bound;  ///< of sd's lower bound over the piece
+    int level;
+    bool operator<(const Piece& o) const {
+      return value < o.value || (value == o.value && bound < o.bound);
+    }
+  };
+  std::priority_queue<Piece> open;
+  // A piece's bound: sd's lower bound is 1-Lipschitz (a distance to the
+  // triangles, its sign changing only on them), so no point of the piece
+  // exceeds its value at the centroid by more than the farthest corner's
+  // distance. Unknown (+inf) when the centroid lies outside b's box.
+  const auto add = [&](const std::array<Vec3, 3>& t, int level) {
     Eigen::AlignedBox3d tb(t[0]);
     tb.extend(t[1]).extend(t[2]);
-    if (!tb.intersects(box)) continue;
+    if (!tb.intersects(box)) return;
     const Vec3 centroid = (t[0] + t[1] + t[2]) / 3;
-    const double longest =
-        std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
-    if (box.contains(centroid)) {
-      ++samples;
-      // sd's lower bound is 1-Lipschitz (a distance to the triangles, its sign
-      // changing only on them), so no point of the piece, and no later
-      // sample in it, exceeds it at the centroid by more than the farthest
-      // corner's distance: a piece that cannot beat the best is not split (the
-      // result is the same, its samples are not taken).
-      const double at_centroid = sample(centroid);
-      const double farthest =
-          std::max({(t[0] - centroid).norm(), (t[1] - centroid).norm(), (t[2] - centroid).norm()});
-      if (at_centroid + farthest <= best.depth) continue;
-    }
-    if (longest <= spacing || level >= 16) continue;
-    const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
-    for (const Vec3& m : {m01, m12, m20})
-      if (box.contains(m)) ++samples, sample(m);
-    for (const std::array<Vec3, 3>& q :
-         {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
-          std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
-      stack.push_back({q, level + 1});
+    // Outside b's box, sd is at most minus the distance to it: a bound as
+    // good as a sample's for ordering and pruning, and free.
+    double value = -std::sqrt(box.squaredExteriorDistance(centroid));
+    if (box.contains(centroid)) ++samples, value = sample(centroid);
+    const double farthest =
+        std::max({(t[0] - centroid).norm(), (t[1] - centroid).norm(), (t[2] - centroid).norm()});
+    open.push({t, value, value + farthest, level});
+  };
+  for (int f : faces) add(a.face(f), 0);
+  while (!open.empty() && samples < max_samples) {
+    const Piece piece = open.top();
+    open.pop();
+    // A piece that cannot beat the best is not split.
+    if (piece.bound <= best.depth) continue;
+    const std::array<Vec3, 3>& t = piece.t;
+    // Edge k runs from corner k to corner k + 1.
+    const std::array<double, 3> length{(t[1] - t[0]).norm(), (t[2] - t[1]).norm(),
+                                       (t[0] - t[2]).norm()};
+    const int k = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    if (length[k] <= spacing || piece.level >= 48) continue;
+    const Vec3 &p = t[k], &q = t[(k + 1) % 3], &o = t[(k + 2) % 3];
+    const Vec3 m = 0.5 * (p + q);
+    if (box.contains(m)) ++samples, sample(m);
+    add({p, m, o}, piece.level + 1);
+    add({m, q, o}, piece.level + 1);
   }
   return best;
 }

@@ -259,6 +259,7 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
     ++res.cells;
   }
   double last_ascent = -INFINITY;
+  long decided_at = -1;  // evaluations when the interference was certified
   for (;;) {
     const double top = open.empty() ? s.best : std::max(s.best, open.top().upper);
     const double lower = 2 * std::max(0.0, s.best), upper = 2 * std::max(0.0, std::min(top, cap));
@@ -268,7 +269,15 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
       res.outcome = Outcome::kBelow;
       break;
     }
-    if (lower > threshold && (upper <= lower * (1 + tol::kThicknessBracket) || open.empty())) {
+    if (lower > threshold && decided_at < 0) decided_at = s.evaluations;
+    // Decided thick: the bracket is tightened for the report, with at most as
+    // much work again as deciding took (a union's lower bound may never come
+    // within the ratio: its shared faces hide the distance from inside).
+    const bool tightened =
+        decided_at >= 0 &&
+        (upper <= lower * (1 + tol::kThicknessBracket) || open.empty() ||
+         s.evaluations - decided_at >= std::max(decided_at, tol::kThicknessBracketMinEvaluations));
+    if (tightened) {
       res.outcome = Outcome::kAbove;
       break;
     }
