@@ -219,7 +219,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   // A piece's bound: sd's lower bound is 1-Lipschitz (a distance to the
   // triangles, its sign changing only on them), so no point of the piece
   // exceeds its value at the centroid by more than the farthest corner's
-  // distance. Unknown (+inf) when the centroid lies outside b's box.
+  // distance. Outside b's box, the centroid's value is a bound, not a sample.
   const auto add = [&](const std::array<Vec3, 3>& t, int level) {
     Eigen::AlignedBox3d tb(t[0]);
     tb.extend(t[1]).extend(t[2]);
