@@ -16,10 +16,10 @@
 
 namespace pd::test {
 
-/// A path of this test process's own: other test processes (sanitizer builds,
-/// worktrees) may run these tests at the same time.
+/// A path of this test process's own, with nothing there yet: other test
+/// processes (sanitizer builds, worktrees) may run these tests at the same time.
 inline std::string process_temp(const std::string& name) {
-  const std::string p = testing::TempDir() + "pdcheck" + std::to_string(getpid()) + "_" + name;
+  const std::string p = process_dir() + name;
   std::remove(p.c_str());
   return p;
 }

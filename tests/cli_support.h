@@ -6,12 +6,12 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "run_capture.h"
+#include "scratch_dir.h"
 
 namespace pd::test {
 
@@ -30,18 +30,7 @@ inline std::string read_text(const std::string& path) {
   return ss.str();
 }
 
-/// This test process's own directory under the test temp dir, created on first
-/// use. ctest runs the tests in parallel processes: two of them writing one
-/// shared name made one read the other's half-written file (a scene hash that
-/// differed between the shards of one run).
-inline const std::string& process_dir() {
-  static const std::string dir = [] {
-    const std::string d = testing::TempDir() + "pdcheck_" + std::to_string(getpid()) + "/";
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
+using pd_test::process_dir;
 
 /// `text` written to `name` in this process's own directory; its path.
 inline std::string write_temp(const std::string& name, const std::string& text) {

@@ -13,6 +13,19 @@
 
 namespace pd_test {
 
+/// This test process's own directory under the test temp dir, created on first
+/// use. ctest runs the tests in parallel processes: two of them writing one
+/// shared name made one read the other's half-written file (a scene hash that
+/// differed between the shards of one run).
+inline const std::string& process_dir() {
+  static const std::string dir = [] {
+    const std::string d = testing::TempDir() + "pdcheck_" + std::to_string(getpid()) + "/";
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
 /// An empty directory `group`_`name`_<pid> under the test temp dir.
 inline std::filesystem::path scratch_dir(const std::string& group, const std::string& name) {
   const std::filesystem::path d = std::filesystem::path(testing::TempDir()) /

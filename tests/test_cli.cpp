@@ -208,7 +208,7 @@ TEST(Cli, PartListOnStdinWithJsonLines) {
 }
 
 TEST(Cli, OutputFileIsWrittenWhole) {
-  const std::string out = pd::test::process_dir() + "report.json";
+  const std::string out = pd_test::process_dir() + "report.json";
   std::remove(out.c_str());
   const CliRun r = pdcheck(kDemo + " -q -o " + out);
   EXPECT_EQ(r.code, 1);
@@ -253,7 +253,7 @@ TEST(Cli, EmptyInputIsAnError) {
   EXPECT_EQ(pdcheck(one + " -q").code, 3);
 
   // The merged run of shards whose every part failed is judged as the run.
-  const std::string shard = pd::test::process_dir() + "all_failed_shard.json";
+  const std::string shard = pd_test::process_dir() + "all_failed_shard.json";
   ASSERT_EQ(pdcheck(failed + " -q --shard 1/1 -o " + shard).code, 0);
   const CliRun m = pdcheck("merge " + shard + " -q");
   EXPECT_EQ(m.code, 2) << m.err;

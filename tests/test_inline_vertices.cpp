@@ -165,14 +165,19 @@ TEST(InlineVertices, PlacedInSceneUnitsThenTransformed) {
 }
 
 TEST(InlineVertices, TheDigestIsTheListsBits) {
-  pd::Points p(3, 2);
-  p << 1, 0.1, 0, 2, -0.0, 3;
-  pd::Points same = p;
+  // Each list made afresh (copies of one list make gcc -O1 warn, wrongly,
+  // that Eigen's copy reads uninitialised memory).
+  const auto list = [] {
+    pd::Points p(3, 2);
+    p << 1, 0.1, 0, 2, -0.0, 3;
+    return p;
+  };
+  const pd::Points p = list(), same = list();
   EXPECT_EQ(pd::vertex_digest(p), pd::vertex_digest(same));
-  pd::Points signed_zero = p;
+  pd::Points signed_zero = list();
   signed_zero(2, 0) = 0.0;  // +0 for -0: equal numbers, other bits
   EXPECT_NE(pd::vertex_digest(p), pd::vertex_digest(signed_zero));
-  pd::Points last_bit = p;
+  pd::Points last_bit = list();
   last_bit(0, 1) = std::nextafter(0.1, 1.0);
   EXPECT_NE(pd::vertex_digest(p), pd::vertex_digest(last_bit));
 }

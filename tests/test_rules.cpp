@@ -119,7 +119,7 @@ json truth() {
   return json::parse(read_text(kSource + "/testdata/examples/rules-assembly.expected.json"));
 }
 TEST(RulesExample, ReportMatchesTheGeometry) {
-  const std::string out = pd::test::process_dir() + "rules-example.json";
+  const std::string out = pd_test::process_dir() + "rules-example.json";
   const auto r = pdcheck(kExample + " -o " + out + " --jobs 1 --quiet");
   EXPECT_EQ(r.code, 1) << r.err;
   const json report = json::parse(read_text(out));
@@ -144,7 +144,7 @@ TEST(RulesExample, ReportMatchesTheGeometry) {
 }
 
 TEST(RulesExample, ShardsAndMergeCarryTheRules) {
-  const std::string dir = pd::test::process_dir();
+  const std::string dir = pd_test::process_dir();
   for (int k = 1; k <= 3; ++k) {
     const auto r = pdcheck(kExample + " --shard " + std::to_string(k) + "/3 -o " + dir +
                            "rules-shard-" + std::to_string(k) + ".json --jobs 1 --quiet");
@@ -172,7 +172,7 @@ TEST(RulesExample, RulesFileEqualsTheSceneKey) {
   rules["$schema"] = "../../docs/rules.schema.json";
   scene.erase("rules");
   scene.erase("$schema");
-  const std::string dir = pd::test::process_dir();
+  const std::string dir = pd_test::process_dir();
   const std::string rules_file = write_temp("rules-only.json", rules.dump(2));
   const std::string scene_file = write_temp("rules-scene.json", scene.dump());
   const auto r = pdcheck(scene_file + " --rules " + rules_file + " -o " + dir +
@@ -202,7 +202,7 @@ TEST(RulesExample, RulesFileEqualsTheSceneKey) {
 }
 
 TEST(RulesExample, ReuseAndBaselineSayWhenTheRulesChanged) {
-  const std::string dir = pd::test::process_dir();
+  const std::string dir = pd_test::process_dir();
   const std::string first = dir + "rules-first.json";
   ASSERT_EQ(pdcheck(kExample + " -o " + first + " --jobs 1 --quiet").code, 1);
   // The same rules: every pair reused, nothing said about rules.

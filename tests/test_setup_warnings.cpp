@@ -28,7 +28,7 @@ json cube(const std::string& id, double x, double s, const json& transform = nul
 // An ASCII STL cube of side `s` at (x0, x0, x0): its coordinates are stored as
 // float32 by assimp, whatever the file's digits.
 std::string stl_cube(const std::string& name, double x0, double s) {
-  const std::string path = pd::test::process_dir() + name;
+  const std::string path = pd_test::process_dir() + name;
   std::ofstream f(path);
   f.precision(17);
   auto v = [&](int k) {

@@ -244,6 +244,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
     const std::array<double, 3> length{(t[1] - t[0]).norm(), (t[2] - t[1]).norm(),
                                        (t[0] - t[2]).norm()};
     const int k = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    // 48 halvings (2^48 pieces of a face) only stop a degenerate spacing.
     if (length[k] <= spacing || piece.level >= 48) continue;
     const Vec3 &p = t[k], &q = t[(k + 1) % 3], &o = t[(k + 2) % 3];
     const Vec3 m = 0.5 * (p + q);
