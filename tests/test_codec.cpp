@@ -26,6 +26,7 @@
 #include "results/codec.h"
 #include "results/pair_fields.h"
 #include "results/part_fields.h"
+#include "scratch_dir.h"
 
 namespace {
 
@@ -145,15 +146,6 @@ PairResult filled(Status status) {
   return r;
 }
 
-fs::path fresh_dir(const char* name) {
-  const fs::path d = fs::temp_directory_path() /
-                     (std::string("pdcheck-codec-") + name + "-" +
-                      std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 // A run of the two parts A and B whose one pair is `r`, as a shard 1/1 (so
 // that merge reads it) with content hashes (so that --reuse does).
 pd::RunResult run_of(const PairResult& r) {
@@ -193,7 +185,7 @@ std::vector<std::pair<std::string, PairResult>> every_path(const PairResult& r) 
   const pd::Merged merged = pd::merge_shard_reports({{"shard.json", doc}});
   out.emplace_back("report, merge", merged.run.pairs.at(0));
 
-  const fs::path dir = fresh_dir("reuse");
+  const fs::path dir = pd_test::scratch_dir("codec", "reuse");
   pd::RunResult again = run_of(merged.run.pairs.at(0));
   std::ofstream(dir / "old.json") << pd::report_json(ctx, again).dump(2);
   const pd::PriorResults prior = pd::load_prior_report((dir / "old.json").string());
