@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/triangle_tree.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -50,7 +51,8 @@ struct PreparedMesh::Impl {
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
   CGAL::Bbox_3 box;
-  Tree tree;              // over faces
+  Tree tree;              // over faces: box listings and the ray tests
+  TriangleTree search;    // over faces: nearest points and box listings (faster than the tree's)
   bool parity = false;    // closed and has faces: points can be located
   bool oriented = false;  // closed, each edge as often u→v as v→u, outward (volume > 0)
 
@@ -66,7 +68,8 @@ struct PreparedMesh::Impl {
     Point3 best = p;
     double best_d2 = INFINITY;
     if (!faces.empty()) {
-      best = tree.closest_point(p);
+      const Vec3 q = search.nearest(Vec3(p.x(), p.y(), p.z())).point;
+      best = Point3(q.x(), q.y(), q.z());
       best_d2 = CGAL::squared_distance(p, best);
     }
     for (const Segment3& s : segments) {
@@ -170,7 +173,11 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   if (!m.faces.empty()) {
     m.tree.insert(m.faces.cbegin(), m.faces.cend());
     m.tree.build();
-    m.tree.accelerate_distance_queries();  // built now, not lazily under concurrent queries
+    std::vector<std::array<Vec3, 3>> corners(m.faces.size());
+    for (size_t f = 0; f < m.faces.size(); ++f)
+      for (int k = 0; k < 3; ++k)
+        corners[f][k] = Vec3(m.faces[f][k].x(), m.faces[f][k].y(), m.faces[f][k].z());
+    m.search = TriangleTree(corners);
   }
   m.parity = m.closed && !m.faces.empty();
 }
@@ -243,13 +250,11 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
           Segment3(Point3(hint.inside_point.x(), hint.inside_point.y(), hint.inside_point.z()), p)))
     return inside_here();
   hint.has_inside = false;
-  const auto [q, face] = hint.face >= 0
-                             ? m.tree.closest_point_and_primitive(
-                                   p, {Point3(hint.point.x(), hint.point.y(), hint.point.z()),
-                                       m.faces.cbegin() + hint.face})
-                             : m.tree.closest_point_and_primitive(p);
-  hint.point = Vec3(q.x(), q.y(), q.z());
-  hint.face = static_cast<long>(face - m.faces.cbegin());
+  const TriangleTree::Nearest n = m.search.nearest(v, static_cast<int>(hint.face));
+  const Point3 q(n.point.x(), n.point.y(), n.point.z());
+  const TriIter face = m.faces.cbegin() + n.face;
+  hint.point = n.point;
+  hint.face = n.face;
   const double d2 = CGAL::squared_distance(p, q);
   const int side = nearest_face_side(m, v, q, face, d2);
   if (side != 0) return side > 0 ? std::sqrt(d2) : inside_here();
@@ -280,8 +285,9 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   int side = 0;
   Vec3 normal = Vec3::Zero();
   if (!m.faces.empty()) {
-    const auto [qf, face] = m.tree.closest_point_and_primitive(p);
-    q = qf;
+    const TriangleTree::Nearest found = m.search.nearest(v);
+    const TriIter face = m.faces.cbegin() + found.face;
+    q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);
     if (m.parity) side = nearest_face_side(m, v, q, face, d2);
     const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
@@ -303,32 +309,8 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   return side < 0 ? d : -d;
 }
 
-namespace {
-
-// The tree's traversal listing the faces whose boxes meet a box: box overlaps
-// only (the exact triangle-box test of all_intersected_primitives is most of a
-// query's cost on CAD meshes' long thin triangles, and every caller filters
-// the faces itself).
-struct BoxOverlapListing {
-  TriIter first;
-  std::vector<int>* out;
-  bool go_further() const { return true; }
-  void intersection(const CGAL::Bbox_3& query, const Primitive& p) {
-    if (CGAL::do_overlap(query, p.datum().bbox())) out->push_back(static_cast<int>(p.id() - first));
-  }
-  template <class Node>
-  bool do_intersect(const CGAL::Bbox_3& query, const Node& node) const {
-    return CGAL::do_overlap(query, node.bbox());
-  }
-};
-
-}  // namespace
-
 void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const {
-  const Impl& m = *impl_;
-  if (m.faces.empty()) return;
-  BoxOverlapListing listing{m.faces.cbegin(), &out};
-  m.tree.traversal(CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()), listing);
+  impl_->search.in_box(lo, hi, out);
 }
 
 std::array<Vec3, 3> PreparedMesh::face(int i) const {

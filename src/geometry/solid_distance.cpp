@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "geometry/convexity.h"
+#include "geometry/triangle_tree.h"
 #include "geometry/union_find.h"
 #include "tolerances.h"
 
@@ -57,29 +58,6 @@ std::vector<Mesh> shells_of(const Mesh& mesh) {
     shells.push_back(std::move(s));
   }
   return shells;
-}
-
-// Distance from p to the triangle (a, b, c) (Ericson, Real-Time Collision
-// Detection, 5.1.5: the closest point by Voronoi region).
-double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return ap.norm();
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return bp.norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return cp.norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
-  const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
 }
 
 // The part of triangle t inside the box [lo, hi] (Sutherland–Hodgman against
@@ -466,7 +444,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   size_t last = 0;
   for (int f : faces) {
     const std::array<Vec3, 3> t = mesh.face(f);
-    if (point_triangle_distance(c, t[0], t[1], t[2]) > reach) continue;
+    if ((closest_on_triangle(c, t[0], t[1], t[2]) - c).norm() > reach) continue;
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return std::nullopt;
     FacePart part{clip_to_box(t, box_lo, box_hi), n, Vec3::Zero(), 0.0};

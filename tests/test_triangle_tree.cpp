@@ -1,0 +1,114 @@
+// The triangle tree against a scan of every triangle: nearest points on random
+// triangle soups (slivers, far from the origin) and a CAD-like cylinder, with
+// and without a starting face, and the triangles whose boxes meet a box.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "corpus/cad_shapes.h"
+#include "geometry/triangle_tree.h"
+
+namespace pd {
+namespace {
+
+using Triangles3 = std::vector<std::array<Vec3, 3>>;
+
+TriangleTree::Nearest scan(const Triangles3& t, const Vec3& p) {
+  TriangleTree::Nearest best;
+  for (size_t i = 0; i < t.size(); ++i) {
+    const Vec3 q = closest_on_triangle(p, t[i][0], t[i][1], t[i][2]);
+    if ((q - p).squaredNorm() < best.squared_distance)
+      best = {q, static_cast<int>(i), (q - p).squaredNorm()};
+  }
+  return best;
+}
+
+// The tree's answer is as near as the scan's (its face may differ on a tie)
+// and is the nearest point of the face it names.
+void expect_nearest(const TriangleTree& tree, const Triangles3& t, const Vec3& p, int start) {
+  const TriangleTree::Nearest want = scan(t, p), got = tree.nearest(p, start);
+  ASSERT_GE(got.face, 0);
+  const double scale = 1 + p.cwiseAbs().maxCoeff();
+  EXPECT_NEAR(std::sqrt(got.squared_distance), std::sqrt(want.squared_distance), 1e-12 * scale);
+  const auto& f = t[got.face];
+  EXPECT_LE((got.point - closest_on_triangle(p, f[0], f[1], f[2])).norm(), 1e-12 * scale);
+}
+
+TEST(TriangleTree, EqualsAScanOfEveryTriangle) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const double offset : {0.0, 5e4}) {  // far from the origin, as CAD exports are
+    const Vec3 o = Vec3::Constant(offset);
+    Triangles3 t;
+    for (int i = 0; i < 500; ++i) {
+      const Vec3 a = o + 10 * Vec3(u(rng), u(rng), u(rng));
+      const Vec3 along = Vec3(u(rng), u(rng), u(rng)) * (i % 3 == 0 ? 8.0 : 1.0);
+      const Vec3 across = Vec3(u(rng), u(rng), u(rng)) * (i % 3 == 0 ? 1e-3 : 1.0);  // slivers
+      t.push_back({a, a + along, a + along * (i % 7 == 0 ? 0.5 : 0.3) + across});
+    }
+    const TriangleTree tree(t);
+    for (int k = 0; k < 2000; ++k) {
+      const Vec3 p = o + 14 * Vec3(u(rng), u(rng), u(rng));
+      expect_nearest(tree, t, p, k % 2 ? static_cast<int>(rng() % t.size()) : -1);
+    }
+  }
+}
+
+TEST(TriangleTree, FindsTheFacetOfACylinderNearAPointOnIt) {
+  const Mesh m = shapes::cylinder({0, 0}, 3.0, 0.0, 40.0, 96);
+  Triangles3 t;
+  for (long f = 0; f < m.triangles.cols(); ++f)
+    t.push_back({m.vertices.col(m.triangles(0, f)), m.vertices.col(m.triangles(1, f)),
+                 m.vertices.col(m.triangles(2, f))});
+  const TriangleTree tree(t);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), z(-1, 41), r(2.9, 3.1);
+  for (int k = 0; k < 2000; ++k) {
+    const double a = angle(rng), rr = r(rng);
+    expect_nearest(tree, t, Vec3(rr * std::cos(a), rr * std::sin(a), z(rng)), -1);
+  }
+}
+
+TEST(TriangleTree, ListsEveryTriangleWhoseBoxMeetsABoxInOrder) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Triangles3 t;
+  for (int i = 0; i < 800; ++i) {
+    const Vec3 a = 10 * Vec3(u(rng), u(rng), u(rng));
+    t.push_back({a, a + 3 * Vec3(u(rng), u(rng), u(rng)), a + Vec3(u(rng), u(rng), u(rng))});
+  }
+  t.push_back({Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(3, 1, 0)});  // touches the box below at x = 2
+  const TriangleTree tree(t);
+  for (int k = 0; k < 300; ++k) {
+    Vec3 lo = 10 * Vec3(u(rng), u(rng), u(rng)),
+         hi = lo + 4 * Vec3(u(rng), u(rng), u(rng)).cwiseAbs();
+    if (k == 0) lo = Vec3(0, 0, -1), hi = Vec3(2, 1, 1);
+    std::vector<int> want, got{-7};  // appended after what is there
+    for (size_t i = 0; i < t.size(); ++i) {
+      const Vec3 a = t[i][0].cwiseMin(t[i][1]).cwiseMin(t[i][2]),
+                 b = t[i][0].cwiseMax(t[i][1]).cwiseMax(t[i][2]);
+      if ((a.array() <= hi.array()).all() && (lo.array() <= b.array()).all())
+        want.push_back(static_cast<int>(i));
+    }
+    want.insert(want.begin(), -7);
+    tree.in_box(lo, hi, got);
+    EXPECT_EQ(got, want) << "box " << k;
+  }
+}
+
+TEST(TriangleTree, NoTrianglesNoNearest) {
+  const TriangleTree tree{Triangles3{}};
+  EXPECT_TRUE(tree.empty());
+  EXPECT_EQ(tree.nearest(Vec3::Zero()).face, -1);
+}
+
+TEST(TriangleTree, ACornerRegionGivesTheCorner) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  EXPECT_EQ(closest_on_triangle(Vec3(-1, -1, 2), a, b, c), a);
+  EXPECT_EQ(closest_on_triangle(Vec3(3, -1, 0), a, b, c), b);
+  EXPECT_TRUE(closest_on_triangle(Vec3(0.2, 0.2, 5), a, b, c).isApprox(Vec3(0.2, 0.2, 0)));
+  EXPECT_TRUE(closest_on_triangle(Vec3(1, 1, 0), a, b, c).isApprox(Vec3(0.5, 0.5, 0)));
+}
+
+}  // namespace
+}  // namespace pd
