@@ -1,4 +1,5 @@
-// max_min_affine against the exact LP optimum found by enumerating vertices.
+// max_min_affine and the cheaper min_max_affine against the exact LP optimum
+// found by enumerating vertices.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -25,6 +26,14 @@ TEST(MaxMinAffine, EqualsTheExactOptimumOnRandomProblems) {
     const double bound = max_min_affine(f, lo, hi);
     EXPECT_GE(bound, exact - 1e-12) << "trial " << trial;                         // sound
     EXPECT_LE(bound, exact + 1e-9 * (1 + std::abs(exact))) << "trial " << trial;  // tight
+    // The cheap bound is one too, and the LP never exceeds it (the thickness
+    // skips the LP of a choice whose cheap bound is below what it has).
+    const double cheap = min_max_affine(f, lo, hi);
+    EXPECT_GE(cheap, exact - 1e-12) << "trial " << trial;
+    EXPECT_LE(bound, cheap + 1e-9 * (1 + std::abs(cheap))) << "trial " << trial;
+    if (m == 1) {
+      EXPECT_NEAR(cheap, exact, 1e-12 * (1 + std::abs(exact))) << "trial " << trial;
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 // and without a starting face, and the triangles whose boxes meet a box.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "corpus/cad_shapes.h"
@@ -94,6 +95,18 @@ TEST(TriangleTree, ListsEveryTriangleWhoseBoxMeetsABoxInOrder) {
     tree.in_box(lo, hi, got);
     EXPECT_EQ(got, want) << "box " << k;
   }
+}
+
+TEST(TriangleTree, StopsListingPastTheLimit) {
+  Triangles3 t;
+  for (int i = 0; i < 100; ++i) t.push_back({Vec3(i, 0, 0), Vec3(i + 1, 0, 0), Vec3(i, 1, 0)});
+  const TriangleTree tree(t);
+  std::vector<int> all, few;
+  tree.in_box(Vec3(-1, -1, -1), Vec3(200, 2, 1), all, 100);
+  EXPECT_EQ(all.size(), 100u);  // exactly the limit: every one, in order
+  EXPECT_TRUE(std::is_sorted(all.begin(), all.end()));
+  tree.in_box(Vec3(-1, -1, -1), Vec3(200, 2, 1), few, 10);
+  EXPECT_EQ(few.size(), 11u);  // past it: one more than the limit says so
 }
 
 TEST(TriangleTree, NoTrianglesNoNearest) {

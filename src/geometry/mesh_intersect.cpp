@@ -309,8 +309,9 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   return side < 0 ? d : -d;
 }
 
-void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const {
-  impl_->search.in_box(lo, hi, out);
+void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
+                                size_t limit) const {
+  impl_->search.in_box(lo, hi, out, limit);
 }
 
 std::array<Vec3, 3> PreparedMesh::face(int i) const {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -42,8 +43,10 @@ class PreparedMesh {
   /// the nearest is a degenerate triangle) in *face_normal. On open meshes it
   /// is never positive.
   double signed_distance(const Vec3& p, Vec3* nearest = nullptr, Vec3* face_normal = nullptr) const;
-  /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to `out`.
-  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
+  /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to
+  /// `out` in increasing order; past `limit` of them, limit + 1 in no order.
+  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
+                    size_t limit = std::numeric_limits<size_t>::max()) const;
   /// Corners of face i (0 <= i < faces()), in the mesh's order.
   std::array<Vec3, 3> face(int i) const;
   int faces() const;

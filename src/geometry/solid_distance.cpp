@@ -608,7 +608,7 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
   // hole's within r + kappa·(σ_c + r + slack) (checked once kappa is known).
   const double reach = reach_kappa * (d + r + cap) + r;
   std::vector<int> near;
-  mesh.faces_in_box(c.array() - reach, c.array() + reach, near);
+  mesh.faces_in_box(c.array() - reach, c.array() + reach, near, tol::kLocalPlanesMaxFaces);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
   auto groups = groups_near(mesh, near, c, reach, cap);
   if (!groups) return out;

@@ -56,7 +56,8 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
   }
 }
 
-void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const {
+void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
+                          size_t limit) const {
   if (triangles_.empty()) return;
   const auto meets = [&](const Vec3& a, const Vec3& b) {
     return (a.array() <= hi.array()).all() && (lo.array() <= b.array()).all();
@@ -71,7 +72,10 @@ void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out)
     if (!meets(n.lo, n.hi)) continue;
     if (n.count > 0) {
       for (int i = n.first; i < n.first + n.count; ++i)
-        if (meets(boxes_[i][0], boxes_[i][1])) out.push_back(id_[i]);
+        if (meets(boxes_[i][0], boxes_[i][1])) {
+          out.push_back(id_[i]);
+          if (out.size() - before > limit) return;
+        }
       continue;
     }
     stack[size++] = n.first;

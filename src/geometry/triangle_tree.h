@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "geometry/types.h"
@@ -34,8 +35,11 @@ class TriangleTree {
   /// first (a nearby query's answer): the same result, found sooner.
   Nearest nearest(const Vec3& p, int start = -1) const;
   /// The triangles whose boxes meet the box [lo, hi] (closed), appended to
-  /// `out` in increasing index order.
-  void in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
+  /// `out` in increasing index order. Past `limit` of them the search stops
+  /// with limit + 1 appended, in no order (a caller that gives up beyond a
+  /// count need not list them all).
+  void in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
+              size_t limit = std::numeric_limits<size_t>::max()) const;
   bool empty() const { return triangles_.empty(); }
 
  private:

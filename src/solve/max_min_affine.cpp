@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace pd {
 
@@ -24,6 +25,14 @@ double dual_value(const std::vector<Affine>& f, const Eigen::VectorXd& lambda, c
 
 }  // namespace
 
+double min_max_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& hi) {
+  const Vec3 centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  double least = std::numeric_limits<double>::infinity();
+  for (const Affine& a : f)
+    least = std::min(least, a.value + a.slope.dot(centre) + half.dot(a.slope.cwiseAbs()));
+  return least;
+}
+
 double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& hi) {
   const int m = static_cast<int>(f.size());
   if (m == 0) return std::numeric_limits<double>::infinity();
@@ -35,43 +44,52 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
   double shift = 0.0;
   for (const Affine& a : f) shift = std::max(shift, -(a.value + a.slope.dot(lo)));
   const int rows = m + 3, vars = 4, cols = vars + rows + 1;  // + slacks + rhs
-  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(rows + 1, cols);
+  // Row-major and flat: each pivot is row operations over contiguous memory
+  // (this solve runs once per cell and model choice, the thickness's inner loop).
+  std::vector<double> T(static_cast<size_t>(rows + 1) * cols, 0.0);
+  const auto at = [&](int i, int j) -> double& { return T[static_cast<size_t>(i) * cols + j]; };
   std::vector<int> basis(rows);
   for (int k = 0; k < m; ++k) {
-    for (int d = 0; d < 3; ++d) T(k, d) = -f[k].slope[d];
-    T(k, 3) = 1.0;
-    T(k, vars + k) = 1.0;
-    T(k, cols - 1) = f[k].value + f[k].slope.dot(lo) + shift;
+    for (int d = 0; d < 3; ++d) at(k, d) = -f[k].slope[d];
+    at(k, 3) = 1.0;
+    at(k, vars + k) = 1.0;
+    at(k, cols - 1) = f[k].value + f[k].slope.dot(lo) + shift;
     basis[k] = vars + k;
   }
   for (int d = 0; d < 3; ++d) {
-    T(m + d, d) = 1.0;
-    T(m + d, vars + m + d) = 1.0;
-    T(m + d, cols - 1) = w[d];
+    at(m + d, d) = 1.0;
+    at(m + d, vars + m + d) = 1.0;
+    at(m + d, cols - 1) = w[d];
     basis[m + d] = vars + m + d;
   }
-  T(rows, 3) = -1.0;  // objective row: maximise τ
+  at(rows, 3) = -1.0;  // objective row: maximise τ
   for (int iter = 0; iter < 50 * (rows + vars); ++iter) {
     int enter = -1;  // Bland's rule: the first improving column, so no cycling
     for (int j = 0; j < cols - 1 && enter < 0; ++j)
-      if (T(rows, j) < -1e-12) enter = j;
+      if (at(rows, j) < -1e-12) enter = j;
     if (enter < 0) break;
     int leave = -1;
     double best = std::numeric_limits<double>::infinity();
     for (int i = 0; i < rows; ++i)
-      if (T(i, enter) > 1e-12) {
-        const double ratio = T(i, cols - 1) / T(i, enter);
+      if (at(i, enter) > 1e-12) {
+        const double ratio = at(i, cols - 1) / at(i, enter);
         if (ratio < best || (ratio == best && basis[i] < basis[leave])) best = ratio, leave = i;
       }
     if (leave < 0) break;  // unbounded: cannot happen (the box bounds y, each row τ)
-    T.row(leave) /= T(leave, enter);
-    for (int i = 0; i <= rows; ++i)
-      if (i != leave && T(i, enter) != 0.0) T.row(i) -= T(i, enter) * T.row(leave);
+    double* pivot = &at(leave, 0);
+    const double p = pivot[enter];
+    for (int j = 0; j < cols; ++j) pivot[j] /= p;
+    for (int i = 0; i <= rows; ++i) {
+      double* row = &at(i, 0);
+      const double factor = row[enter];
+      if (i == leave || factor == 0.0) continue;
+      for (int j = 0; j < cols; ++j) row[j] -= factor * pivot[j];
+    }
     basis[leave] = enter;
   }
   // The duals of the m rows are the objective row's entries under their slacks.
   Eigen::VectorXd lambda(m);
-  for (int k = 0; k < m; ++k) lambda[k] = std::max(0.0, T(rows, vars + k));
+  for (int k = 0; k < m; ++k) lambda[k] = std::max(0.0, at(rows, vars + k));
   const double sum = lambda.sum();
   if (!(sum > 0) || !std::isfinite(sum))
     lambda.setConstant(1.0 / m);

@@ -22,4 +22,9 @@ struct Affine {
 /// it too low. +inf when `f` is empty.
 double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& hi);
 
+/// A cheaper bound of the same: the smallest of the functions' own maxima over
+/// the box (the dual point that puts all weight on one function). Never below
+/// max_min_affine's value but for rounding; +inf when `f` is empty.
+double min_max_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& hi);
+
 }  // namespace pd

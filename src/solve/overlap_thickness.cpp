@@ -167,6 +167,9 @@ class Search {
         f = common;
         f.insert(f.end(), x.begin(), x.end());
         f.insert(f.end(), y.begin(), y.end());
+        // A choice whose cheap bound is no higher than the largest so far
+        // cannot raise it: its small LP is not solved.
+        if (min_max_affine(f, cell.lo, cell.hi) <= model) continue;
         model = std::max(model, max_min_affine(f, cell.lo, cell.hi));
         if (!(model < upper)) return upper;
       }
