@@ -51,7 +51,7 @@ struct PreparedMesh::Impl {
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
   CGAL::Bbox_3 box;
-  Tree tree;              // over faces: box listings and the ray tests
+  Tree tree;              // over faces: the ray tests
   TriangleTree search;    // over faces: nearest points and box listings (faster than the tree's)
   bool parity = false;    // closed and has faces: points can be located
   bool oriented = false;  // closed, each edge as often u→v as v→u, outward (volume > 0)

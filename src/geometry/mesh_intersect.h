@@ -65,8 +65,8 @@ class PreparedMesh {
   /// at edges and vertices, or when orientation is unknown.
   double outside_distance(const Vec3& p) const;
 
-  /// Where the previous of a run of nearby queries ended: the next one starts
-  /// its search there instead of at the tree's kd-tree hint (the same answer,
+  /// Where the previous of a run of nearby queries ended: the next one tries
+  /// that face first, so its search starts with a near bound (the same answer,
   /// found faster when the queries are close, as the samples of a lattice are).
   /// Also the last query point found strictly inside: a query joined to it by
   /// a segment that meets no face is inside too (parity cannot change), which
