@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <queue>
 #include <vector>
 
+#include "geometry/face_axes.h"
 #include "solve/max_min_affine.h"
 
 namespace pd {
@@ -14,6 +16,42 @@ namespace pd {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The boxes of the search live in a frame of the pair's own: x = origin + R·y.
+// R is the smaller part's face axes (geometry/face_axes.h), so a seated face
+// or a pin's facets run along the boxes' sides, and the origin is the middle of
+// where the parts' boxes meet, so coordinates stay small.
+struct PairFrame {
+  Vec3 origin = Vec3::Zero();
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Vec3 world(const Vec3& y) const { return origin + R * y; }
+  Vec3 local(const Vec3& x) const { return R.transpose() * (x - origin); }
+  // A plane in these coordinates: s = (offset − n·origin) − (Rᵀn)·y. The
+  // rounding of the change is added to `slack`, so the bound still holds.
+  FacePlane local(const FacePlane& q, double& rounding) const {
+    rounding = std::max(rounding, 16 * std::numeric_limits<double>::epsilon() *
+                                      (std::abs(q.offset) + origin.cwiseAbs().sum()));
+    return {R.transpose() * q.normal, q.offset - q.normal.dot(origin)};
+  }
+  LocalPlanes local(const LocalPlanes& m) const {
+    LocalPlanes out = m;
+    double rounding = 0.0;
+    for (FacePlane& q : out.supporting) q = local(q, rounding);
+    out.slack += rounding;
+    for (LocalPlanes::Hole& h : out.holes) {
+      rounding = 0.0;
+      for (FacePlane& q : h.planes) q = local(q, rounding);
+      h.slack += rounding;
+    }
+    for (LocalPlanes::Wedge& w : out.wedges) {
+      rounding = 0.0;
+      w.p = local(w.p, rounding);
+      w.q = local(w.q, rounding);
+      w.slack += rounding;
+    }
+    return out;
+  }
+};
 
 // The two parts' plane models of a box. They hold for every point of that box
 // in the solid, so also over each box inside it: a cell's children try their
@@ -89,15 +127,20 @@ std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& 
 
 class Search {
  public:
-  Search(const SolidDistance& a, const SolidDistance& b, double threshold)
-      : a_(a),
+  Search(const SolidDistance& a, const SolidDistance& b, double threshold, const PairFrame& frame)
+      : frame_(frame),
+        a_(a),
         b_(b),
         min_step_(std::max({1e-4 * threshold, 4 * a.noise(), 4 * b.noise()})),
         settled_(0.5 * threshold) {}
 
+  // φ's bounds at frame point x (their nearest points in the frame too).
   Probe probe(const Vec3& x) {
     evaluations += 2;
-    Probe p{a_.at(x), b_.at(x)};
+    const Vec3 w = frame_.world(x);
+    Probe p{a_.at(w), b_.at(w)};
+    p.a.nearest = frame_.local(p.a.nearest);
+    p.b.nearest = frame_.local(p.b.nearest);
     if (p.lower() > best) {
       best = p.lower();
       at = x;
@@ -128,12 +171,13 @@ class Search {
     // or below half the threshold, where it is never split): the other's is
     // then not built.
     auto own = std::make_shared<Models>();
-    own->a = a_.local_planes(c, std::abs(p.a.lower), r, kWiden);
+    const Vec3 w = frame_.world(c);  // a ball's models do not depend on the frame's axes
+    own->a = frame_.local(a_.local_planes(w, std::abs(p.a.lower), r, kWiden));
     if (!own->a.empty()) {
       upper = planes_bound(own->a, LocalPlanes{}, common, cell, upper);
       if (upper <= enough) return upper;
     }
-    own->b = b_.local_planes(c, std::abs(p.b.lower), r, kWiden);
+    own->b = frame_.local(b_.local_planes(w, std::abs(p.b.lower), r, kWiden));
     if (!own->b.empty()) upper = planes_bound(own->a, own->b, common, cell, upper);
     if (!own->a.empty() || !own->b.empty()) cell.models = std::move(own);
     return upper;
@@ -208,6 +252,7 @@ class Search {
     return d.lower > 0 ? v : Vec3(-v);
   }
 
+  PairFrame frame_;
   const SolidDistance &a_, &b_;
   double min_step_;
   double settled_;  ///< a box whose φ bound is below this never decides the pair
@@ -249,10 +294,28 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
     res.outcome = Outcome::kBelow;
     return res;
   }
-  region.min().array() -= pad;
-  region.max().array() += pad;
+  // The search region in the pair's frame: where the smaller part's box (its
+  // vertices there) meets the other's box (its corners there).
+  PairFrame frame;
+  frame.origin = region.center();
+  const SolidDistance& small = a.box().diagonal().norm() <= b.box().diagonal().norm() ? a : b;
+  frame.R = face_axes(small.mesh());
+  {
+    Eigen::AlignedBox3d own, meet;
+    for (int f = 0; f < small.mesh().faces(); ++f)
+      for (const Vec3& v : small.mesh().face(f)) own.extend(frame.local(v));
+    for (int k = 0; k < 8; ++k)
+      meet.extend(frame.local(region.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k))));
+    region = own.intersection(meet);
+    if (region.isEmpty()) {
+      res.outcome = Outcome::kBelow;
+      return res;
+    }
+    region.min().array() -= pad;
+    region.max().array() += pad;
+  }
   const auto deadline = Clock::now() + std::chrono::duration<double>(limits.seconds);
-  Search s(a, b, threshold);
+  Search s(a, b, threshold, frame);
   std::priority_queue<Cell, std::vector<Cell>, ByUpper> open;
   {
     Cell root{region.min(), region.max(), cap, 0, nullptr};
@@ -322,8 +385,8 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
   }
   res.evaluations = s.evaluations;
   if (s.best > 0) {
-    res.at = s.at;
-    const Vec3 d = (s.near_a - s.at).normalized();
+    res.at = frame.world(s.at);
+    const Vec3 d = frame.R * (s.near_a - s.at).normalized();
     if (d.allFinite()) res.direction = d;
   }
   return res;

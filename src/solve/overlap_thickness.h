@@ -8,7 +8,9 @@
 // penetration depth that does not depend on any decomposition. A tessellation
 // sliver is thin (T small), a genuine clash thick.
 //
-// Branch and bound over boxes of the region where both parts' boxes meet: a
+// Branch and bound over boxes of the region where both parts' boxes meet, in
+// the frame of the smaller part's largest flat areas (geometry/face_axes.h), so
+// that a seated face or a pin's facets run along the boxes' sides: a
 // box's φ is at most φ(centre) + its half-diagonal, and at most what the planes
 // of both surfaces near it allow (geometry/solid_distance.h, solve/
 // max_min_affine.h), which keeps large thin contacts cheap; the best φ found
