@@ -22,7 +22,9 @@ namespace {
 // 10: the surface depth follows the deepest pieces first, halving them across
 //     their longest edge; a decided thick pair's bracket is tightened with a
 //     bounded effort.
-constexpr CacheKind kKind{"pdcheck-refinement-10", ".pdr"};
+// 11: the thickness searches in the frame of the smaller part's flat areas
+//     (the same certificates, other brackets).
+constexpr CacheKind kKind{"pdcheck-refinement-11", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
