@@ -5,25 +5,55 @@
 
 namespace pd {
 
-Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+namespace {
+
+// Plain three-component arithmetic for the routine every query runs on every
+// triangle it visits: the sanitizer builds (-O1) leave Eigen's expression
+// templates as calls, which made a query there several times slower.
+struct P3 {
+  double x, y, z;
+};
+inline P3 sub(const P3& a, const P3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline double dot(const P3& a, const P3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline P3 along(const P3& a, double t, const P3& d) {
+  return {a.x + t * d.x, a.y + t * d.y, a.z + t * d.z};
+}
+
+P3 closest(const P3& p, const P3& a, const P3& b, const P3& c) {
+  const P3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  const P3 bp = sub(p, b);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0 && d4 <= d3) return b;
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return along(a, d1 / (d1 - d3), ab);
+  const P3 cp = sub(p, c);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0 && d5 <= d6) return c;
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return along(a, d2 / (d2 - d6), ac);
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+    return along(b, (d4 - d3) / ((d4 - d3) + (d5 - d6)), sub(c, b));
   const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
+  const double v = vb * denom, w = vc * denom;
+  return {a.x + ab.x * v + ac.x * w, a.y + ab.y * v + ac.y * w, a.z + ab.z * v + ac.z * w};
+}
+
+inline P3 p3(const Vec3& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+}  // namespace
+
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const P3 q = closest(p3(p), p3(a), p3(b), p3(c));
+  return {q.x, q.y, q.z};
 }
 
 namespace {
@@ -32,8 +62,22 @@ namespace {
 // about as much as a box's.
 constexpr int kLeafSize = 4;
 
+// Scalar loops rather than Eigen expressions: these run at every node of every
+// query, and the sanitizer builds (-O1) do not flatten the expression templates.
 double box_squared_distance(const Vec3& lo, const Vec3& hi, const Vec3& p) {
-  return (lo - p).cwiseMax(p - hi).cwiseMax(0.0).squaredNorm();
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double below = lo[k] - p[k], above = p[k] - hi[k];
+    const double d = below > 0 ? below : above > 0 ? above : 0.0;
+    d2 += d * d;
+  }
+  return d2;
+}
+
+bool boxes_meet(const Vec3& lo, const Vec3& hi, const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a[k] > hi[k] || b[k] < lo[k]) return false;
+  return true;
 }
 
 }  // namespace
@@ -59,9 +103,7 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
 void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
                           size_t limit) const {
   if (triangles_.empty()) return;
-  const auto meets = [&](const Vec3& a, const Vec3& b) {
-    return (a.array() <= hi.array()).all() && (lo.array() <= b.array()).all();
-  };
+  const auto meets = [&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); };
   const size_t before = out.size();
   std::array<int, 2 * 32 + 2> stack;  // as in nearest()
   int size = 0;
@@ -115,11 +157,13 @@ int TriangleTree::build(int begin, int end, const std::vector<Vec3>& centroids) 
 TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
   Nearest best;
   if (triangles_.empty()) return best;
+  const P3 query = p3(p);
   const auto test = [&](int slot) {
     const auto& t = triangles_[slot];
-    const Vec3 q = closest_on_triangle(p, t[0], t[1], t[2]);
-    const double d2 = (q - p).squaredNorm();
-    if (d2 < best.squared_distance) best = {q, id_[slot], d2};
+    const P3 q = closest(query, p3(t[0]), p3(t[1]), p3(t[2]));
+    const P3 d = sub(q, query);
+    const double d2 = dot(d, d);
+    if (d2 < best.squared_distance) best = {Vec3(q.x, q.y, q.z), id_[slot], d2};
   };
   if (start >= 0 && start < static_cast<int>(slot_.size())) test(slot_[start]);
   // Depth first, the nearer child first; a node no nearer than the best is
