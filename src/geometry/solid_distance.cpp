@@ -60,11 +60,33 @@ std::vector<Mesh> shells_of(const Mesh& mesh) {
   return shells;
 }
 
+// A triangle clipped to a box: at most 3 + 6 corners (one more per plane),
+// held inline, since a plane model clips hundreds of faces.
+class ClippedFace {
+ public:
+  const Vec3* begin() const { return p_.data(); }
+  const Vec3* end() const { return p_.data() + n_; }
+  size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  const Vec3& operator[](size_t k) const { return p_[k]; }
+  void clear() { n_ = 0; }
+  void push_back(const Vec3& v) { p_[n_++] = v; }
+
+ private:
+  std::array<Vec3, 9> p_;
+  size_t n_ = 0;
+};
+
 // The part of triangle t inside the box [lo, hi] (Sutherland–Hodgman against
 // its six planes): the side tests below need only what lies near the cell, and
 // a large face's far corners would fail them for no reason.
-std::vector<Vec3> clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3& hi) {
-  std::vector<Vec3> poly(t.begin(), t.end()), next;
+ClippedFace clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3& hi) {
+  ClippedFace poly, next;
+  for (const Vec3& v : t) poly.push_back(v);
+  const auto in_box = [&](const Vec3& v) {
+    return (v.array() >= lo.array()).all() && (v.array() <= hi.array()).all();
+  };
+  if (in_box(t[0]) && in_box(t[1]) && in_box(t[2])) return poly;  // the common case
   for (int axis = 0; axis < 3; ++axis)
     for (int upper = 0; upper < 2; ++upper) {
       const double bound = upper ? hi[axis] : lo[axis];
@@ -82,7 +104,7 @@ std::vector<Vec3> clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, cons
           next.push_back(x);
         }
       }
-      poly.swap(next);
+      std::swap(poly, next);
       if (poly.empty()) return poly;
     }
   return poly;
@@ -241,7 +263,7 @@ namespace {
 // the disk keeps a large face's part beyond the ball, which the box still
 // holds, from failing a test for no reason.
 struct FacePart {
-  std::vector<Vec3> points;  ///< clipped to the box
+  ClippedFace points;  ///< clipped to the box
   Vec3 normal = Vec3::UnitZ();
   Vec3 centre = Vec3::Zero();  ///< of the disk: the ball's centre projected on the face's plane
   double radius = 0.0;
@@ -269,7 +291,7 @@ struct FacePart {
 // largest min(−s_p, −s_q) over it. That function is concave, so its largest is
 // at a corner or where the ridge s_p = s_q crosses an edge.
 double wedge_crossing(const FacePart& part, const FacePlane& p, const FacePlane& q) {
-  const std::vector<Vec3>& face = part.points;
+  const ClippedFace& face = part.points;
   double m = -INFINITY;
   for (size_t k = 0; k < face.size(); ++k) {
     const Vec3 &x = face[k], &y = face[(k + 1) % face.size()];
