@@ -274,15 +274,24 @@ struct FacePart {
   /// A lower bound of s_q over the face's points within the ball.
   /// (The disk is consulted only where the points cross the plane: the tests
   /// care about the sign, and it costs a square root.)
-  double least(const FacePlane& q) const {
+  double least(const FacePlane& q) const { return least_refined(q, least_at_points(q)); }
+  /// The least s_q at the points alone, and least() from it.
+  double least_at_points(const FacePlane& q) const {
     double m = INFINITY;
     for (const Vec3& p : points) m = std::min(m, q.at(p));
+    return m;
+  }
+  double least_refined(const FacePlane& q, double m) const {
     return m >= 0 ? m : std::max(m, q.at(centre) - spread(q));
   }
   /// An upper bound of s_q over them.
-  double greatest(const FacePlane& q) const {
+  double greatest(const FacePlane& q) const { return greatest_refined(q, greatest_at_points(q)); }
+  double greatest_at_points(const FacePlane& q) const {
     double m = -INFINITY;
     for (const Vec3& p : points) m = std::max(m, q.at(p));
+    return m;
+  }
+  double greatest_refined(const FacePlane& q, double m) const {
     return m <= 0 ? m : std::min(m, q.at(centre) + spread(q));
   }
 };
@@ -360,13 +369,21 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
   const auto least = [](const FacePart& face, const FacePlane& q, double sign) {
     return sign > 0 ? face.least(q) : -face.greatest(q);
   };
+  // Below, a face's values at its points come first: the disk can only move
+  // them towards the plane, so where they change nothing its square root is
+  // not taken.
   double hole_slack = slack;
   for (const Group* g : hole) {
-    for (const auto& t : g->faces) hole_slack = std::max(hole_slack, -least(t, g->plane, 1.0));
+    for (const auto& t : g->faces) {
+      const double m = t.least_at_points(g->plane);
+      if (-m > hole_slack) hole_slack = std::max(hole_slack, -t.least_refined(g->plane, m));
+    }
     for (const Group* h : hole) {
       if (g == h) continue;
       for (const auto& t : g->faces) {
-        const double m = least(t, h->plane, -1.0);
+        const double raw = t.greatest_at_points(h->plane);
+        if (raw <= hole_slack && raw <= cap) continue;
+        const double m = -t.greatest_refined(h->plane, raw);
         if (m < -cap) return std::nullopt;
         hole_slack = std::max(hole_slack, -m);
       }
@@ -375,6 +392,10 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
   for (const Group& g : groups) {
     if (std::find(hole.begin(), hole.end(), &g) != hole.end()) continue;
     for (const auto& t : g.faces) {
+      const bool settled = std::any_of(hole.begin(), hole.end(), [&](const Group* h) {
+        return t.least_at_points(h->plane) >= -std::min(hole_slack, cap);
+      });
+      if (settled) continue;
       double best = -INFINITY;
       for (const Group* h : hole) best = std::max(best, least(t, h->plane, 1.0));
       if (best < -cap) return std::nullopt;
@@ -437,8 +458,10 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
 std::vector<std::vector<const PlaneGroup*>> separate_holes(
     const std::vector<const PlaneGroup*>& hole, double cap) {
   const auto outer = [&](const PlaneGroup* g, const PlaneGroup* h) {
-    for (const auto& t : g->faces)
-      if (t.greatest(h->plane) > cap) return false;
+    for (const auto& t : g->faces) {
+      const double raw = t.greatest_at_points(h->plane);  // the disk only lowers it
+      if (raw > cap && t.greatest_refined(h->plane, raw) > cap) return false;
+    }
     return true;
   };
   UnionFind sets(hole.size());
@@ -497,40 +520,42 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   return groups;
 }
 
-// How the groups' faces lie against each other's planes: crossing[k], how far
-// any face lies beyond plane k (complete for the supporting planes, the only
-// ones it bounds); crosses(k, h), a face of group h beyond plane k by more
-// than cap. A group crossed so is not supporting.
-struct Crossings {
-  std::vector<double> crossing;
-  std::vector<char> crossed;
-  size_t n = 0;
-  bool crosses(size_t k, size_t h) const { return crossed[k * n + h] != 0; }
-};
-Crossings measure_crossings(std::vector<PlaneGroup>& groups, double cap) {
-  Crossings x{std::vector<double>(groups.size(), 0.0),
-              std::vector<char>(groups.size() * groups.size(), 0), groups.size()};
-  for (size_t k = 0; k < x.n; ++k)
-    for (size_t h = 0; h < x.n; ++h)
+// How far any face lies beyond each group's plane (measured for the
+// supporting planes, the only ones it bounds). A plane that a face crosses by
+// more than cap is not supporting, and its scan stops there.
+std::vector<double> measure_crossings(std::vector<PlaneGroup>& groups, double cap) {
+  std::vector<double> crossing(groups.size(), 0.0);
+  for (size_t k = 0; k < groups.size(); ++k)
+    for (size_t h = 0; h < groups.size() && groups[k].supporting; ++h)
       for (const auto& t : groups[h].faces) {
-        const double m = t.least(groups[k].plane);  // < -cap: beyond the plane
-        x.crossing[k] = std::max(x.crossing[k], -m);
-        if (m < -cap) {
-          // Crossed: k is not supporting, so its crossing is no longer used.
-          x.crossed[k * x.n + h] = 1, groups[k].supporting = false;
-          break;
+        const double m = t.least_at_points(groups[k].plane);
+        // The disk can only raise m: where m already neither crosses nor
+        // raises the crossing, its square root is not taken.
+        if (m < 0 && (m < -cap || -m > crossing[k])) {
+          const double refined = t.least_refined(groups[k].plane, m);
+          crossing[k] = std::max(crossing[k], -refined);
+          if (refined < -cap) {
+            groups[k].supporting = false;
+            break;
+          }
         }
       }
-  return x;
+  return crossing;
+}
+
+// Whether a face of group h lies beyond g's plane by more than cap.
+bool crosses(const PlaneGroup& g, const PlaneGroup& h, double cap) {
+  return std::any_of(h.faces.begin(), h.faces.end(),
+                     [&](const FacePart& t) { return t.least(g.plane) < -cap; });
 }
 
 // Each supporting plane bounds sd on its own: the nearest ones (at most
 // kLocalPlanesMaxPlanes, every foot point within the reach) bound it best.
 // With `witness`, a point beyond the plane's crossings must be outside.
 template <class Outside>
-void add_supporting(const std::vector<PlaneGroup>& groups, const Crossings& x, const Vec3& c,
-                    double r, double reach, double cap, bool witness, const Outside& outside,
-                    LocalPlanes& out) {
+void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<double>& crossing,
+                    const Vec3& c, double r, double reach, double cap, bool witness,
+                    const Outside& outside, LocalPlanes& out) {
   std::vector<std::pair<double, size_t>> nearest;  // by s(c)
   for (size_t k = 0; k < groups.size(); ++k)
     if (groups[k].supporting && groups[k].plane.at(c) + 2.0 * r <= reach)
@@ -540,12 +565,12 @@ void add_supporting(const std::vector<PlaneGroup>& groups, const Crossings& x, c
     nearest.resize(tol::kLocalPlanesMaxPlanes);
   for (const auto& [s_c, k] : nearest) {
     if (witness) {
-      const double step = std::max(s_c, 0.0) + x.crossing[k] + 0.5 * r + 1e-3 * cap;
+      const double step = std::max(s_c, 0.0) + crossing[k] + 0.5 * r + 1e-3 * cap;
       const Vec3 z = c + step * groups[k].plane.normal;
       if (step >= reach || !outside(z)) continue;
     }
     out.supporting.push_back(groups[k].plane);
-    out.slack = std::max(out.slack, x.crossing[k]);
+    out.slack = std::max(out.slack, crossing[k]);
   }
 }
 
@@ -581,17 +606,15 @@ bool add_holes(const std::vector<PlaneGroup>& groups, const std::vector<const Pl
 // cross each other).
 template <class Outside>
 void add_wedges(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
-                const Crossings& x, double cap, const Vec3& c, double r, double reach,
-                const Outside& outside, LocalPlanes& out) {
+                double cap, const Vec3& c, double r, double reach, const Outside& outside,
+                LocalPlanes& out) {
   std::vector<std::pair<double, std::pair<const PlaneGroup*, const PlaneGroup*>>> pairs;
-  const auto index = [&](const PlaneGroup* g) { return static_cast<size_t>(g - groups.data()); };
   for (size_t i = 0; i < hole.size(); ++i)
     for (size_t j = i + 1; j < hole.size(); ++j) {
-      const size_t gi = index(hole[i]), gj = index(hole[j]);
-      if (!x.crosses(gi, gj) && !x.crosses(gj, gi)) continue;
       const Vec3 mean = (hole[i]->plane.normal + hole[j]->plane.normal).normalized();
       const double cos_spread = hole[i]->plane.normal.dot(mean);
       if (!(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) continue;
+      if (!crosses(*hole[i], *hole[j], cap) && !crosses(*hole[j], *hole[i], cap)) continue;
       const double at_c = std::max(hole[i]->plane.at(c), hole[j]->plane.at(c)) / cos_spread;
       pairs.push_back({at_c, {hole[i], hole[j]}});
     }
@@ -634,14 +657,14 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
   auto groups = groups_near(mesh, near, c, reach, cap);
   if (!groups) return out;
-  const Crossings x = measure_crossings(*groups, cap);
-  add_supporting(*groups, x, c, r, reach, cap, witness, outside, out);
+  const std::vector<double> crossing = measure_crossings(*groups, cap);
+  add_supporting(*groups, crossing, c, r, reach, cap, witness, outside, out);
   std::vector<const PlaneGroup*> hole;
   for (const PlaneGroup& g : *groups)
     if (!g.supporting) hole.push_back(&g);
   complete = hole.empty() || add_holes(*groups, hole, cap, c, r, reach, witness, outside, out);
   if (!complete && hole.size() <= static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
-    add_wedges(*groups, hole, x, cap, c, r, reach, outside, out);
+    add_wedges(*groups, hole, cap, c, r, reach, outside, out);
   return out;
 }
 
