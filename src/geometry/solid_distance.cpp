@@ -467,7 +467,9 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
   UnionFind sets(hole.size());
   for (size_t i = 0; i < hole.size(); ++i)
     for (size_t j = i + 1; j < hole.size(); ++j)
-      if (outer(hole[i], hole[j]) && outer(hole[j], hole[i])) sets.join(i, j);
+      // Joined already (through others): the sets would not change.
+      if (sets.find(i) != sets.find(j) && outer(hole[i], hole[j]) && outer(hole[j], hole[i]))
+        sets.join(i, j);
   std::vector<std::vector<const PlaneGroup*>> out;
   std::vector<int> slot(hole.size(), -1);
   for (size_t i = 0; i < hole.size(); ++i) {
