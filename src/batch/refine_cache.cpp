@@ -24,7 +24,9 @@ namespace {
 //     bounded effort.
 // 11: the thickness searches in the frame of the smaller part's flat areas
 //     (the same certificates, other brackets).
-constexpr CacheKind kKind{"pdcheck-refinement-11", ".pdr"};
+// 12: the frame's box comes from the part's own (found once per part):
+//     brackets move in their last digits.
+constexpr CacheKind kKind{"pdcheck-refinement-12", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));

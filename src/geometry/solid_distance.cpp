@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "geometry/convexity.h"
+#include "geometry/face_axes.h"
 #include "geometry/triangle_tree.h"
 #include "geometry/union_find.h"
 #include "tolerances.h"
@@ -118,6 +119,9 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) box_.extend(Vec3(mesh.vertices.col(mesh.triangles(k, t))));
   noise_ = coordinate_noise(mesh.vertices);
+  axes_ = face_axes(whole_);
+  for (int f = 0; f < whole_.faces(); ++f)
+    for (const Vec3& v : whole_.face(f)) box_in_axes_.extend(Vec3(axes_.transpose() * v));
   hair_ = 1e-9 * std::max(box_.diagonal().norm(), box_.max().cwiseAbs().maxCoeff());
   std::vector<Mesh> shells = shells_of(mesh);
   if (shells.empty()) {

@@ -106,6 +106,11 @@ class SolidDistance {
   /// The coordinates' rounding: the largest float32 half-step of any coordinate
   /// when the vertices are float32 values, else a few double ulps.
   double noise() const { return noise_; }
+  /// The part's face axes (geometry/face_axes.h), a rotation R, and the box of
+  /// Rᵀv over its faces' corners: the frame its pairs' overlap thickness
+  /// splits space in (solve/overlap_thickness.h), found once per part.
+  const Eigen::Matrix3d& axes() const { return axes_; }
+  const Eigen::AlignedBox3d& box_in_axes() const { return box_in_axes_; }
 
   DistanceBounds at(const Vec3& p) const;
 
@@ -131,6 +136,8 @@ class SolidDistance {
   std::string note_;
   Eigen::AlignedBox3d box_;
   double noise_ = 0.0;
+  Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
+  Eigen::AlignedBox3d box_in_axes_;
   double hair_ = 0.0;  ///< how far outside a face a union's complement is probed
 };
 

@@ -8,7 +8,6 @@
 #include <queue>
 #include <vector>
 
-#include "geometry/face_axes.h"
 #include "solve/max_min_affine.h"
 
 namespace pd {
@@ -299,11 +298,19 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
   PairFrame frame;
   frame.origin = region.center();
   const SolidDistance& small = a.box().diagonal().norm() <= b.box().diagonal().norm() ? a : b;
-  frame.R = face_axes(small.mesh());
+  frame.R = small.axes();
   {
-    Eigen::AlignedBox3d own, meet;
-    for (int f = 0; f < small.mesh().faces(); ++f)
-      for (const Vec3& v : small.mesh().face(f)) own.extend(frame.local(v));
+    // Its corners' box in the frame is the part's own (Rᵀv) less Rᵀ·origin,
+    // widened by the rounding of taking them apart.
+    const Vec3 shift = frame.R.transpose() * frame.origin;
+    const double rounding =
+        16 * std::numeric_limits<double>::epsilon() *
+        (small.box_in_axes().max().cwiseAbs().maxCoeff() +
+         small.box_in_axes().min().cwiseAbs().maxCoeff() + shift.cwiseAbs().maxCoeff());
+    Eigen::AlignedBox3d own(small.box_in_axes().min() - shift, small.box_in_axes().max() - shift),
+        meet;
+    own.min().array() -= rounding;
+    own.max().array() += rounding;
     for (int k = 0; k < 8; ++k)
       meet.extend(frame.local(region.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k))));
     region = own.intersection(meet);
