@@ -240,3 +240,29 @@ TEST(MeshIntersect, OutsideDistanceAgreesWithTheRayTest) {
     EXPECT_GT(inside, 50);
   }
 }
+
+TEST(MeshIntersect, ANearFaceHintGivesTheSameSignedDistance) {
+  // A run of nearby queries passes each one's nearest face to the next; the
+  // answer must be the query's own, whatever the hint (a far face, none, a
+  // face of the other side of the plate).
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-25.0, 25.0);
+  for (const Mesh& m : {plate_with_hole(40, 6, 5, 16),
+                        translated(plate_with_hole(40, 6, 5, 48), Vec3(3e4, 0, 0))}) {
+    const PreparedMesh p(m);
+    const Vec3 origin = p.face(0)[0];
+    int hint = -1, inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+      const Vec3 x = origin + Vec3(u(rng), u(rng), 0.4 * u(rng));
+      if (k % 5 == 0) hint = static_cast<int>(rng() % p.faces());  // a face anywhere
+      Vec3 want_nearest, got_nearest;
+      const double want = p.signed_distance(x, &want_nearest);
+      const double got = p.signed_distance(x, &got_nearest, nullptr, &hint);
+      ASSERT_NEAR(got, want, 1e-12 * (1 + x.cwiseAbs().maxCoeff())) << k;
+      ASSERT_EQ(got > 0, want > 0) << k;
+      ASSERT_GE(hint, 0);
+      inside += want > 0;
+    }
+    EXPECT_GT(inside, 50);
+  }
+}

@@ -277,7 +277,8 @@ bool PreparedMesh::has_segments() const {
   return !impl_->segments.empty();
 }
 
-double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal) const {
+double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
+                                     int* near_face) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
   Point3 q = p;
@@ -285,7 +286,8 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   int side = 0;
   Vec3 normal = Vec3::Zero();
   if (!m.faces.empty()) {
-    const TriangleTree::Nearest found = m.search.nearest(v);
+    const TriangleTree::Nearest found = m.search.nearest(v, near_face ? *near_face : -1);
+    if (near_face) *near_face = found.face;
     const TriIter face = m.faces.cbegin() + found.face;
     q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);

@@ -41,8 +41,11 @@ class PreparedMesh {
   /// (even-odd rule), else minus the distance; the nearest surface point in
   /// *nearest and its face's unit normal (from the corners' order; zero when
   /// the nearest is a degenerate triangle) in *face_normal. On open meshes it
-  /// is never positive.
-  double signed_distance(const Vec3& p, Vec3* nearest = nullptr, Vec3* face_normal = nullptr) const;
+  /// is never positive. `near_face`, when given, is a face tried first (a
+  /// nearby query's, -1 for none) and gets this query's: the same answer,
+  /// found sooner in a run of nearby queries.
+  double signed_distance(const Vec3& p, Vec3* nearest = nullptr, Vec3* face_normal = nullptr,
+                         int* near_face = nullptr) const;
   /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to
   /// `out` in increasing order; past `limit` of them, limit + 1 in no order.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,

@@ -149,10 +149,10 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
               : "open shell: no inside";
 }
 
-DistanceBounds SolidDistance::at(const Vec3& p) const {
+DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
   DistanceBounds r;
   Vec3 normal = Vec3::Zero();
-  const double sd = whole_.signed_distance(p, &r.nearest, &normal);
+  const double sd = whole_.signed_distance(p, &r.nearest, &normal, near_face);
   if (exact_) {
     r.lower = r.upper = sd;
     return r;
@@ -182,8 +182,9 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   std::vector<int> faces;
   const Eigen::AlignedBox3d& box = b.box();
   a.faces_in_box(box.min(), box.max(), faces);
+  int near_face = -1;  // the samples come in runs close together
   const auto sample = [&](const Vec3& p) {
-    const DistanceBounds d = b.at(p);
+    const DistanceBounds d = b.at(p, &near_face);
     if (!(d.lower > best.depth)) return d.lower;
     best.depth = d.lower;
     best.at = p;

@@ -112,7 +112,8 @@ class SolidDistance {
   const Eigen::Matrix3d& axes() const { return axes_; }
   const Eigen::AlignedBox3d& box_in_axes() const { return box_in_axes_; }
 
-  DistanceBounds at(const Vec3& p) const;
+  /// `near_face`: as PreparedMesh::signed_distance's, for a run of nearby queries.
+  DistanceBounds at(const Vec3& p, int* near_face = nullptr) const;
 
   /// When the faces near a box leave something unexplained, whether those
   /// within the largest reach are tried as well: always (the best model), or
