@@ -65,6 +65,14 @@ std::vector<Mesh> shells_of(const Mesh& mesh) {
 // held inline, since a plane model clips hundreds of faces.
 class ClippedFace {
  public:
+  ClippedFace() = default;
+  // Copies hold the corners in use only.
+  ClippedFace(const ClippedFace& o) : n_(o.n_) { std::copy(o.begin(), o.end(), p_.begin()); }
+  ClippedFace& operator=(const ClippedFace& o) {
+    n_ = o.n_;
+    std::copy(o.begin(), o.end(), p_.begin());
+    return *this;
+  }
   const Vec3* begin() const { return p_.data(); }
   const Vec3* end() const { return p_.data() + n_; }
   size_t size() const { return n_; }
@@ -82,18 +90,22 @@ class ClippedFace {
 // its six planes): the side tests below need only what lies near the cell, and
 // a large face's far corners would fail them for no reason.
 ClippedFace clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3& hi) {
-  ClippedFace poly, next;
-  for (const Vec3& v : t) poly.push_back(v);
+  ClippedFace polys[2];  // the polygon and the next, by turns (no copies)
+  int now = 0;
+  for (const Vec3& v : t) polys[now].push_back(v);
   const auto in_box = [&](const Vec3& v) {
     return (v.array() >= lo.array()).all() && (v.array() <= hi.array()).all();
   };
-  if (in_box(t[0]) && in_box(t[1]) && in_box(t[2])) return poly;  // the common case
+  if (in_box(t[0]) && in_box(t[1]) && in_box(t[2])) return polys[now];  // the common case
   for (int axis = 0; axis < 3; ++axis)
     for (int upper = 0; upper < 2; ++upper) {
       const double bound = upper ? hi[axis] : lo[axis];
       const auto inside = [&](const Vec3& p) {
         return upper ? p[axis] <= bound : p[axis] >= bound;
       };
+      const ClippedFace& poly = polys[now];
+      if (std::all_of(poly.begin(), poly.end(), inside)) continue;  // this plane cuts nothing
+      ClippedFace& next = polys[1 - now];
       next.clear();
       for (size_t k = 0; k < poly.size(); ++k) {
         const Vec3 &p = poly[k], &q = poly[(k + 1) % poly.size()];
@@ -105,10 +117,10 @@ ClippedFace clip_to_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3
           next.push_back(x);
         }
       }
-      std::swap(poly, next);
-      if (poly.empty()) return poly;
+      now = 1 - now;
+      if (next.empty()) return next;
     }
-  return poly;
+  return polys[now];
 }
 
 }  // namespace
