@@ -508,7 +508,12 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   size_t last = 0;
   for (int f : faces) {
     const std::array<Vec3, 3> t = mesh.face(f);
-    if ((closest_on_triangle(c, t[0], t[1], t[2]) - c).norm() > reach) continue;
+    // Corners within the ball: so is the face (its nearest point is no farther).
+    const double reach2 = reach * reach;
+    const bool corners_in = (t[0] - c).squaredNorm() <= reach2 &&
+                            (t[1] - c).squaredNorm() <= reach2 &&
+                            (t[2] - c).squaredNorm() <= reach2;
+    if (!corners_in && (closest_on_triangle(c, t[0], t[1], t[2]) - c).norm() > reach) continue;
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return std::nullopt;
     FacePart part{clip_to_box(t, box_lo, box_hi), n, Vec3::Zero(), 0.0};
