@@ -383,9 +383,6 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
                                              double slack, double cap, const Vec3& c, double r,
                                              double reach, bool witness, const Outside& outside) {
   using Group = PlaneGroup;
-  const auto least = [](const FacePart& face, const FacePlane& q, double sign) {
-    return sign > 0 ? face.least(q) : -face.greatest(q);
-  };
   // Below, a face's values at its points come first: the disk can only move
   // them towards the plane, so where they change nothing its square root is
   // not taken.
@@ -414,7 +411,7 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
       });
       if (settled) continue;
       double best = -INFINITY;
-      for (const Group* h : hole) best = std::max(best, least(t, h->plane, 1.0));
+      for (const Group* h : hole) best = std::max(best, t.least(h->plane));
       if (best < -cap) return std::nullopt;
       hole_slack = std::max(hole_slack, -best);
     }
@@ -506,10 +503,10 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
   std::vector<PlaneGroup> groups;
   size_t last = 0;
+  const double reach2 = reach * reach;
   for (int f : faces) {
     const std::array<Vec3, 3> t = mesh.face(f);
     // Corners within the ball: so is the face (its nearest point is no farther).
-    const double reach2 = reach * reach;
     const bool corners_in = (t[0] - c).squaredNorm() <= reach2 &&
                             (t[1] - c).squaredNorm() <= reach2 &&
                             (t[2] - c).squaredNorm() <= reach2;
