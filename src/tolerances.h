@@ -236,6 +236,14 @@ inline constexpr double kThicknessBracket = 0.25;
 /// cost more than deciding it (a union of shells' lower bound may never reach
 /// the ratio above).
 inline constexpr long kThicknessBracketMinEvaluations = 5000;
+/// A box's plane models look at the faces within this multiple of the bound
+/// that settles it (the best point found, or half the tolerance) of the box,
+/// and bound min(sd, margin) (geometry/solid_distance.h, local_planes_in).
+/// Effort, not accuracy: a model is sound at any margin, and a bound at or
+/// above the margin is dropped. A smaller margin sees fewer faces, but its
+/// bound must come below it; on the CAD assemblies (docs/performance.md) 2
+/// took the least time per pair, 1.25, 1.5, 3 and 4 more.
+inline constexpr double kThicknessModelMargin = 2.0;
 /// Effort, not accuracy: the most points one surface is sampled at for the
 /// deepest-surface-point bound (geometry/solid_distance.h). Any sample is a
 /// sound lower bound; more only find a deeper one. The deepest pieces are

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include "corpus/cad_shapes.h"
@@ -123,6 +124,127 @@ TEST(LocalPlanes, EveryBoundHoldsBetweenNeighbouringHoles) {
       rng, 300);
   EXPECT_GT(counts.several_holes, 8) << counts.several_holes;
   EXPECT_GT(counts.checked, 1000);
+}
+
+// A rotation drawn uniformly (a random unit quaternion).
+Eigen::Matrix3d random_rotation(std::mt19937& g) {
+  std::normal_distribution<double> n(0, 1);
+  return Eigen::Quaterniond(n(g), n(g), n(g), n(g)).normalized().toRotationMatrix();
+}
+
+// Checks every plane, hole and wedge bound of s's models about framed boxes
+// (a random rotation, the origin at `centre(rng)`, sides up to 0.4 of `scale`,
+// some twenty times longer than thick, a margin up to half of `scale`):
+// min(sd(x), margin) is at most each bound at points x of the box inside the
+// solid, sd from `truth` (the same solid, distances exact).
+template <class Centre>
+ModelCounts check_box_planes(const SolidDistance& s, const SolidDistance& truth, double scale,
+                             Centre centre, std::mt19937& rng, int trials) {
+  std::uniform_real_distribution<double> u(0, 1);
+  ModelCounts n;
+  for (int trial = 0; trial < trials; ++trial) {
+    FramedBox box;
+    box.origin = centre(rng);
+    box.R = random_rotation(rng);
+    Vec3 half = Vec3::Constant(scale * (0.02 + 0.4 * u(rng)));
+    if (trial % 2) half[trial % 3] *= 0.05;  // a slab, as about a seated face
+    const Vec3 shift = 0.5 * scale * Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+    box.lo = shift - half;
+    box.hi = shift + half;
+    const double margin = scale * (0.01 + 0.5 * u(rng));
+    const LocalPlanes m = s.local_planes_in(box, margin);
+    EXPECT_EQ(m.margin, margin);
+    n.holes += !m.holes.empty();
+    n.several_holes += m.holes.size() > 1;
+    n.wedges += !m.wedges.empty();
+    for (int k = 0; k < 60; ++k) {
+      // Half the points on the box's faces, where the margin is tightest.
+      Vec3 y = box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo);
+      if (k % 2) y[k % 3] = k % 4 < 2 ? box.lo[k % 3] : box.hi[k % 3];
+      const double sd = truth.at(box.world(y)).lower;
+      if (sd <= 0) continue;
+      ++n.checked;
+      const double capped = std::min(sd, m.margin);
+      const double eps = 1e-12 * (1 + box.origin.norm());  // the planes' own rounding
+      for (const FacePlane& q : m.supporting) EXPECT_LE(capped, q.at(y) + m.slack + eps);
+      for (const LocalPlanes::Hole& h : m.holes) {
+        double most = -INFINITY;
+        for (const FacePlane& q : h.planes) most = std::max(most, q.at(y));
+        EXPECT_LE(capped, h.kappa * (most + h.slack) + eps) << "trial " << trial;
+      }
+      for (const LocalPlanes::Wedge& w : m.wedges)
+        EXPECT_LE(capped, w.kappa * (std::max(w.p.at(y), w.q.at(y)) + w.slack) + eps)
+            << "trial " << trial;
+    }
+  }
+  return n;
+}
+
+TEST(BoxPlanes, EveryBoundHoldsAtAShoulder) {
+  // Framed boxes about a stepped shaft's shoulder: one shell, near the origin
+  // in double and far from it in float32; and the same solid exported as two
+  // bodies face to face (shank and head), whose union's distance from inside
+  // is known only from below, so the truth is the one-shell solid's.
+  const int n = 32;
+  const Vec3 far(28000, 3000, -900);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (const int kind : {0, 1, 2}) {
+    const Vec3 origin = kind == 1 ? far : Vec3::Zero();
+    const Mesh shaft = sh::stepped_shaft(3, 5, 0, 10, 12, n);
+    const Mesh bolt =
+        sh::joined({sh::cylinder({0, 0}, 3, 0, 10, n), sh::cylinder({0, 0}, 5, 10, 12, n)});
+    const SolidDistance truth(kind == 1 ? sh::float32(sh::translated(shaft, far)) : shaft);
+    const SolidDistance s(kind == 2   ? bolt
+                          : kind == 1 ? sh::float32(sh::translated(shaft, far))
+                                      : shaft);
+    ASSERT_EQ(s.exact(), kind != 2);
+    std::mt19937 rng(5 + kind);
+    const ModelCounts counts = check_box_planes(
+        s, truth, 1.0,
+        [&](std::mt19937& g) {
+          const double angle = 2 * M_PI * u(g), rad = 2.6 + 0.8 * u(g);
+          return Vec3(origin +
+                      Vec3(rad * std::cos(angle), rad * std::sin(angle), 9.6 + 0.8 * u(g)));
+        },
+        rng, 200);
+    EXPECT_GT(counts.wedges, 10) << "kind " << kind;  // the shoulder is modelled
+    EXPECT_GT(counts.checked, 2000) << "kind " << kind;
+  }
+}
+
+TEST(BoxPlanes, EveryBoundHoldsAboutHoles) {
+  // A board's 0.5 mm hole, wholly within many boxes' margins; a plate's 5 mm
+  // bore, which spans many boxes; a drilled board's row of 0.75 mm holes 2 mm
+  // apart, where boxes see two holes.
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  const auto about_hole = [&](double radius, double thickness) {
+    return [=, &u](std::mt19937& g) {
+      const double angle = 2 * M_PI * u(g), rad = radius * (1 + 0.3 * u(g));
+      return Vec3(rad * std::cos(angle), rad * std::sin(angle), thickness * u(g));
+    };
+  };
+  struct Case {
+    Mesh mesh;
+    double scale;
+    std::function<Vec3(std::mt19937&)> centre;
+  };
+  const double pitch = 2;
+  const Case cases[] = {{sh::plate_with_hole(2.54, 1.6, 0.5, 32), 0.5, about_hole(0.5, 1.6)},
+                        {sh::plate_with_hole(40, 6, 5, 64), 5, about_hole(5, 6)},
+                        {sh::drilled_board(3, 1, pitch, 1.6, 0.75, 32), 0.5, [&](std::mt19937& g) {
+                           return Vec3(pitch * (0.5 + u(g)),
+                                       pitch * (0.5 * u(g) - 0.25) + 0.5 * pitch, 1.6 * u(g));
+                         }}};
+  for (size_t k = 0; k < 3; ++k) {
+    const SolidDistance s(cases[k].mesh);
+    const ModelCounts counts = check_box_planes(s, s, cases[k].scale, cases[k].centre, rng, 200);
+    EXPECT_GT(counts.holes, 40) << "case " << k;
+    EXPECT_GT(counts.checked, 2000) << "case " << k;
+    if (k == 2) {
+      EXPECT_GT(counts.several_holes, 0);
+    }
+  }
 }
 
 TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {

@@ -26,7 +26,9 @@ namespace {
 //     (the same certificates, other brackets).
 // 12: the frame's box comes from the part's own (found once per part):
 //     brackets move in their last digits.
-constexpr CacheKind kKind{"pdcheck-refinement-12", ".pdr"};
+// 13: a box's plane models look at the faces within a margin of the box and
+//     bound min(sd, margin): other boxes, other brackets.
+constexpr CacheKind kKind{"pdcheck-refinement-13", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -62,6 +64,7 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
        {tol::kConcavityFraction, tol::kDecomposeSeconds,
         static_cast<double>(tol::kThicknessMaxEvaluations), tol::kThicknessSeconds,
         tol::kThicknessBracket, static_cast<double>(tol::kThicknessBracketMinEvaluations),
+        tol::kThicknessModelMargin,
         static_cast<double>(tol::kSurfaceDepthSamples),
         static_cast<double>(tol::kLocalPlanesMaxFaces),
         static_cast<double>(tol::kLocalPlanesMaxPlanes),

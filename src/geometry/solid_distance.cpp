@@ -274,6 +274,57 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
 
 namespace {
 
+// Where a plane model's bounds must hold, and where their foot points may go
+// (docs/solver.md, "Plane models"):
+// - a ball (local_planes): sd(x) at every point x of the box about c whose
+//   half-diagonal is r; each bound's foot points stay within `reach` of c,
+//   and the faces there are all that were looked at;
+// - a box of the caller's frame and a margin (local_planes_in): min(sd(x),
+//   margin) at every x of the box c ± e. A bound that needs a foot step of the
+//   margin or more is at least the margin, where nothing is claimed, so the
+//   faces within the margin of the box are all that count. Coordinates are
+//   the frame's.
+struct Region {
+  Vec3 c = Vec3::Zero();
+  double r = 0.0;            ///< the box's half-diagonal
+  Vec3 e = Vec3::Zero();     ///< a box: its half-extents
+  double reach = 0.0;        ///< a ball: its radius
+  double margin = INFINITY;  ///< a box: its margin
+  bool box = false;
+  const FramedBox* frame = nullptr;  ///< a box: its frame
+  double pad = 0.0;                  ///< a box: how far taking faces into the frame may move them
+  /// The largest s_q over the box (over the ball of radius r, which holds it).
+  double most(const FacePlane& q) const { return q.at(c) + (box ? e.dot(q.normal.cwiseAbs()) : r); }
+  /// The longest foot step a bound needs, given the longest its values allow.
+  double step(double longest) const { return std::min(longest, margin); }
+  /// Whether foot steps that long keep every foot point where faces were looked at.
+  bool feet_within(double longest) const { return box || r + longest <= reach; }
+  /// Whether a supporting plane's feet stay within: s_q(x) ≤ s_q(c) + r, and
+  /// a foot lies within r of x.
+  bool supports(const FacePlane& q) const { return box || q.at(c) + 2.0 * r <= reach; }
+  /// Whether z lies (strictly) where faces were looked at.
+  bool contains(const Vec3& z) const {
+    return box ? ((z - c).cwiseAbs().array() < (e.array() + margin)).all() : (z - c).norm() < reach;
+  }
+  /// The box the faces are clipped to.
+  Vec3 lo() const {
+    return box ? Vec3(c - e - Vec3::Constant(margin + 2 * pad)) : Vec3(c.array() - reach);
+  }
+  Vec3 hi() const {
+    return box ? Vec3(c + e + Vec3::Constant(margin + 2 * pad)) : Vec3(c.array() + reach);
+  }
+  /// How far a witness point is pushed beyond the planes it tests.
+  double gap(double cap) const { return 0.5 * std::min(r, margin) + 1e-3 * cap; }
+  /// Where a witness's foot step may start: c, and for a box also its corner
+  /// farthest along u (a plane beyond the box's side is nearest there).
+  int starts() const { return box ? 2 : 1; }
+  Vec3 start(int k, const Vec3& u) const {
+    if (k == 0) return c;
+    return c + Vec3(u.x() >= 0 ? e.x() : -e.x(), u.y() >= 0 ? e.y() : -e.y(),
+                    u.z() >= 0 ? e.z() : -e.z());
+  }
+};
+
 // A face near a ball: its part inside the ball's box, and the disk its plane
 // cuts from the ball. Every side test below is about the face's points within
 // the ball (the certificates hold there, docs/solver.md), which lie in both:
@@ -284,6 +335,7 @@ struct FacePart {
   Vec3 normal = Vec3::UnitZ();
   Vec3 centre = Vec3::Zero();  ///< of the disk: the ball's centre projected on the face's plane
   double radius = 0.0;
+  bool disk = true;  ///< a ball's face; a box's has its points alone
   /// How far plane q's s can vary over the disk from its centre.
   double spread(const FacePlane& q) const {
     return radius * (q.normal - q.normal.dot(normal) * normal).norm();
@@ -299,7 +351,7 @@ struct FacePart {
     return m;
   }
   double least_refined(const FacePlane& q, double m) const {
-    return m >= 0 ? m : std::max(m, q.at(centre) - spread(q));
+    return m >= 0 || !disk ? m : std::max(m, q.at(centre) - spread(q));
   }
   /// An upper bound of s_q over them.
   double greatest(const FacePlane& q) const { return greatest_refined(q, greatest_at_points(q)); }
@@ -309,7 +361,7 @@ struct FacePart {
     return m;
   }
   double greatest_refined(const FacePlane& q, double m) const {
-    return m <= 0 ? m : std::min(m, q.at(centre) + spread(q));
+    return m <= 0 || !disk ? m : std::min(m, q.at(centre) + spread(q));
   }
 };
 
@@ -348,8 +400,7 @@ struct PlaneGroup {
 template <class Outside>
 std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup& h,
                                            const std::vector<PlaneGroup>& groups, double cap,
-                                           const Vec3& c, double r, double reach,
-                                           const Outside& outside) {
+                                           const Region& rg, const Outside& outside) {
   const Vec3 mean = (g.plane.normal + h.plane.normal).normalized();
   const double cos_spread = g.plane.normal.dot(mean);
   if (!mean.allFinite() || !(cos_spread * tol::kLocalPlanesMaxKappa >= 1.0)) return std::nullopt;
@@ -360,14 +411,18 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
       if (x > cap) return std::nullopt;
       w.slack = std::max(w.slack, x);
     }
-  const double sigma = std::max(g.plane.at(c), h.plane.at(c));
-  if (r + w.kappa * (sigma + r + w.slack) > reach) return std::nullopt;
-  // The witness: c's own foot point, a little further in.
-  const double margin = 0.5 * r + 1e-3 * cap;
-  const Vec3 z = c + w.kappa * std::max(sigma + w.slack + margin, margin) * mean;
-  if (!(g.plane.at(z) < -w.slack && h.plane.at(z) < -w.slack && (z - c).norm() < reach))
+  if (!rg.feet_within(w.kappa * (std::max(rg.most(g.plane), rg.most(h.plane)) + w.slack)))
     return std::nullopt;
-  return outside(z) ? std::optional<LocalPlanes::Wedge>(w) : std::nullopt;
+  // The witness: a start's own foot point, a little further in.
+  const double gap = rg.gap(cap);
+  for (int k = 0; k < rg.starts(); ++k) {
+    const Vec3 x = rg.start(k, mean);
+    const double sigma = std::max(g.plane.at(x), h.plane.at(x));
+    const Vec3 z = x + w.kappa * std::max(sigma + w.slack + gap, gap) * mean;
+    if (g.plane.at(z) < -w.slack && h.plane.at(z) < -w.slack && rg.contains(z))
+      return outside(z) ? std::optional<LocalPlanes::Wedge>(w) : std::nullopt;
+  }
+  return std::nullopt;
 }
 
 // A convex hole among the non-supporting groups (LocalPlanes::hole): each of
@@ -380,9 +435,10 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
 template <class Outside>
 std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& groups,
                                              const std::vector<const PlaneGroup*>& hole,
-                                             double slack, double cap, const Vec3& c, double r,
-                                             double reach, bool witness, const Outside& outside) {
+                                             double slack, double cap, const Region& rg,
+                                             bool witness, const Outside& outside) {
   using Group = PlaneGroup;
+  const Vec3& c = rg.c;
   // Below, a face's values at its points come first: the disk can only move
   // them towards the plane, so where they change nothing its square root is
   // not taken.
@@ -443,23 +499,32 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
   for (const Group* g : hole)
     (g->plane.normal.dot(mean) * tol::kLocalPlanesMaxKappa >= 1.0 ? near : far).push_back(g);
   if (near.empty() || !mean.allFinite()) return std::nullopt;
-  double cos_spread = 1.0, sigma = -INFINITY;
+  double cos_spread = 1.0, most = -INFINITY;
   for (const Group* g : near) {
     cos_spread = std::min(cos_spread, g->plane.normal.dot(mean));
-    sigma = std::max(sigma, g->plane.at(c));
+    most = std::max(most, rg.most(g->plane));
   }
   const double kappa = 1.0 / cos_spread;
-  const double longest = kappa * std::max(sigma + r + hole_slack, 0.0);  // the farthest foot step
-  if (r + longest > reach) return std::nullopt;  // a foot could leave the ball
+  // The farthest foot step.
+  const double longest = rg.step(kappa * std::max(most + hole_slack, 0.0));
+  if (!rg.feet_within(longest)) return std::nullopt;  // a foot could leave the ball
   for (const Group* g : far)
-    if (g->plane.at(c) + r + longest * std::max(0.0, -g->plane.normal.dot(mean)) > -hole_slack)
+    if (rg.most(g->plane) + longest * std::max(0.0, -g->plane.normal.dot(mean)) > -hole_slack)
       return std::nullopt;
   if (witness) {
-    const double margin = 0.5 * r + 1e-3 * cap;
-    const Vec3 z = c + kappa * std::max(sigma + hole_slack + margin, margin) * mean;
-    if ((z - c).norm() >= reach || !outside(z)) return std::nullopt;
-    for (const Group* g : hole)
-      if (!(g->plane.at(z) < -hole_slack)) return std::nullopt;
+    const double gap = rg.gap(cap);
+    std::optional<Vec3> found;
+    for (int k = 0; k < rg.starts() && !found; ++k) {
+      const Vec3 x = rg.start(k, mean);
+      double sigma = -INFINITY;
+      for (const Group* g : near) sigma = std::max(sigma, g->plane.at(x));
+      const Vec3 z = x + kappa * std::max(sigma + hole_slack + gap, gap) * mean;
+      if (rg.contains(z) && std::all_of(hole.begin(), hole.end(), [&](const Group* g) {
+            return g->plane.at(z) < -hole_slack;
+          }))
+        found = z;
+    }
+    if (!found || !outside(*found)) return std::nullopt;
   }
   LocalPlanes::Hole out{{}, kappa, hole_slack};
   for (const Group* g : near) out.planes.push_back(g->plane);
@@ -494,33 +559,39 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
   return out;
 }
 
-// The faces of `mesh` meeting the ball of radius `reach` about c, clipped to
-// its box and grouped by plane (within `cap`); nullopt when a face has no
-// normal (degenerate).
+// The faces of `mesh` meeting the region (the ball of radius `reach` about c,
+// or the box and its margin), clipped to its box and grouped by plane (within
+// `cap`); nullopt when a face has no normal (degenerate).
 std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
-                                                   const std::vector<int>& faces, const Vec3& c,
-                                                   double reach, double cap) {
-  const Vec3 box_lo = c.array() - reach, box_hi = c.array() + reach;
+                                                   const std::vector<int>& faces, const Region& rg,
+                                                   double cap) {
+  const Vec3 box_lo = rg.lo(), box_hi = rg.hi();
+  const Vec3& c = rg.c;
+  const double reach = rg.reach;
   std::vector<PlaneGroup> groups;
   size_t last = 0;
   const double reach2 = reach * reach;
   for (int f : faces) {
-    const std::array<Vec3, 3> t = mesh.face(f);
+    std::array<Vec3, 3> t = mesh.face(f);
+    if (rg.frame)
+      for (Vec3& v : t) v = rg.frame->local(v);
     // Corners within the ball: so is the face (its nearest point is no farther).
-    const bool corners_in = (t[0] - c).squaredNorm() <= reach2 &&
-                            (t[1] - c).squaredNorm() <= reach2 &&
-                            (t[2] - c).squaredNorm() <= reach2;
+    const bool corners_in =
+        rg.box || ((t[0] - c).squaredNorm() <= reach2 && (t[1] - c).squaredNorm() <= reach2 &&
+                   (t[2] - c).squaredNorm() <= reach2);
     if (!corners_in && (closest_on_triangle(c, t[0], t[1], t[2]) - c).norm() > reach) continue;
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return std::nullopt;
-    FacePart part{clip_to_box(t, box_lo, box_hi), n, Vec3::Zero(), 0.0};
+    FacePart part{clip_to_box(t, box_lo, box_hi), n, Vec3::Zero(), 0.0, !rg.box};
     if (part.points.empty()) continue;
-    // The disk, widened for the rounding of its centre and of n (a few ulps
-    // of the coordinates), so that it holds every point of the face within the ball.
-    const double height = n.dot(c - t[0]);
-    part.centre = c - height * n;
-    part.radius = std::sqrt(std::max(0.0, reach * reach - height * height)) +
-                  8 * std::numeric_limits<double>::epsilon() * (c.cwiseAbs().maxCoeff() + reach);
+    if (part.disk) {
+      // The disk, widened for the rounding of its centre and of n (a few ulps
+      // of the coordinates), so that it holds every point of the face within the ball.
+      const double height = n.dot(c - t[0]);
+      part.centre = c - height * n;
+      part.radius = std::sqrt(std::max(0.0, reach * reach - height * height)) +
+                    8 * std::numeric_limits<double>::epsilon() * (c.cwiseAbs().maxCoeff() + reach);
+    }
     const auto same_plane = [&](const PlaneGroup& q) {
       return q.plane.normal.dot(n) > 0.999 &&
              std::all_of(part.points.begin(), part.points.end(),
@@ -575,20 +646,29 @@ bool crosses(const PlaneGroup& g, const PlaneGroup& h, double cap) {
 // With `witness`, a point beyond the plane's crossings must be outside.
 template <class Outside>
 void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<double>& crossing,
-                    const Vec3& c, double r, double reach, double cap, bool witness,
-                    const Outside& outside, LocalPlanes& out) {
+                    const Region& rg, double cap, bool witness, const Outside& outside,
+                    LocalPlanes& out) {
+  const Vec3& c = rg.c;
   std::vector<std::pair<double, size_t>> nearest;  // by s(c)
   for (size_t k = 0; k < groups.size(); ++k)
-    if (groups[k].supporting && groups[k].plane.at(c) + 2.0 * r <= reach)
+    if (groups[k].supporting && rg.supports(groups[k].plane))
       nearest.push_back({groups[k].plane.at(c), k});
   std::sort(nearest.begin(), nearest.end());
   if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
     nearest.resize(tol::kLocalPlanesMaxPlanes);
   for (const auto& [s_c, k] : nearest) {
     if (witness) {
-      const double step = std::max(s_c, 0.0) + crossing[k] + 0.5 * r + 1e-3 * cap;
-      const Vec3 z = c + step * groups[k].plane.normal;
-      if (step >= reach || !outside(z)) continue;
+      const FacePlane& q = groups[k].plane;
+      bool shown = false;  // a point beyond the crossings, outside
+      for (int j = 0; j < rg.starts(); ++j) {
+        const Vec3 x = rg.start(j, q.normal);
+        const double step = std::max(q.at(x), 0.0) + crossing[k] + rg.gap(cap);
+        const Vec3 z = x + step * q.normal;
+        if (!rg.contains(z)) continue;
+        shown = outside(z);
+        break;
+      }
+      if (!shown) continue;
     }
     out.supporting.push_back(groups[k].plane);
     out.slack = std::max(out.slack, crossing[k]);
@@ -600,12 +680,12 @@ void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<dou
 // small hole within the reach): that hole is left out.
 template <class Outside>
 bool add_holes(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
-               double cap, const Vec3& c, double r, double reach, bool witness,
-               const Outside& outside, LocalPlanes& out) {
+               double cap, const Region& rg, bool witness, const Outside& outside,
+               LocalPlanes& out) {
   const auto one_hole = [&](const std::vector<const PlaneGroup*>& planes) {
     if (planes.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
       return std::optional<LocalPlanes::Hole>();
-    return convex_hole(groups, planes, out.slack, cap, c, r, reach, witness, outside);
+    return convex_hole(groups, planes, out.slack, cap, rg, witness, outside);
   };
   if (auto h = one_hole(hole)) {
     out.holes.push_back(std::move(*h));
@@ -627,8 +707,8 @@ bool add_holes(const std::vector<PlaneGroup>& groups, const std::vector<const Pl
 // cross each other).
 template <class Outside>
 void add_wedges(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
-                double cap, const Vec3& c, double r, double reach, const Outside& outside,
-                LocalPlanes& out) {
+                double cap, const Region& rg, const Outside& outside, LocalPlanes& out) {
+  const Vec3& c = rg.c;
   std::vector<std::pair<double, std::pair<const PlaneGroup*, const PlaneGroup*>>> pairs;
   for (size_t i = 0; i < hole.size(); ++i)
     for (size_t j = i + 1; j < hole.size(); ++j) {
@@ -646,20 +726,22 @@ void add_wedges(const std::vector<PlaneGroup>& groups, const std::vector<const P
     if (tries++ >= tol::kLocalPlanesWedgeTries ||
         out.wedges.size() >= static_cast<size_t>(tol::kLocalPlanesMaxWedges))
       break;
-    if (auto w = wedge_of(*gh.first, *gh.second, groups, cap, c, r, reach, outside))
+    if (auto w = wedge_of(*gh.first, *gh.second, groups, cap, rg, outside))
       out.wedges.push_back(*w);
   }
 }
 
-// The plane model of one oriented closed mesh about a box
-// (SolidDistance::local_planes); `outside(p)`: p strictly outside the solid.
-// Faces within reach = reach_kappa·(d + r + noise) + r count; `complete` tells
-// whether every face there was explained (no hole, or convex ones), so that
-// a larger reach could not do better.
+// The plane model of one oriented closed mesh about a region;
+// `outside(p)`: p (in the region's coordinates) strictly outside the solid.
+// The faces meeting `wbox` (world coordinates, holding the region) count;
+// `complete` tells whether every face there was explained (no hole, or convex
+// ones), so that a larger reach could not do better.
 template <class Outside>
-LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, double d, double r,
-                        double reach_kappa, bool witness, const Outside& outside, bool& complete) {
+LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg,
+                        const Eigen::AlignedBox3d& wbox, bool witness, const Outside& outside,
+                        bool& complete) {
   LocalPlanes out;
+  out.margin = rg.margin;
   complete = false;
   // Needles (collinear triangles, segments in PreparedMesh) are not checked:
   // in a closed mesh each lies on the edge of the face across its longest
@@ -668,25 +750,101 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Vec3& c, d
   // A face may cross a plane it should not by at most `cap` (the coordinates'
   // rounding) and still count as on its side; the crossings actually measured
   // become the bound's slack, so the certificate holds exactly.
-  const double cap = noise;
-  // Every foot point a bound below uses lies within `reach` of c: a supporting
-  // plane's within r + s_k(x) ≤ 2r + s_k(c) (planes farther are not used), a
-  // hole's within r + kappa·(σ_c + r + slack) (checked once kappa is known).
-  const double reach = reach_kappa * (d + r + cap) + r;
+  const double cap = noise + rg.pad;
   std::vector<int> near;
-  mesh.faces_in_box(c.array() - reach, c.array() + reach, near, tol::kLocalPlanesMaxFaces);
+  mesh.faces_in_box(wbox.min(), wbox.max(), near, tol::kLocalPlanesMaxFaces);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
-  auto groups = groups_near(mesh, near, c, reach, cap);
+  auto groups = groups_near(mesh, near, rg, cap);
   if (!groups) return out;
   const std::vector<double> crossing = measure_crossings(*groups, cap);
-  add_supporting(*groups, crossing, c, r, reach, cap, witness, outside, out);
+  add_supporting(*groups, crossing, rg, cap, witness, outside, out);
   std::vector<const PlaneGroup*> hole;
   for (const PlaneGroup& g : *groups)
     if (!g.supporting) hole.push_back(&g);
-  complete = hole.empty() || add_holes(*groups, hole, cap, c, r, reach, witness, outside, out);
+  complete = hole.empty() || add_holes(*groups, hole, cap, rg, witness, outside, out);
   if (!complete && hole.size() <= static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
-    add_wedges(*groups, hole, cap, c, r, reach, outside, out);
+    add_wedges(*groups, hole, cap, rg, outside, out);
+  // The frame's rounding: the faces looked at are within pad of the true ones.
+  out.slack += rg.pad;
+  for (LocalPlanes::Hole& h : out.holes) h.slack += rg.pad;
+  for (LocalPlanes::Wedge& w : out.wedges) w.slack += rg.pad;
   return out;
+}
+
+// The ball about c whose radius holds every foot point a bound uses: a
+// supporting plane's within r + s_k(x) ≤ 2r + s_k(c) (planes farther are not
+// used), a hole's within r + kappa·(σ_c + r + slack) (checked once kappa is
+// known), for d = |sd(c)| and the box's half-diagonal r.
+Region ball_region(const Vec3& c, double d, double r, double reach_kappa, double noise) {
+  Region rg;
+  rg.c = c;
+  rg.r = r;
+  rg.reach = reach_kappa * (d + r + noise) + r;
+  return rg;
+}
+
+// A framed box and its margin, and the world box that holds it.
+Region box_region(const FramedBox& box, double margin, Eigen::AlignedBox3d& wbox) {
+  Region rg;
+  rg.box = true;
+  rg.frame = &box;
+  rg.c = 0.5 * (box.lo + box.hi);
+  rg.e = 0.5 * (box.hi - box.lo);
+  rg.r = rg.e.norm();
+  rg.margin = margin;
+  wbox.setEmpty();
+  const Vec3 lo = box.lo.array() - margin, hi = box.hi.array() + margin;
+  for (int k = 0; k < 8; ++k)
+    wbox.extend(
+        box.world(Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z())));
+  // Taking a face into the frame rounds it by up to pad; the faces are
+  // gathered that much wider and every slack grows by it.
+  rg.pad = 16 * std::numeric_limits<double>::epsilon() *
+           (wbox.max().cwiseAbs().maxCoeff() + wbox.min().cwiseAbs().maxCoeff() +
+            box.origin.cwiseAbs().maxCoeff());
+  wbox.min().array() -= 2 * rg.pad;
+  wbox.max().array() += 2 * rg.pad;
+  return rg;
+}
+
+Eigen::AlignedBox3d ball_box(const Region& rg) {
+  return {rg.lo(), rg.hi()};
+}
+
+// A union of shells about a region (world box wbox, centre c_world): where one
+// shell alone has faces there and the centre lies outside every other shell,
+// the union is that shell there. Elsewhere every shell's faces count, and each
+// plane, hole and wedge must show a point of its outer side that is outside
+// every shell (exact ray tests): just outside one shell's face may be inside
+// another.
+template <class Outside>
+LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const PreparedMesh& whole,
+                         double noise, const Region& rg, const Eigen::AlignedBox3d& wbox,
+                         const Vec3& c_world, const Outside& outside_all) {
+  bool complete = false;
+  int alone = -1;
+  bool several = false;
+  std::vector<int> near;
+  for (size_t i = 0; i < shells.size() && !several; ++i) {
+    near.clear();
+    shells[i].faces_in_box(wbox.min(), wbox.max(), near);
+    if (near.empty()) continue;
+    several = alone >= 0;
+    alone = static_cast<int>(i);
+  }
+  if (alone < 0) {
+    LocalPlanes none;
+    none.margin = rg.margin;
+    return none;
+  }
+  if (!several) {
+    bool others_outside = true;
+    for (size_t i = 0; i < shells.size() && others_outside; ++i)
+      others_outside = static_cast<int>(i) == alone || shells[i].outside(c_world);
+    if (others_outside)
+      return planes_near(shells[alone], noise, rg, wbox, false, outside_all, complete);
+  }
+  return planes_near(whole, noise, rg, wbox, true, outside_all, complete);
 }
 
 }  // namespace
@@ -695,45 +853,36 @@ LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r, Widen
   // The faces near the box first (fewer planes, a smaller spread), then, where
   // they leave something unexplained, those within the largest reach.
   bool complete = false;
+  const Region wide = ball_region(c, d, r, tol::kLocalPlanesMaxKappa, noise_);
   if (exact_) {
     const auto outside = [&](const Vec3& p) { return whole_.outside(p); };
+    const Region first = ball_region(c, d, r, tol::kLocalPlanesFirstKappa, noise_);
     LocalPlanes near =
-        planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesFirstKappa, false, outside, complete);
+        planes_near(whole_, noise_, first, ball_box(first), false, outside, complete);
     if (complete || (widen == Widen::kWhenEmpty && !near.empty())) return near;
-    return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, false, outside,
-                       complete);
+    return planes_near(whole_, noise_, wide, ball_box(wide), false, outside, complete);
   }
-  // A union: where one shell alone has faces near the box and the centre lies
-  // outside every other shell, the union is that shell there. Elsewhere every
-  // shell's faces count, and each plane, hole and wedge must show a point of
-  // its outer side that is outside every shell (exact ray tests): just outside
-  // one shell's face may be inside another.
   const auto outside_all = [&](const Vec3& p) {
     return std::all_of(shells_.begin(), shells_.end(),
                        [&](const PreparedMesh& s) { return s.outside(p); });
   };
-  const double reach = tol::kLocalPlanesMaxKappa * (d + r + noise_) + r;
-  int alone = -1;
-  bool several = false;
-  std::vector<int> near;
-  for (size_t i = 0; i < shells_.size() && !several; ++i) {
-    near.clear();
-    shells_[i].faces_in_box(c.array() - reach, c.array() + reach, near);
-    if (near.empty()) continue;
-    several = alone >= 0;
-    alone = static_cast<int>(i);
+  return union_planes(shells_, whole_, noise_, wide, ball_box(wide), c, outside_all);
+}
+
+LocalPlanes SolidDistance::local_planes_in(const FramedBox& box, double margin) const {
+  Eigen::AlignedBox3d wbox;
+  const Region rg = box_region(box, margin, wbox);
+  if (exact_) {
+    bool complete = false;
+    const auto outside = [&](const Vec3& y) { return whole_.outside(box.world(y)); };
+    return planes_near(whole_, noise_, rg, wbox, false, outside, complete);
   }
-  if (alone < 0) return {};
-  if (!several) {
-    bool others_outside = true;
-    for (size_t i = 0; i < shells_.size() && others_outside; ++i)
-      others_outside = static_cast<int>(i) == alone || shells_[i].outside(c);
-    if (others_outside)
-      return planes_near(shells_[alone], noise_, c, d, r, tol::kLocalPlanesMaxKappa, false,
-                         outside_all, complete);
-  }
-  return planes_near(whole_, noise_, c, d, r, tol::kLocalPlanesMaxKappa, true, outside_all,
-                     complete);
+  const auto outside_all = [&](const Vec3& y) {
+    const Vec3 p = box.world(y);
+    return std::all_of(shells_.begin(), shells_.end(),
+                       [&](const PreparedMesh& s) { return s.outside(p); });
+  };
+  return union_planes(shells_, whole_, noise_, rg, wbox, box.world(rg.c), outside_all);
 }
 
 }  // namespace pd

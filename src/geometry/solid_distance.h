@@ -79,7 +79,23 @@ struct LocalPlanes {
   /// How far faces were measured to cross the supporting planes they should lie behind (the
   /// coordinates' rounding; accepted up to noise()): added to the bound, so it holds exactly.
   double slack = 0.0;
+  /// The bounds hold for min(sd(x), margin), not for sd(x): a model about a
+  /// box and a margin (SolidDistance::local_planes_in) looked at no face
+  /// farther than the margin from the box, so it knows nothing where sd is at
+  /// least that. A bound below the margin is a bound of sd; one at or above it
+  /// says nothing. +inf for a ball's model, which bounds sd itself.
+  double margin = std::numeric_limits<double>::infinity();
   bool empty() const { return supporting.empty() && holes.empty() && wedges.empty(); }
+};
+
+/// A box [lo, hi] in a frame of the caller's: the points x = origin + R·y.
+/// R is a rotation; a model about it (local_planes_in) is in y.
+struct FramedBox {
+  Vec3 origin = Vec3::Zero();
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
+  Vec3 world(const Vec3& y) const { return origin + R * y; }
+  Vec3 local(const Vec3& x) const { return R.transpose() * (x - origin); }
 };
 
 /// A closed triangle mesh as a solid. Vertices with equal coordinates are one
@@ -129,6 +145,15 @@ class SolidDistance {
   /// those whose bound's foot points provably stay within that reach.
   LocalPlanes local_planes(const Vec3& c, double d, double r,
                            Widen widen = Widen::kWhenUnexplained) const;
+
+  /// The plane structure of the surface about a box of a frame, in that
+  /// frame's coordinates: the planes of every face within `margin` of the
+  /// box, and bounds of min(sd, margin) (LocalPlanes::margin). No foot point
+  /// has to stay within a reach: a bound that would need a step longer than
+  /// the margin is at least the margin, where the model claims nothing. So a
+  /// long thin box about a seated face sees the faces near it, not everything
+  /// within its half-diagonal.
+  LocalPlanes local_planes_in(const FramedBox& box, double margin) const;
 
  private:
   PreparedMesh whole_;

@@ -25,31 +25,6 @@ struct PairFrame {
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   Vec3 world(const Vec3& y) const { return origin + R * y; }
   Vec3 local(const Vec3& x) const { return R.transpose() * (x - origin); }
-  // A plane in these coordinates: s = (offset − n·origin) − (Rᵀn)·y. The
-  // rounding of the change is added to `slack`, so the bound still holds.
-  FacePlane local(const FacePlane& q, double& rounding) const {
-    rounding = std::max(rounding, 16 * std::numeric_limits<double>::epsilon() *
-                                      (std::abs(q.offset) + origin.cwiseAbs().sum()));
-    return {R.transpose() * q.normal, q.offset - q.normal.dot(origin)};
-  }
-  LocalPlanes local(const LocalPlanes& m) const {
-    LocalPlanes out = m;
-    double rounding = 0.0;
-    for (FacePlane& q : out.supporting) q = local(q, rounding);
-    out.slack += rounding;
-    for (LocalPlanes::Hole& h : out.holes) {
-      rounding = 0.0;
-      for (FacePlane& q : h.planes) q = local(q, rounding);
-      h.slack += rounding;
-    }
-    for (LocalPlanes::Wedge& w : out.wedges) {
-      rounding = 0.0;
-      w.p = local(w.p, rounding);
-      w.q = local(w.q, rounding);
-      w.slack += rounding;
-    }
-    return out;
-  }
 };
 
 // The two parts' plane models of a box. They hold for every point of that box
@@ -65,9 +40,6 @@ struct Cell {
   int depth;
   std::shared_ptr<const Models> models;  ///< this cell's, else its nearest ancestor's; may be null
 };
-// A box whose models leave faces unexplained is split anyway: widening the
-// reach for them costs more than the boxes it saves (solid_distance.h).
-constexpr auto kWiden = SolidDistance::Widen::kWhenEmpty;
 
 struct ByUpper {
   bool operator()(const Cell& x, const Cell& y) const { return x.upper < y.upper; }
@@ -153,7 +125,6 @@ class Search {
   // tried first, then the cell's own, which replace them in `cell.models`
   // when built.
   double bound(Cell& cell, const Probe& p, bool planes) const {
-    const Vec3 c = 0.5 * (cell.lo + cell.hi);
     const double r = 0.5 * (cell.hi - cell.lo).norm();
     if (p.a.upper < -r || p.b.upper < -r) return -INFINITY;  // wholly outside a part
     double upper = p.upper() + r;                            // φ is 1-Lipschitz
@@ -166,17 +137,20 @@ class Search {
       upper = planes_bound(cell.models->a, cell.models->b, common, cell, upper);
       if (upper <= enough) return upper;
     }
-    // One part's model often settles the box alone (below the best point found,
-    // or below half the threshold, where it is never split): the other's is
-    // then not built.
+    // Each part's model looks at the faces within a margin of the box: it
+    // bounds min(sd, margin), which settles the box when the bound comes
+    // below `enough`, the only use a box has for it. One part's model often
+    // settles the box alone (below the best point found, or below half the
+    // threshold, where it is never split): the other's is then not built.
+    const FramedBox box{frame_.origin, frame_.R, cell.lo, cell.hi};
+    const double margin = tol::kThicknessModelMargin * enough;
     auto own = std::make_shared<Models>();
-    const Vec3 w = frame_.world(c);  // a ball's models do not depend on the frame's axes
-    own->a = frame_.local(a_.local_planes(w, std::abs(p.a.lower), r, kWiden));
+    own->a = a_.local_planes_in(box, margin);
     if (!own->a.empty()) {
       upper = planes_bound(own->a, LocalPlanes{}, common, cell, upper);
       if (upper <= enough) return upper;
     }
-    own->b = frame_.local(b_.local_planes(w, std::abs(p.b.lower), r, kWiden));
+    own->b = b_.local_planes_in(box, margin);
     if (!own->b.empty()) upper = planes_bound(own->a, own->b, common, cell, upper);
     if (!own->a.empty() || !own->b.empty()) cell.models = std::move(own);
     return upper;
@@ -197,12 +171,18 @@ class Search {
   // no better or there are too many choices.
   double planes_bound(const LocalPlanes& la, const LocalPlanes& lb,
                       const std::vector<Affine>& common, const Cell& cell, double upper) const {
+    const double original = upper;
     if (la.empty() && lb.empty()) return upper;
+    // A model about a box and a margin bounds min(φ, margin): a bound at or
+    // above the least margin says nothing.
+    const double limit =
+        std::min(la.empty() ? INFINITY : la.margin, lb.empty() ? INFINITY : lb.margin);
+    upper = std::min(upper, limit);
     const auto alts_a = alternatives(la, cell.lo, cell.hi),
                alts_b = alternatives(lb, cell.lo, cell.hi);
     if (alts_a.empty() || alts_b.empty()) return -INFINITY;  // outside a part throughout
     if (alts_a.size() * alts_b.size() > static_cast<size_t>(tol::kLocalPlanesMaxChoices))
-      return upper;
+      return original;
     double model = -INFINITY;
     std::vector<Affine> f;
     for (const auto& x : alts_a)
@@ -214,7 +194,7 @@ class Search {
         // cannot raise it: its small LP is not solved.
         if (min_max_affine(f, cell.lo, cell.hi) <= model) continue;
         model = std::max(model, max_min_affine(f, cell.lo, cell.hi));
-        if (!(model < upper)) return upper;
+        if (!(model < upper)) return original;
       }
     return model;
   }
