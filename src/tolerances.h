@@ -238,7 +238,7 @@ inline constexpr double kThicknessBracket = 0.25;
 inline constexpr long kThicknessBracketMinEvaluations = 5000;
 /// A box's plane models look at the faces within this multiple of the bound
 /// that settles it (the best point found, or half the tolerance) of the box,
-/// and bound min(sd, margin) (geometry/solid_distance.h, local_planes_in).
+/// and bound min(sd, margin) (geometry/solid_distance.h, local_planes).
 /// Effort, not accuracy: a model is sound at any margin, and a bound at or
 /// above the margin is dropped. A smaller margin sees fewer faces, but its
 /// bound must come below it; on the CAD assemblies (docs/performance.md) 2
@@ -258,22 +258,15 @@ inline constexpr long kSurfaceDepthSamples = 2000;
 /// bound holds. And the largest kappa = 1/cos(spread of a hole's normals)
 /// accepted: 2, a spread <= 60 degrees (a shaft's shoulder, a 90-degree inner
 /// corner, has sqrt 2); a larger kappa would only loosen the bound. 40 hole
-/// planes let a whole small bore within the reach (a 6 mm bore of 72 facets
+/// planes let a whole small bore within the margin (a 6 mm bore of 72 facets
 /// seen from a 1.3 mm box) be one hole: on the CAD hinge's pin pair, 16 split
 /// its boxes down to 0.6 mm (9,987 boxes against 5,251).
 inline constexpr int kLocalPlanesMaxFaces = 512;
 inline constexpr int kLocalPlanesMaxPlanes = 40;
 inline constexpr int kLocalPlanesMaxChoices = 80;
 inline constexpr double kLocalPlanesMaxKappa = 2.0;
-/// The faces a plane model looks at first lie within kLocalPlanesFirstKappa·(d
-/// + r + noise) + r of the box's centre (enough for the feet of a hole whose
-/// normals spread up to 24 degrees); only where those leave faces unexplained
-/// is the largest reach (kLocalPlanesMaxKappa) tried. A smaller reach sees fewer
-/// facets of a bore, so a larger box gets a model: on the CAD assemblies 1.1
-/// took about 7 % fewer boxes than 1.25 (docs/performance.md), 1.5 more.
-inline constexpr double kLocalPlanesFirstKappa = 1.1;
 /// Where a hole's normals spread wider than kLocalPlanesMaxKappa allows (a
-/// small hole wholly within the reach), its feet move along the mean of the
+/// small hole wholly within the margin), its feet move along the mean of the
 /// normals within 45 degrees (cos 0.7) of the plane the box's centre lies
 /// deepest behind; the planes outside the spread must then stay behind every
 /// foot (checked).

@@ -274,50 +274,36 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
 
 namespace {
 
-// Where a plane model's bounds must hold, and where their foot points may go
-// (docs/solver.md, "Plane models"):
-// - a ball (local_planes): sd(x) at every point x of the box about c whose
-//   half-diagonal is r; each bound's foot points stay within `reach` of c,
-//   and the faces there are all that were looked at;
-// - a box of the caller's frame and a margin (local_planes_in): min(sd(x),
-//   margin) at every x of the box c ± e. A bound that needs a foot step of the
-//   margin or more is at least the margin, where nothing is claimed, so the
-//   faces within the margin of the box are all that count. Coordinates are
-//   the frame's.
+// Where a plane model's bounds hold, and which faces it looks at
+// (docs/solver.md, "Upper bound, planes"): min(sd(x), margin) at every x of
+// the box c ± e of the caller's frame. A bound that would need a foot step of
+// the margin or more is at least the margin, where nothing is claimed, so the
+// faces within the margin of the box are all that count, and no foot point
+// has to be kept anywhere. Coordinates are the frame's.
 struct Region {
   Vec3 c = Vec3::Zero();
-  double r = 0.0;            ///< the box's half-diagonal
-  Vec3 e = Vec3::Zero();     ///< a box: its half-extents
-  double reach = 0.0;        ///< a ball: its radius
-  double margin = INFINITY;  ///< a box: its margin
-  bool box = false;
-  const FramedBox* frame = nullptr;  ///< a box: its frame
-  double pad = 0.0;                  ///< a box: how far taking faces into the frame may move them
-  /// The largest s_q over the box (over the ball of radius r, which holds it).
-  double most(const FacePlane& q) const { return q.at(c) + (box ? e.dot(q.normal.cwiseAbs()) : r); }
+  Vec3 e = Vec3::Zero();  ///< half-extents
+  double r = 0.0;         ///< half-diagonal
+  double margin = 0.0;
+  const FramedBox* frame = nullptr;
+  double pad = 0.0;  ///< how far taking a face into the frame may move it
+  /// The largest and the least s_q over the box.
+  double most(const FacePlane& q) const { return q.at(c) + e.dot(q.normal.cwiseAbs()); }
+  double least(const FacePlane& q) const { return q.at(c) - e.dot(q.normal.cwiseAbs()); }
   /// The longest foot step a bound needs, given the longest its values allow.
   double step(double longest) const { return std::min(longest, margin); }
-  /// Whether foot steps that long keep every foot point where faces were looked at.
-  bool feet_within(double longest) const { return box || r + longest <= reach; }
-  /// Whether a supporting plane's feet stay within: s_q(x) ≤ s_q(c) + r, and
-  /// a foot lies within r of x.
-  bool supports(const FacePlane& q) const { return box || q.at(c) + 2.0 * r <= reach; }
-  /// Whether z lies (strictly) where faces were looked at.
+  /// Whether z lies (strictly) within the margin of the box.
   bool contains(const Vec3& z) const {
-    return box ? ((z - c).cwiseAbs().array() < (e.array() + margin)).all() : (z - c).norm() < reach;
+    return ((z - c).cwiseAbs().array() < (e.array() + margin)).all();
   }
-  /// The box the faces are clipped to.
-  Vec3 lo() const {
-    return box ? Vec3(c - e - Vec3::Constant(margin + 2 * pad)) : Vec3(c.array() - reach);
-  }
-  Vec3 hi() const {
-    return box ? Vec3(c + e + Vec3::Constant(margin + 2 * pad)) : Vec3(c.array() + reach);
-  }
+  /// The box the faces are clipped to: the margin, widened for the frame's rounding.
+  Vec3 lo() const { return c - e - Vec3::Constant(margin + 2 * pad); }
+  Vec3 hi() const { return c + e + Vec3::Constant(margin + 2 * pad); }
   /// How far a witness point is pushed beyond the planes it tests.
   double gap(double cap) const { return 0.5 * std::min(r, margin) + 1e-3 * cap; }
-  /// Where a witness's foot step may start: c, and for a box also its corner
-  /// farthest along u (a plane beyond the box's side is nearest there).
-  int starts() const { return box ? 2 : 1; }
+  /// Where a witness's foot step may start: c, then the box's corner farthest
+  /// along u (a plane beyond the box's side is nearest there).
+  static constexpr int kStarts = 2;
   Vec3 start(int k, const Vec3& u) const {
     if (k == 0) return c;
     return c + Vec3(u.x() >= 0 ? e.x() : -e.x(), u.y() >= 0 ? e.y() : -e.y(),
@@ -325,43 +311,22 @@ struct Region {
   }
 };
 
-// A face near a ball: its part inside the ball's box, and the disk its plane
-// cuts from the ball. Every side test below is about the face's points within
-// the ball (the certificates hold there, docs/solver.md), which lie in both:
-// the disk keeps a large face's part beyond the ball, which the box still
-// holds, from failing a test for no reason.
+// A face near a box: its part within the region's clipping box, where every
+// side test below is about (the certificates hold there, docs/solver.md).
 struct FacePart {
-  ClippedFace points;  ///< clipped to the box
+  ClippedFace points;
   Vec3 normal = Vec3::UnitZ();
-  Vec3 centre = Vec3::Zero();  ///< of the disk: the ball's centre projected on the face's plane
-  double radius = 0.0;
-  bool disk = true;  ///< a ball's face; a box's has its points alone
-  /// How far plane q's s can vary over the disk from its centre.
-  double spread(const FacePlane& q) const {
-    return radius * (q.normal - q.normal.dot(normal) * normal).norm();
-  }
-  /// A lower bound of s_q over the face's points within the ball.
-  /// (The disk is consulted only where the points cross the plane: the tests
-  /// care about the sign, and it costs a square root.)
-  double least(const FacePlane& q) const { return least_refined(q, least_at_points(q)); }
-  /// The least s_q at the points alone, and least() from it.
-  double least_at_points(const FacePlane& q) const {
+  /// The least s_q over the face's points.
+  double least(const FacePlane& q) const {
     double m = INFINITY;
     for (const Vec3& p : points) m = std::min(m, q.at(p));
     return m;
   }
-  double least_refined(const FacePlane& q, double m) const {
-    return m >= 0 || !disk ? m : std::max(m, q.at(centre) - spread(q));
-  }
-  /// An upper bound of s_q over them.
-  double greatest(const FacePlane& q) const { return greatest_refined(q, greatest_at_points(q)); }
-  double greatest_at_points(const FacePlane& q) const {
+  /// The greatest s_q over them.
+  double greatest(const FacePlane& q) const {
     double m = -INFINITY;
     for (const Vec3& p : points) m = std::max(m, q.at(p));
     return m;
-  }
-  double greatest_refined(const FacePlane& q, double m) const {
-    return m <= 0 || !disk ? m : std::min(m, q.at(centre) + spread(q));
   }
 };
 
@@ -393,10 +358,10 @@ struct PlaneGroup {
 };
 
 // The wedge of groups g and h (LocalPlanes::Wedge), if it is complement about
-// c: no face reaches more than `cap` into it, every foot point of its bound
-// stays within the reach, and a point of it (c's foot point, a little
-// further) is outside the solid (`outside`, exact). W less its measured crossing is convex
-// and holds no surface, so that one point decides all of it.
+// the box: no face reaches more than `cap` into it, and a point of it within
+// the margin (the foot point of the box's centre or corner, a little further)
+// is outside the solid (`outside`, exact). W less its measured crossing, within
+// the margin, is convex and holds no surface, so that one point decides all of it.
 template <class Outside>
 std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup& h,
                                            const std::vector<PlaneGroup>& groups, double cap,
@@ -411,11 +376,9 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
       if (x > cap) return std::nullopt;
       w.slack = std::max(w.slack, x);
     }
-  if (!rg.feet_within(w.kappa * (std::max(rg.most(g.plane), rg.most(h.plane)) + w.slack)))
-    return std::nullopt;
   // The witness: a start's own foot point, a little further in.
   const double gap = rg.gap(cap);
-  for (int k = 0; k < rg.starts(); ++k) {
+  for (int k = 0; k < Region::kStarts; ++k) {
     const Vec3 x = rg.start(k, mean);
     const double sigma = std::max(g.plane.at(x), h.plane.at(x));
     const Vec3 z = x + w.kappa * std::max(sigma + w.slack + gap, gap) * mean;
@@ -427,11 +390,11 @@ std::optional<LocalPlanes::Wedge> wedge_of(const PlaneGroup& g, const PlaneGroup
 
 // A convex hole among the non-supporting groups (LocalPlanes::hole): each of
 // its faces on the outer side of the others' planes, every other face on the
-// inner side of one of them, every foot point within the reach, and the
-// planes the feet do not move against ("far") behind every foot. Sets out's
-// hole (the near planes), kappa and slack when it is one.
+// inner side of one of them, and the planes the feet do not move against
+// ("far") behind every foot within the margin. Sets out's hole (the near
+// planes), kappa and slack when it is one.
 // With `witness` (a union of shells, where just outside one shell's face may
-// be inside another), the hole's own foot point from c must also be outside.
+// be inside another), a foot point within the margin must also be outside.
 template <class Outside>
 std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& groups,
                                              const std::vector<const PlaneGroup*>& hole,
@@ -439,21 +402,13 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
                                              bool witness, const Outside& outside) {
   using Group = PlaneGroup;
   const Vec3& c = rg.c;
-  // Below, a face's values at its points come first: the disk can only move
-  // them towards the plane, so where they change nothing its square root is
-  // not taken.
   double hole_slack = slack;
   for (const Group* g : hole) {
-    for (const auto& t : g->faces) {
-      const double m = t.least_at_points(g->plane);
-      if (-m > hole_slack) hole_slack = std::max(hole_slack, -t.least_refined(g->plane, m));
-    }
+    for (const auto& t : g->faces) hole_slack = std::max(hole_slack, -t.least(g->plane));
     for (const Group* h : hole) {
       if (g == h) continue;
       for (const auto& t : g->faces) {
-        const double raw = t.greatest_at_points(h->plane);
-        if (raw <= hole_slack && raw <= cap) continue;
-        const double m = -t.greatest_refined(h->plane, raw);
+        const double m = -t.greatest(h->plane);
         if (m < -cap) return std::nullopt;
         hole_slack = std::max(hole_slack, -m);
       }
@@ -462,12 +417,11 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
   for (const Group& g : groups) {
     if (std::find(hole.begin(), hole.end(), &g) != hole.end()) continue;
     for (const auto& t : g.faces) {
-      const bool settled = std::any_of(hole.begin(), hole.end(), [&](const Group* h) {
-        return t.least_at_points(h->plane) >= -std::min(hole_slack, cap);
-      });
-      if (settled) continue;
       double best = -INFINITY;
-      for (const Group* h : hole) best = std::max(best, t.least(h->plane));
+      for (const Group* h : hole) {
+        best = std::max(best, t.least(h->plane));
+        if (best >= -std::min(hole_slack, cap)) break;  // settled: nothing would change
+      }
       if (best < -cap) return std::nullopt;
       hole_slack = std::max(hole_slack, -best);
     }
@@ -507,14 +461,13 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
   const double kappa = 1.0 / cos_spread;
   // The farthest foot step.
   const double longest = rg.step(kappa * std::max(most + hole_slack, 0.0));
-  if (!rg.feet_within(longest)) return std::nullopt;  // a foot could leave the ball
   for (const Group* g : far)
     if (rg.most(g->plane) + longest * std::max(0.0, -g->plane.normal.dot(mean)) > -hole_slack)
       return std::nullopt;
   if (witness) {
     const double gap = rg.gap(cap);
     std::optional<Vec3> found;
-    for (int k = 0; k < rg.starts() && !found; ++k) {
+    for (int k = 0; k < Region::kStarts && !found; ++k) {
       const Vec3 x = rg.start(k, mean);
       double sigma = -INFINITY;
       for (const Group* g : near) sigma = std::max(sigma, g->plane.at(x));
@@ -538,8 +491,7 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
     const std::vector<const PlaneGroup*>& hole, double cap) {
   const auto outer = [&](const PlaneGroup* g, const PlaneGroup* h) {
     for (const auto& t : g->faces) {
-      const double raw = t.greatest_at_points(h->plane);  // the disk only lowers it
-      if (raw > cap && t.greatest_refined(h->plane, raw) > cap) return false;
+      if (t.greatest(h->plane) > cap) return false;
     }
     return true;
   };
@@ -559,39 +511,22 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
   return out;
 }
 
-// The faces of `mesh` meeting the region (the ball of radius `reach` about c,
-// or the box and its margin), clipped to its box and grouped by plane (within
-// `cap`); nullopt when a face has no normal (degenerate).
+// The faces of `mesh` (world coordinates) taken into the region's frame,
+// clipped to its box and grouped by plane (within `cap`); nullopt when a face
+// has no normal (degenerate).
 std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                                                    const std::vector<int>& faces, const Region& rg,
                                                    double cap) {
   const Vec3 box_lo = rg.lo(), box_hi = rg.hi();
-  const Vec3& c = rg.c;
-  const double reach = rg.reach;
   std::vector<PlaneGroup> groups;
   size_t last = 0;
-  const double reach2 = reach * reach;
   for (int f : faces) {
     std::array<Vec3, 3> t = mesh.face(f);
-    if (rg.frame)
-      for (Vec3& v : t) v = rg.frame->local(v);
-    // Corners within the ball: so is the face (its nearest point is no farther).
-    const bool corners_in =
-        rg.box || ((t[0] - c).squaredNorm() <= reach2 && (t[1] - c).squaredNorm() <= reach2 &&
-                   (t[2] - c).squaredNorm() <= reach2);
-    if (!corners_in && (closest_on_triangle(c, t[0], t[1], t[2]) - c).norm() > reach) continue;
+    for (Vec3& v : t) v = rg.frame->local(v);
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return std::nullopt;
-    FacePart part{clip_to_box(t, box_lo, box_hi), n, Vec3::Zero(), 0.0, !rg.box};
+    FacePart part{clip_to_box(t, box_lo, box_hi), n};
     if (part.points.empty()) continue;
-    if (part.disk) {
-      // The disk, widened for the rounding of its centre and of n (a few ulps
-      // of the coordinates), so that it holds every point of the face within the ball.
-      const double height = n.dot(c - t[0]);
-      part.centre = c - height * n;
-      part.radius = std::sqrt(std::max(0.0, reach * reach - height * height)) +
-                    8 * std::numeric_limits<double>::epsilon() * (c.cwiseAbs().maxCoeff() + reach);
-    }
     const auto same_plane = [&](const PlaneGroup& q) {
       return q.plane.normal.dot(n) > 0.999 &&
              std::all_of(part.points.begin(), part.points.end(),
@@ -620,16 +555,11 @@ std::vector<double> measure_crossings(std::vector<PlaneGroup>& groups, double ca
   for (size_t k = 0; k < groups.size(); ++k)
     for (size_t h = 0; h < groups.size() && groups[k].supporting; ++h)
       for (const auto& t : groups[h].faces) {
-        const double m = t.least_at_points(groups[k].plane);
-        // The disk can only raise m: where m already neither crosses nor
-        // raises the crossing, its square root is not taken.
-        if (m < 0 && (m < -cap || -m > crossing[k])) {
-          const double refined = t.least_refined(groups[k].plane, m);
-          crossing[k] = std::max(crossing[k], -refined);
-          if (refined < -cap) {
-            groups[k].supporting = false;
-            break;
-          }
+        const double m = t.least(groups[k].plane);
+        crossing[k] = std::max(crossing[k], -m);
+        if (m < -cap) {
+          groups[k].supporting = false;
+          break;
         }
       }
   return crossing;
@@ -642,8 +572,9 @@ bool crosses(const PlaneGroup& g, const PlaneGroup& h, double cap) {
 }
 
 // Each supporting plane bounds sd on its own: the nearest ones (at most
-// kLocalPlanesMaxPlanes, every foot point within the reach) bound it best.
-// With `witness`, a point beyond the plane's crossings must be outside.
+// kLocalPlanesMaxPlanes) bound it best, and one at or above the margin
+// throughout the box bounds nothing. With `witness`, a point beyond the
+// plane's crossings, within the margin, must be outside.
 template <class Outside>
 void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<double>& crossing,
                     const Region& rg, double cap, bool witness, const Outside& outside,
@@ -651,7 +582,7 @@ void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<dou
   const Vec3& c = rg.c;
   std::vector<std::pair<double, size_t>> nearest;  // by s(c)
   for (size_t k = 0; k < groups.size(); ++k)
-    if (groups[k].supporting && rg.supports(groups[k].plane))
+    if (groups[k].supporting && rg.least(groups[k].plane) + crossing[k] < rg.margin)
       nearest.push_back({groups[k].plane.at(c), k});
   std::sort(nearest.begin(), nearest.end());
   if (nearest.size() > static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
@@ -660,7 +591,7 @@ void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<dou
     if (witness) {
       const FacePlane& q = groups[k].plane;
       bool shown = false;  // a point beyond the crossings, outside
-      for (int j = 0; j < rg.starts(); ++j) {
+      for (int j = 0; j < Region::kStarts; ++j) {
         const Vec3 x = rg.start(j, q.normal);
         const double step = std::max(q.at(x), 0.0) + crossing[k] + rg.gap(cap);
         const Vec3 z = x + step * q.normal;
@@ -733,16 +664,12 @@ void add_wedges(const std::vector<PlaneGroup>& groups, const std::vector<const P
 
 // The plane model of one oriented closed mesh about a region;
 // `outside(p)`: p (in the region's coordinates) strictly outside the solid.
-// The faces meeting `wbox` (world coordinates, holding the region) count;
-// `complete` tells whether every face there was explained (no hole, or convex
-// ones), so that a larger reach could not do better.
+// The faces meeting `wbox` (world coordinates, holding the region) count.
 template <class Outside>
 LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg,
-                        const Eigen::AlignedBox3d& wbox, bool witness, const Outside& outside,
-                        bool& complete) {
+                        const Eigen::AlignedBox3d& wbox, bool witness, const Outside& outside) {
   LocalPlanes out;
   out.margin = rg.margin;
-  complete = false;
   // Needles (collinear triangles, segments in PreparedMesh) are not checked:
   // in a closed mesh each lies on the edge of the face across its longest
   // side, so that face's checks cover its points.
@@ -761,8 +688,9 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg
   std::vector<const PlaneGroup*> hole;
   for (const PlaneGroup& g : *groups)
     if (!g.supporting) hole.push_back(&g);
-  complete = hole.empty() || add_holes(*groups, hole, cap, rg, witness, outside, out);
-  if (!complete && hole.size() <= static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
+  // Wedges only where the holes leave planes unexplained.
+  const bool explained = hole.empty() || add_holes(*groups, hole, cap, rg, witness, outside, out);
+  if (!explained && hole.size() <= static_cast<size_t>(tol::kLocalPlanesMaxPlanes))
     add_wedges(*groups, hole, cap, rg, outside, out);
   // The frame's rounding: the faces looked at are within pad of the true ones.
   out.slack += rg.pad;
@@ -771,22 +699,9 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg
   return out;
 }
 
-// The ball about c whose radius holds every foot point a bound uses: a
-// supporting plane's within r + s_k(x) ≤ 2r + s_k(c) (planes farther are not
-// used), a hole's within r + kappa·(σ_c + r + slack) (checked once kappa is
-// known), for d = |sd(c)| and the box's half-diagonal r.
-Region ball_region(const Vec3& c, double d, double r, double reach_kappa, double noise) {
-  Region rg;
-  rg.c = c;
-  rg.r = r;
-  rg.reach = reach_kappa * (d + r + noise) + r;
-  return rg;
-}
-
 // A framed box and its margin, and the world box that holds it.
 Region box_region(const FramedBox& box, double margin, Eigen::AlignedBox3d& wbox) {
   Region rg;
-  rg.box = true;
   rg.frame = &box;
   rg.c = 0.5 * (box.lo + box.hi);
   rg.e = 0.5 * (box.hi - box.lo);
@@ -807,10 +722,6 @@ Region box_region(const FramedBox& box, double margin, Eigen::AlignedBox3d& wbox
   return rg;
 }
 
-Eigen::AlignedBox3d ball_box(const Region& rg) {
-  return {rg.lo(), rg.hi()};
-}
-
 // A union of shells about a region (world box wbox, centre c_world): where one
 // shell alone has faces there and the centre lies outside every other shell,
 // the union is that shell there. Elsewhere every shell's faces count, and each
@@ -821,7 +732,6 @@ template <class Outside>
 LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const PreparedMesh& whole,
                          double noise, const Region& rg, const Eigen::AlignedBox3d& wbox,
                          const Vec3& c_world, const Outside& outside_all) {
-  bool complete = false;
   int alone = -1;
   bool several = false;
   std::vector<int> near;
@@ -841,41 +751,19 @@ LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const Prepared
     bool others_outside = true;
     for (size_t i = 0; i < shells.size() && others_outside; ++i)
       others_outside = static_cast<int>(i) == alone || shells[i].outside(c_world);
-    if (others_outside)
-      return planes_near(shells[alone], noise, rg, wbox, false, outside_all, complete);
+    if (others_outside) return planes_near(shells[alone], noise, rg, wbox, false, outside_all);
   }
-  return planes_near(whole, noise, rg, wbox, true, outside_all, complete);
+  return planes_near(whole, noise, rg, wbox, true, outside_all);
 }
 
 }  // namespace
 
-LocalPlanes SolidDistance::local_planes(const Vec3& c, double d, double r, Widen widen) const {
-  // The faces near the box first (fewer planes, a smaller spread), then, where
-  // they leave something unexplained, those within the largest reach.
-  bool complete = false;
-  const Region wide = ball_region(c, d, r, tol::kLocalPlanesMaxKappa, noise_);
-  if (exact_) {
-    const auto outside = [&](const Vec3& p) { return whole_.outside(p); };
-    const Region first = ball_region(c, d, r, tol::kLocalPlanesFirstKappa, noise_);
-    LocalPlanes near =
-        planes_near(whole_, noise_, first, ball_box(first), false, outside, complete);
-    if (complete || (widen == Widen::kWhenEmpty && !near.empty())) return near;
-    return planes_near(whole_, noise_, wide, ball_box(wide), false, outside, complete);
-  }
-  const auto outside_all = [&](const Vec3& p) {
-    return std::all_of(shells_.begin(), shells_.end(),
-                       [&](const PreparedMesh& s) { return s.outside(p); });
-  };
-  return union_planes(shells_, whole_, noise_, wide, ball_box(wide), c, outside_all);
-}
-
-LocalPlanes SolidDistance::local_planes_in(const FramedBox& box, double margin) const {
+LocalPlanes SolidDistance::local_planes(const FramedBox& box, double margin) const {
   Eigen::AlignedBox3d wbox;
   const Region rg = box_region(box, margin, wbox);
   if (exact_) {
-    bool complete = false;
     const auto outside = [&](const Vec3& y) { return whole_.outside(box.world(y)); };
-    return planes_near(whole_, noise_, rg, wbox, false, outside, complete);
+    return planes_near(whole_, noise_, rg, wbox, false, outside);
   }
   const auto outside_all = [&](const Vec3& y) {
     const Vec3 p = box.world(y);

@@ -33,18 +33,21 @@ struct FacePlane {
   double at(const Vec3& x) const { return offset - normal.dot(x); }
 };
 
-/// The surface near a ball, as planes that bound the distance from inside from
-/// above for every point x of a box about the ball's centre that lies in the
-/// solid (docs/solver.md, "Overlap thickness"):
-/// - supporting planes: every face near the ball lies on their inner side, so
-///   the solid's complement holds each one's outer half-ball and
-///   sd(x) ≤ s_k(x) + slack for each k (a pin's facets, a plate's face);
+/// The surface near a box, as planes that bound the distance from inside from
+/// above: for every point x of the box in the solid, min(sd(x), margin) is at
+/// most each bound below, where the faces within the margin of the box are
+/// all that were looked at (docs/solver.md, "Overlap thickness"). A bound that
+/// would need a foot point farther than the margin is at least the margin, so
+/// no foot point has to be kept anywhere.
+/// - supporting planes: every face within the margin lies on their inner side,
+///   so the solid's complement holds each one's outer side there, and
+///   min(sd(x), margin) ≤ s_k(x) + slack for each k (a pin's facets, a plate's face);
 /// - hole planes: the other faces' planes, when they bound a convex hole (each
 ///   such face on the outer side of the others' planes, every other face on the
 ///   inner side of one of them, normals within 60° of their mean m): the
 ///   complement then holds the intersection of their outer sides, and
-///   sd(x) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread), since
-///   moving x along m by that much leaves every outer side's boundary behind.
+///   min(sd(x), margin) ≤ kappa · (max_k s_k(x) + slack), kappa = 1 / cos(spread),
+///   since moving x along m by that much leaves every outer side's boundary behind.
 ///   Where the normals spread wider (a small hole wholly near the box), m is
 ///   the mean of those facing the box, the hole keeps only the planes within 60°
 ///   of it, and the others are checked to stay behind every foot. Where the
@@ -54,9 +57,9 @@ struct FacePlane {
 /// - wedges, where the other faces bound no convex hole (a pin's shank meeting
 ///   its head's underside: the complement is the union of one wedge per shank
 ///   facet): two planes whose outer sides' intersection W holds no face within
-///   the reach and a point outside the solid (an exact ray test), so W is
-///   complement there and sd(x) ≤ kappa · (max(s_p(x), s_q(x)) + slack) for
-///   each wedge, kappa = 1 / cos(half the angle between their normals).
+///   the margin and a point outside the solid (an exact ray test), so W is
+///   complement there and min(sd(x), margin) ≤ kappa · (max(s_p(x), s_q(x)) +
+///   slack) for each wedge, kappa = 1 / cos(half the angle between their normals).
 /// All empty: nothing could be certified (degenerate faces, no orientation,
 /// too many faces); the Lipschitz bound still holds.
 struct LocalPlanes {
@@ -79,17 +82,16 @@ struct LocalPlanes {
   /// How far faces were measured to cross the supporting planes they should lie behind (the
   /// coordinates' rounding; accepted up to noise()): added to the bound, so it holds exactly.
   double slack = 0.0;
-  /// The bounds hold for min(sd(x), margin), not for sd(x): a model about a
-  /// box and a margin (SolidDistance::local_planes_in) looked at no face
-  /// farther than the margin from the box, so it knows nothing where sd is at
-  /// least that. A bound below the margin is a bound of sd; one at or above it
-  /// says nothing. +inf for a ball's model, which bounds sd itself.
-  double margin = std::numeric_limits<double>::infinity();
+  /// The bounds hold for min(sd(x), margin), not for sd(x): the model looked
+  /// at no face farther than the margin from its box, so it knows nothing
+  /// where sd is at least that. A bound below the margin is a bound of sd;
+  /// one at or above it says nothing.
+  double margin = 0.0;
   bool empty() const { return supporting.empty() && holes.empty() && wedges.empty(); }
 };
 
 /// A box [lo, hi] in a frame of the caller's: the points x = origin + R·y.
-/// R is a rotation; a model about it (local_planes_in) is in y.
+/// R is a rotation; a model about it (SolidDistance::local_planes) is in y.
 struct FramedBox {
   Vec3 origin = Vec3::Zero();
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
@@ -131,29 +133,11 @@ class SolidDistance {
   /// `near_face`: as PreparedMesh::signed_distance's, for a run of nearby queries.
   DistanceBounds at(const Vec3& p, int* near_face = nullptr) const;
 
-  /// When the faces near a box leave something unexplained, whether those
-  /// within the largest reach are tried as well: always (the best model), or
-  /// only when the nearer ones gave none at all. A model that leaves faces
-  /// unexplained still bounds the box, and the larger reach rarely explains
-  /// them (a bore's wider arc, more planes) while it costs about twice as much:
-  /// a branch and bound that splits the box anyway does better without it.
-  enum class Widen { kWhenUnexplained, kWhenEmpty };
-
-  /// The plane structure of the surface around a box of half-diagonal r about
-  /// c, for a centre at distance d from the surface (|at(c)|): the planes of
-  /// every face within reach = kappa_max·(d + r + noise) + r of c, and only
-  /// those whose bound's foot points provably stay within that reach.
-  LocalPlanes local_planes(const Vec3& c, double d, double r,
-                           Widen widen = Widen::kWhenUnexplained) const;
-
   /// The plane structure of the surface about a box of a frame, in that
-  /// frame's coordinates: the planes of every face within `margin` of the
-  /// box, and bounds of min(sd, margin) (LocalPlanes::margin). No foot point
-  /// has to stay within a reach: a bound that would need a step longer than
-  /// the margin is at least the margin, where the model claims nothing. So a
-  /// long thin box about a seated face sees the faces near it, not everything
-  /// within its half-diagonal.
-  LocalPlanes local_planes_in(const FramedBox& box, double margin) const;
+  /// frame's coordinates: the planes of the faces within `margin` of the
+  /// box, bounding min(sd, margin) (LocalPlanes). A long thin box about a
+  /// seated face sees the faces near it, not all within its half-diagonal.
+  LocalPlanes local_planes(const FramedBox& box, double margin) const;
 
  private:
   PreparedMesh whole_;

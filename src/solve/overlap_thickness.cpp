@@ -145,12 +145,12 @@ class Search {
     const FramedBox box{frame_.origin, frame_.R, cell.lo, cell.hi};
     const double margin = tol::kThicknessModelMargin * enough;
     auto own = std::make_shared<Models>();
-    own->a = a_.local_planes_in(box, margin);
+    own->a = a_.local_planes(box, margin);
     if (!own->a.empty()) {
       upper = planes_bound(own->a, LocalPlanes{}, common, cell, upper);
       if (upper <= enough) return upper;
     }
-    own->b = b_.local_planes_in(box, margin);
+    own->b = b_.local_planes(box, margin);
     if (!own->b.empty()) upper = planes_bound(own->a, own->b, common, cell, upper);
     if (!own->a.empty() || !own->b.empty()) cell.models = std::move(own);
     return upper;
