@@ -69,13 +69,13 @@ void note_gap_band(PairResult& r, const PairTolerance* band, const std::optional
 
 ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance& b,
                                      double tolerance, const PairTolerance* band, double upper_hint,
-                                     const std::optional<Vec3>& surface_at) {
+                                     const std::function<std::optional<Vec3>()>& surface_at) {
   using Outcome = ThicknessResult::Outcome;
   ThicknessResult t = overlap_thickness(a, b, tolerance, upper_hint);
   if (!band || !band->at_contact || t.outcome != Outcome::kBelow) return t;
-  if (!(t.lower > 0) && !surface_at) return t;  // no place known
-  const Vec3 at = t.lower > 0 ? t.at : *surface_at;
-  const double local = band->at_contact(at, contact_reach(t.upper, tolerance)).value;
+  const std::optional<Vec3> at = t.lower > 0 ? std::optional<Vec3>(t.at) : surface_at();
+  if (!at) return t;  // no place known
+  const double local = band->at_contact(*at, contact_reach(t.upper, tolerance)).value;
   if (!(local < tolerance) || t.upper <= local || t.lower > local) return t;
   ThicknessResult again = overlap_thickness(a, b, local, t.upper);
   again.evaluations += t.evaluations;

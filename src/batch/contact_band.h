@@ -5,6 +5,7 @@
 // there (docs/numerics.md, "The band at the contact").
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include "batch/pair_tolerance.h"
@@ -51,10 +52,11 @@ void note_gap_band(PairResult& r, const PairTolerance* band, const std::optional
 /// hint). The brackets are merged (the higher lower bound with its witness, the
 /// lower upper bound) and the outcome is said against `tolerance`, as
 /// decide_thickness expects; decide_at_contact then says it at the contact.
-/// `surface_at` (the deepest surface point) is the contact when the search
-/// finds no common interior point (a sliver thinner than its cells).
+/// `surface_at()` (the deepest surface point, found only when asked) is the
+/// contact when the search finds no common interior point (a sliver thinner
+/// than its cells).
 ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance& b,
                                      double tolerance, const PairTolerance* band, double upper_hint,
-                                     const std::optional<Vec3>& surface_at);
+                                     const std::function<std::optional<Vec3>()>& surface_at);
 
 }  // namespace pd

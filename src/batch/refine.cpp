@@ -297,22 +297,40 @@ std::vector<std::pair<size_t, StoredRefinement>> take_cached(
   return hits;
 }
 
-// Step 2 for one pair whose surfaces meet: the deepest point of either surface
-// inside the other (into `v`: a lower bound of any separating move that needs
-// no inside of the surface's own part), then the overlap thickness; its time
-// goes to the pair's, and `why_not` says what an open surface lacks.
+// Step 2 for one pair whose surfaces meet: the overlap thickness, and the
+// deepest point of either surface inside the other (into `v`: a lower bound of
+// any separating move that needs no inside of the surface's own part); its
+// time goes to the pair's, and `why_not` says what an open surface lacks.
+// The deepest point is what an open pair reports. Between solids it only
+// guards against a thin part pushed deep (decide_thickness), which a thick
+// overlap needs no guard against, and only a point deeper than the tolerance
+// can decide: it is sought only there, unless the contact's band needs its
+// place.
 ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b, double tolerance,
                                   const PairTolerance* band, PairResult& r, MeshVerdict& v,
                                   std::string& why_not) {
   const auto t0 = Clock::now();
-  const SurfaceDepth ab = surface_depth(a.mesh(), b);
-  const SurfaceDepth ba = surface_depth(b.mesh(), a);
-  v.vertex_depth = std::max(ab.depth, ba.depth);
-  v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
-  // The middle of the deepest sample p and its nearest point q = p − depth·direction.
-  const SurfaceDepth& deeper = ab.depth >= ba.depth ? ab : ba;
-  if (deeper.depth > 0) v.vertex_at = deeper.at - 0.5 * deeper.depth * deeper.direction;
-  ThicknessResult t = thickness_at_contact(a, b, tolerance, band, r.depth, v.vertex_at);
+  bool sought = false, whole = false;
+  const auto deepest = [&](double only_above) {
+    const long budget =
+        only_above > -INFINITY ? tol::kSurfaceDepthGuardSamples : tol::kSurfaceDepthSamples;
+    const SurfaceDepth ab = surface_depth(a.mesh(), b, budget, only_above);
+    const SurfaceDepth ba = surface_depth(b.mesh(), a, budget, only_above);
+    v.vertex_depth = std::max(ab.depth, ba.depth);
+    v.vertex_direction = ab.depth >= ba.depth ? ab.direction : Vec3(-ba.direction);
+    // The middle of the deepest sample p and its nearest point q = p − depth·direction.
+    const SurfaceDepth& deeper = ab.depth >= ba.depth ? ab : ba;
+    if (deeper.depth > 0) v.vertex_at = deeper.at - 0.5 * deeper.depth * deeper.direction;
+    sought = true;
+    whole = !(only_above > -INFINITY);
+  };
+  const bool solids = a.closed() && b.closed();
+  if (!solids) deepest(-INFINITY);
+  ThicknessResult t = thickness_at_contact(a, b, tolerance, band, r.depth, [&] {
+    if (!whole) deepest(-INFINITY);
+    return v.vertex_at;
+  });
+  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove) deepest(tolerance);
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();
   return t;

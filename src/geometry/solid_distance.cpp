@@ -188,7 +188,8 @@ DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
   return r;
 }
 
-SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long max_samples) {
+SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long max_samples,
+                           double only_above) {
   SurfaceDepth best;
   if (!b.closed()) return best;
   std::vector<int> faces;
@@ -254,8 +255,8 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   while (!open.empty() && samples < max_samples) {
     const Piece piece = open.top();
     open.pop();
-    // A piece that cannot beat the best is not split.
-    if (piece.bound <= best.depth) continue;
+    // A piece that cannot beat the best, or reach what matters, is not split.
+    if (piece.bound <= std::max(best.depth, only_above)) continue;
     const std::array<Vec3, 3>& t = piece.t;
     // Edge k runs from corner k to corner k + 1.
     const std::array<double, 3> length{(t[1] - t[0]).norm(), (t[2] - t[1]).norm(),

@@ -156,7 +156,10 @@ class SolidDistance {
 /// surface strictly inside closed b must leave b, so any separating translation
 /// is at least sd_b(p) long. The largest sd_b over points sampled on a's faces
 /// within b's box: every vertex there, then at most `max_samples` points inside
-/// the faces (so it is never below the deepest vertex's bound).
+/// the faces (so it is never below the deepest vertex's bound). Where only a
+/// depth above `only_above` would matter (a pair whose thickness search has
+/// bracketed it, asking only whether a thin part decides it), pieces of faces
+/// that cannot reach deeper are not split.
 struct SurfaceDepth {
   double depth = 0.0;      ///< 0 when no sample lies strictly inside b
   Vec3 at = Vec3::Zero();  ///< the sample realising it
@@ -165,6 +168,7 @@ struct SurfaceDepth {
   Vec3 direction = Vec3::UnitZ();
 };
 SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b,
-                           long max_samples = tol::kSurfaceDepthSamples);
+                           long max_samples = tol::kSurfaceDepthSamples,
+                           double only_above = -std::numeric_limits<double>::infinity());
 
 }  // namespace pd
