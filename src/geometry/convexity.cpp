@@ -253,13 +253,21 @@ ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double sto
   r.closed = part.closed();
   const HullOfPoints h = hull_of_points(m.vertices);  // the estimate's too
   const double hull_volume = h.solid() ? h.volume : 0.0;
+  const double missing = r.closed ? hull_volume - mesh_volume(m) : -1.0;
+  // A coarse screen first, without the part's polygons (building them costs
+  // more than a nonconvex part's whole estimate): any sample's distance is a
+  // lower bound, and a gear's or a housing's first hull facets decide.
+  r.concavity = hull_concavity(h, part, concavity_tol, missing, Points(3, 0),
+                               tol::kDecomposeScreenSamples, stop_above);
+  if (r.concavity.stopped) return r;
   // Samples on the mesh's own faces are on it: only the rest are measured
-  // (a convex mesh's hull facets are its faces).
-  const SurfacePolygons faces =
-      triangle_polygons(m, std::min(coordinate_noise(m.vertices), 0.25 * concavity_tol));
-  r.concavity =
-      hull_concavity(h, part, concavity_tol, r.closed ? hull_volume - mesh_volume(m) : -1.0,
-                     m.vertices, kConvexitySamples, stop_above, &faces);
+  // (a convex mesh's hull facets are its faces). Samples within a quarter of
+  // the tolerance of them count as on them: the estimate only decides whether
+  // the part is convex within the tolerance (parts.cpp), and those cannot
+  // take it there (a float32 shaft's caps lie a few float steps off its hull's).
+  const SurfacePolygons faces = triangle_polygons(m, 0.25 * concavity_tol);
+  r.concavity = hull_concavity(h, part, concavity_tol, missing, m.vertices, kConvexitySamples,
+                               stop_above, &faces);
   return r;
 }
 
