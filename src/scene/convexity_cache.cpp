@@ -13,7 +13,9 @@ namespace pd {
 namespace {
 
 // 3: samples on the mesh's own faces are not measured (hull_concavity's on_part).
-constexpr CacheKind kKind{"pdcheck-convexity-3", ".pdv"};
+// 4: a coarse pass first (its value when it decides); samples within a quarter
+//    of the tolerance of the faces count as on them.
+constexpr CacheKind kKind{"pdcheck-convexity-4", ".pdv"};
 
 }  // namespace
 
