@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
@@ -99,8 +100,11 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
   }
 
   // Surface points projected onto their nearest facet (from inside the hull).
+  // (Each point once: an STL repeats every corner for each of its triangles.)
   const Vec3 lo = p.rowwise().minCoeff(), hi = p.rowwise().maxCoeff();
+  std::set<std::array<double, 3>> seen;
   for (long i = 0; i < surface.cols(); ++i) {
+    if (!seen.insert({surface(0, i), surface(1, i), surface(2, i)}).second) continue;
     const Vec3 y = surface.col(i) - centre;
     if ((y.array() < lo.array()).any() || (y.array() > hi.array()).any()) continue;
     std::size_t near = 0;
@@ -125,18 +129,30 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
   if (missing_volume < 0 || missing_volume > ball) {
     const double g = std::cbrt((hi - lo).prod() / std::max(samples, 1));
     if (g > 0) {
+      // A point inside the part is the centre of a ball of the part (its
+      // distance to the surface): the next grid points in the last such ball
+      // are inside too, and cannot raise the estimate.
+      Vec3 ball_centre = Vec3::Zero();
+      double ball_radius = 0.0;
       for (double x = lo.x() + g / 2; x < hi.x(); x += g)
         for (double y = lo.y() + g / 2; y < hi.y(); y += g)
           for (double z = lo.z() + g / 2; z < hi.z(); z += g) {
             const Vec3 q(x, y, z);
+            if ((q - ball_centre).squaredNorm() < ball_radius * ball_radius) continue;
             bool in = true;
             for (std::size_t i = 0; i < h.f.normals.size() && in; ++i)
               in = h.f.normals[i].dot(q) + h.f.offsets[i] <= 0;
             if (!in) continue;
-            // Cheap first: only a point farther than the best can raise it.
-            if (part.distance(q + centre) <= c.value) continue;
-            consider(q);
-            if (c.stopped) return finish();
+            const double sd = part.signed_distance(q + centre);  // > 0 inside
+            if (sd > 0) {
+              ball_centre = q, ball_radius = sd;
+              continue;
+            }
+            if (-sd > c.value && !(on_part && on_part->covers(q + centre))) {
+              c.value = -sd, c.witness = q + centre;
+              c.stopped = c.value > stop_above;
+              if (c.stopped) return finish();
+            }
           }
       c.resolution = std::max(c.resolution, g * std::sqrt(3.0) / 2);
     }
