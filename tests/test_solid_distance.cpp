@@ -38,8 +38,8 @@ ModelCounts check_box_planes(const SolidDistance& s, const SolidDistance& truth,
   ModelCounts n;
   for (int trial = 0; trial < trials; ++trial) {
     FramedBox box;
-    box.origin = centre(rng);
-    box.R = random_rotation(rng);
+    box.frame.origin = centre(rng);
+    box.frame.R = random_rotation(rng);
     Vec3 half = Vec3::Constant(scale * (0.02 + 0.4 * u(rng)));
     if (trial % 2) half[trial % 3] *= 0.05;  // a slab, as about a seated face
     const Vec3 shift = 0.5 * scale * Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
@@ -55,11 +55,11 @@ ModelCounts check_box_planes(const SolidDistance& s, const SolidDistance& truth,
       // Half the points on the box's faces, where the margin is tightest.
       Vec3 y = box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo);
       if (k % 2) y[k % 3] = k % 4 < 2 ? box.lo[k % 3] : box.hi[k % 3];
-      const double sd = truth.at(box.world(y)).lower;
+      const double sd = truth.at(box.frame.world(y)).lower;
       if (sd <= 0) continue;
       ++n.checked;
       const double capped = std::min(sd, m.margin);
-      const double eps = 1e-12 * (1 + box.origin.norm());  // the planes' own rounding
+      const double eps = 1e-12 * (1 + box.frame.origin.norm());  // the planes' own rounding
       for (const FacePlane& q : m.supporting) EXPECT_LE(capped, q.at(y) + m.slack + eps);
       for (const LocalPlanes::Hole& h : m.holes) {
         double most = -INFINITY;

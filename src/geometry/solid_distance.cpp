@@ -286,7 +286,7 @@ struct Region {
   Vec3 e = Vec3::Zero();  ///< half-extents
   double r = 0.0;         ///< half-diagonal
   double margin = 0.0;
-  const FramedBox* frame = nullptr;
+  const Frame* frame = nullptr;
   double pad = 0.0;  ///< how far taking a face into the frame may move it
   /// The largest and the least s_q over the box.
   double most(const FacePlane& q) const { return q.at(c) + e.dot(q.normal.cwiseAbs()); }
@@ -350,7 +350,7 @@ double wedge_crossing(const FacePart& part, const FacePlane& p, const FacePlane&
   return std::min({m, -part.least(p), -part.least(q)});
 }
 
-// The faces near a ball, grouped by plane (a quad's two triangles, a flat
+// The faces near a box, grouped by plane (a quad's two triangles, a flat
 // face's fan: one plane, their rounding measured as slack).
 struct PlaneGroup {
   FacePlane plane;
@@ -428,7 +428,7 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
     }
   }
   // The feet move along m: the mean of every hole normal when they lie within
-  // the largest spread of it, else (a small hole wholly within the reach, a
+  // the largest spread of it, else (a small hole wholly within the margin, a
   // wide arc of a bore) the mean of those facing c, the ones c lies deepest
   // behind. The planes within the spread of m ("near") enter the bound; every
   // other ("far") must stay behind every foot point the box can have.
@@ -609,7 +609,7 @@ void add_supporting(const std::vector<PlaneGroup>& groups, const std::vector<dou
 
 // One convex hole, else several apart (each holds on its own). Returns
 // whether every hole plane is explained. Too many planes in one (a whole
-// small hole within the reach): that hole is left out.
+// small hole within the margin): that hole is left out.
 template <class Outside>
 bool add_holes(const std::vector<PlaneGroup>& groups, const std::vector<const PlaneGroup*>& hole,
                double cap, const Region& rg, bool witness, const Outside& outside,
@@ -703,7 +703,7 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg
 // A framed box and its margin, and the world box that holds it.
 Region box_region(const FramedBox& box, double margin, Eigen::AlignedBox3d& wbox) {
   Region rg;
-  rg.frame = &box;
+  rg.frame = &box.frame;
   rg.c = 0.5 * (box.lo + box.hi);
   rg.e = 0.5 * (box.hi - box.lo);
   rg.r = rg.e.norm();
@@ -711,13 +711,13 @@ Region box_region(const FramedBox& box, double margin, Eigen::AlignedBox3d& wbox
   wbox.setEmpty();
   const Vec3 lo = box.lo.array() - margin, hi = box.hi.array() + margin;
   for (int k = 0; k < 8; ++k)
-    wbox.extend(
-        box.world(Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z())));
+    wbox.extend(box.frame.world(
+        Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z())));
   // Taking a face into the frame rounds it by up to pad; the faces are
   // gathered that much wider and every slack grows by it.
   rg.pad = 16 * std::numeric_limits<double>::epsilon() *
            (wbox.max().cwiseAbs().maxCoeff() + wbox.min().cwiseAbs().maxCoeff() +
-            box.origin.cwiseAbs().maxCoeff());
+            box.frame.origin.cwiseAbs().maxCoeff());
   wbox.min().array() -= 2 * rg.pad;
   wbox.max().array() += 2 * rg.pad;
   return rg;
@@ -763,15 +763,15 @@ LocalPlanes SolidDistance::local_planes(const FramedBox& box, double margin) con
   Eigen::AlignedBox3d wbox;
   const Region rg = box_region(box, margin, wbox);
   if (exact_) {
-    const auto outside = [&](const Vec3& y) { return whole_.outside(box.world(y)); };
+    const auto outside = [&](const Vec3& y) { return whole_.outside(box.frame.world(y)); };
     return planes_near(whole_, noise_, rg, wbox, false, outside);
   }
   const auto outside_all = [&](const Vec3& y) {
-    const Vec3 p = box.world(y);
+    const Vec3 p = box.frame.world(y);
     return std::all_of(shells_.begin(), shells_.end(),
                        [&](const PreparedMesh& s) { return s.outside(p); });
   };
-  return union_planes(shells_, whole_, noise_, rg, wbox, box.world(rg.c), outside_all);
+  return union_planes(shells_, whole_, noise_, rg, wbox, box.frame.world(rg.c), outside_all);
 }
 
 }  // namespace pd

@@ -90,14 +90,19 @@ struct LocalPlanes {
   bool empty() const { return supporting.empty() && holes.empty() && wedges.empty(); }
 };
 
-/// A box [lo, hi] in a frame of the caller's: the points x = origin + R·y.
-/// R is a rotation; a model about it (SolidDistance::local_planes) is in y.
-struct FramedBox {
+/// A frame of the caller's: the points x = origin + R·y, R a rotation.
+struct Frame {
   Vec3 origin = Vec3::Zero();
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
   Vec3 world(const Vec3& y) const { return origin + R * y; }
   Vec3 local(const Vec3& x) const { return R.transpose() * (x - origin); }
+};
+
+/// A box [lo, hi] of a frame's y; a model about it (SolidDistance::local_planes)
+/// is in y.
+struct FramedBox {
+  Frame frame;
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
 };
 
 /// A closed triangle mesh as a solid. Vertices with equal coordinates are one

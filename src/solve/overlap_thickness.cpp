@@ -16,17 +16,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The boxes of the search live in a frame of the pair's own: x = origin + R·y.
-// R is the smaller part's face axes (geometry/face_axes.h), so a seated face
-// or a pin's facets run along the boxes' sides, and the origin is the middle of
-// where the parts' boxes meet, so coordinates stay small.
-struct PairFrame {
-  Vec3 origin = Vec3::Zero();
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  Vec3 world(const Vec3& y) const { return origin + R * y; }
-  Vec3 local(const Vec3& x) const { return R.transpose() * (x - origin); }
-};
-
 // The two parts' plane models of a box. They hold for every point of that box
 // in the solid, so also over each box inside it: a cell's children try their
 // parent's models (a small LP each) before building their own.
@@ -98,7 +87,7 @@ std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& 
 
 class Search {
  public:
-  Search(const SolidDistance& a, const SolidDistance& b, double threshold, const PairFrame& frame)
+  Search(const SolidDistance& a, const SolidDistance& b, double threshold, const Frame& frame)
       : frame_(frame),
         a_(a),
         b_(b),
@@ -142,7 +131,7 @@ class Search {
     // below `enough`, the only use a box has for it. One part's model often
     // settles the box alone (below the best point found, or below half the
     // threshold, where it is never split): the other's is then not built.
-    const FramedBox box{frame_.origin, frame_.R, cell.lo, cell.hi};
+    const FramedBox box{frame_, cell.lo, cell.hi};
     const double margin = tol::kThicknessModelMargin * enough;
     auto own = std::make_shared<Models>();
     own->a = a_.local_planes(box, margin);
@@ -231,7 +220,7 @@ class Search {
     return d.lower > 0 ? v : Vec3(-v);
   }
 
-  PairFrame frame_;
+  Frame frame_;
   const SolidDistance &a_, &b_;
   double min_step_;
   double settled_;  ///< a box whose φ bound is below this never decides the pair
@@ -273,9 +262,13 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
     res.outcome = Outcome::kBelow;
     return res;
   }
-  // The search region in the pair's frame: where the smaller part's box (its
-  // vertices there) meets the other's box (its corners there).
-  PairFrame frame;
+  // The boxes of the search live in a frame of the pair's own: x = origin + R·y.
+  // R is the smaller part's face axes (geometry/face_axes.h), so a seated face
+  // or a pin's facets run along the boxes' sides, and the origin is the middle
+  // of where the parts' boxes meet, so coordinates stay small. The search
+  // region is where the smaller part's box (its vertices there) meets the
+  // other's box (its corners there).
+  Frame frame;
   frame.origin = region.center();
   const SolidDistance& small = a.box().diagonal().norm() <= b.box().diagonal().norm() ? a : b;
   frame.R = small.axes();
