@@ -316,7 +316,6 @@ struct Region {
 // side test below is about (the certificates hold there, docs/solver.md).
 struct FacePart {
   ClippedFace points;
-  Vec3 normal = Vec3::UnitZ();
   /// The least s_q over the face's points.
   double least(const FacePlane& q) const {
     double m = INFINITY;
@@ -526,7 +525,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     for (Vec3& v : t) v = rg.frame->local(v);
     const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
     if (!n.allFinite()) return std::nullopt;
-    FacePart part{clip_to_box(t, box_lo, box_hi), n};
+    FacePart part{clip_to_box(t, box_lo, box_hi)};
     if (part.points.empty()) continue;
     const auto same_plane = [&](const PlaneGroup& q) {
       return q.plane.normal.dot(n) > 0.999 &&
