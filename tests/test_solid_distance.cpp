@@ -3,6 +3,7 @@
 // solid, and the surface depth never falls below the deepest vertex.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -15,9 +16,10 @@ namespace {
 
 namespace sh = shapes;
 
-// Models with holes and wedges, and the points checked.
+// Models with holes and wedges, and the points checked; `wide_holes`: models
+// with a hole whose normals lie more than 60° apart (a bore and a shoulder).
 struct ModelCounts {
-  int holes = 0, several_holes = 0, wedges = 0, checked = 0;
+  int holes = 0, several_holes = 0, wide_holes = 0, wedges = 0, checked = 0;
 };
 
 // A rotation drawn uniformly (a random unit quaternion).
@@ -50,6 +52,12 @@ ModelCounts check_box_planes(const SolidDistance& s, const SolidDistance& truth,
     EXPECT_EQ(m.margin, margin);
     n.holes += !m.holes.empty();
     n.several_holes += m.holes.size() > 1;
+    n.wide_holes += std::any_of(m.holes.begin(), m.holes.end(), [](const LocalPlanes::Hole& h) {
+      for (const FacePlane& p : h.planes)
+        for (const FacePlane& q : h.planes)
+          if (p.normal.dot(q.normal) < 0.5) return true;
+      return false;
+    });
     n.wedges += !m.wedges.empty();
     for (int k = 0; k < 60; ++k) {
       // Half the points on the box's faces, where the margin is tightest.
@@ -109,7 +117,9 @@ TEST(LocalPlanes, EveryBoundHoldsAtAShoulder) {
 TEST(LocalPlanes, EveryBoundHoldsAboutHoles) {
   // A board's 0.5 mm hole, wholly within many boxes' margins; a plate's 5 mm
   // bore, which spans many boxes; a drilled board's row of 0.75 mm holes 2 mm
-  // apart, where boxes see two holes.
+  // apart, where boxes see two holes; a housing's bore ending at a shoulder
+  // (a ring seated there), where the bore's facets and the shoulder's plane
+  // make one hole whose normals are 90° apart.
   std::mt19937 rng(8);
   std::uniform_real_distribution<double> u(0, 1);
   const auto about_hole = [&](double radius, double thickness) {
@@ -124,19 +134,30 @@ TEST(LocalPlanes, EveryBoundHoldsAboutHoles) {
     std::function<Vec3(std::mt19937&)> centre;
   };
   const double pitch = 2;
-  const Case cases[] = {{sh::plate_with_hole(2.54, 1.6, 0.5, 32), 0.5, about_hole(0.5, 1.6)},
-                        {sh::plate_with_hole(40, 6, 5, 64), 5, about_hole(5, 6)},
-                        {sh::drilled_board(3, 1, pitch, 1.6, 0.75, 32), 0.5, [&](std::mt19937& g) {
-                           return Vec3(pitch * (0.5 + u(g)),
-                                       pitch * (0.5 * u(g) - 0.25) + 0.5 * pitch, 1.6 * u(g));
-                         }}};
-  for (size_t k = 0; k < 3; ++k) {
+  const Case cases[] = {
+      {sh::plate_with_hole(2.54, 1.6, 0.5, 32), 0.5, about_hole(0.5, 1.6)},
+      {sh::plate_with_hole(40, 6, 5, 64), 5, about_hole(5, 6)},
+      {sh::drilled_board(3, 1, pitch, 1.6, 0.75, 32), 0.5,
+       [&](std::mt19937& g) {
+         return Vec3(pitch * (0.5 + u(g)), pitch * (0.5 * u(g) - 0.25) + 0.5 * pitch, 1.6 * u(g));
+       }},
+      {sh::revolution({{3, 0}, {10, 0}, {10, 8}, {5, 8}, {5, 4}, {3, 4}}, 64), 0.5,
+       [&](std::mt19937& g) {
+         const double angle = 2 * M_PI * u(g), rad = 4.4 + 0.8 * u(g);
+         return Vec3(rad * std::cos(angle), rad * std::sin(angle), 3.6 + 0.8 * u(g));
+       }}};
+  for (size_t k = 0; k < 4; ++k) {
     const SolidDistance s(cases[k].mesh);
     const ModelCounts counts = check_box_planes(s, s, cases[k].scale, cases[k].centre, rng, 200);
     EXPECT_GT(counts.holes, 40) << "case " << k;
     EXPECT_GT(counts.checked, 2000) << "case " << k;
     if (k == 2) {
       EXPECT_GT(counts.several_holes, 0);
+    }
+    // The bore's facets and the shoulder as one hole (the bisector of the
+    // normals farthest apart, not their mean: 22 such models with the mean).
+    if (k == 3) {
+      EXPECT_GT(counts.wide_holes, 50);
     }
   }
 }

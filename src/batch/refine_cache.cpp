@@ -27,7 +27,8 @@ namespace {
 // 12: the frame's box comes from the part's own (found once per part):
 //     brackets move in their last digits.
 // 13: a box's plane models look at the faces within a margin of the box and
-//     bound min(sd, margin): other boxes, other brackets.
+//     bound min(sd, margin), a hole's feet move along the bisector of its
+//     normals farthest apart when it spreads less: other boxes, other brackets.
 constexpr CacheKind kKind{"pdcheck-refinement-13", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {

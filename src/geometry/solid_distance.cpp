@@ -439,6 +439,22 @@ std::optional<LocalPlanes::Hole> convex_hole(const std::vector<PlaneGroup>& grou
     for (const Group* g : hole) cos_spread = std::min(cos_spread, g->plane.normal.dot(m));
     return cos_spread;
   };
+  // The mean leans towards the side with more planes (a bore's facets against
+  // the one shoulder plane at its end): the bisector of the two normals
+  // farthest apart spreads less when the others lie between them.
+  {
+    const Group *u = nullptr, *v = nullptr;
+    double least = 2.0;
+    for (size_t i = 0; i < hole.size(); ++i)
+      for (size_t j = i + 1; j < hole.size(); ++j) {
+        const double d = hole[i]->plane.normal.dot(hole[j]->plane.normal);
+        if (d < least) least = d, u = hole[i], v = hole[j];
+      }
+    if (u) {
+      const Vec3 bisector = (u->plane.normal + v->plane.normal).normalized();
+      if (bisector.allFinite() && spread(bisector) > spread(mean)) mean = bisector;
+    }
+  }
   if (!(spread(mean) * tol::kLocalPlanesMaxKappa >= 1.0)) {
     const Group* facing = *std::max_element(hole.begin(), hole.end(), [&](auto* x, auto* y) {
       return x->plane.at(c) < y->plane.at(c);
