@@ -241,5 +241,21 @@ TEST(SurfaceDepth, ADeepPieceIsFollowedFirst) {
   }
 }
 
+TEST(SurfaceDepth, AsAGuardItFollowsOnlyWhatCanDecide) {
+  // The same pin and foil, sought only above a tolerance of 0.1 (a pair whose
+  // thickness is bracketed, batch/refine.cpp): pieces that cannot reach it are
+  // not split, and the foil is still found as deep as by the whole search.
+  namespace sh = shapes;
+  const Mesh pin = sh::cylinder({0, 0}, 5, -40, 40, 128);
+  const Mesh foil = sh::box(Vec3(12, -30, -30), Vec3(12.05, 30, 30));
+  const SolidDistance plate(sh::plate_with_hole(40, 6, 5, 128));
+  const SurfaceDepth whole = surface_depth(PreparedMesh(sh::joined({pin, foil})), plate, 300);
+  const SurfaceDepth guard = surface_depth(PreparedMesh(sh::joined({pin, foil})), plate, 300, 0.1);
+  EXPECT_GT(guard.depth, 2.5);
+  EXPECT_NEAR(guard.depth, whole.depth, 0.05);
+  // The pin alone stays below the tolerance: a guard that finds nothing.
+  EXPECT_LT(surface_depth(PreparedMesh(pin), plate, 300, 0.1).depth, 0.01);
+}
+
 }  // namespace
 }  // namespace pd
