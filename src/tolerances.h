@@ -183,6 +183,8 @@ inline constexpr int kDecomposeSamples = 1000;
 inline constexpr long kDecomposeMaxWork = 4000;
 /// Samples of the coarse screen run before a piece's full estimate: a cell it
 /// finds more than twice the tolerance concave is cut without the full one.
+/// The convexity screen of a whole part (geometry/convexity.h) runs one first
+/// too: a part it finds nonconvex needs no face polygons built.
 inline constexpr int kDecomposeScreenSamples = 64;
 /// Effort, not accuracy: the candidate cuts of one piece are drawn from at most
 /// kDecomposeCutPlanes planes of concave faces and kDecomposeCutEdges reflex

@@ -100,11 +100,8 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
   }
 
   // Surface points projected onto their nearest facet (from inside the hull).
-  // (Each point once: an STL repeats every corner for each of its triangles.)
   const Vec3 lo = p.rowwise().minCoeff(), hi = p.rowwise().maxCoeff();
-  std::set<std::array<double, 3>> seen;
   for (long i = 0; i < surface.cols(); ++i) {
-    if (!seen.insert({surface(0, i), surface(1, i), surface(2, i)}).second) continue;
     const Vec3 y = surface.col(i) - centre;
     if ((y.array() < lo.array()).any() || (y.array() > hi.array()).any()) continue;
     std::size_t near = 0;
@@ -263,6 +260,23 @@ SurfacePolygons triangle_polygons(const Mesh& m, double within) {
   return SurfacePolygons(std::move(corners), ranges, within);
 }
 
+namespace {
+
+// The columns of p, each position once, in the order they first appear: an
+// STL repeats every corner for each of its triangles, and the estimate would
+// project each copy.
+Points distinct_columns(const Points& p) {
+  std::set<std::array<double, 3>> seen;
+  std::vector<long> keep;
+  for (long i = 0; i < p.cols(); ++i)
+    if (seen.insert({p(0, i), p(1, i), p(2, i)}).second) keep.push_back(i);
+  Points out(3, static_cast<long>(keep.size()));
+  for (size_t k = 0; k < keep.size(); ++k) out.col(static_cast<long>(k)) = p.col(keep[k]);
+  return out;
+}
+
+}  // namespace
+
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above) {
   ConvexityScreen r;
   const PreparedMesh part(m);
@@ -282,8 +296,8 @@ ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double sto
   // the part is convex within the tolerance (parts.cpp), and those cannot
   // take it there (a float32 shaft's caps lie a few float steps off its hull's).
   const SurfacePolygons faces = triangle_polygons(m, 0.25 * concavity_tol);
-  r.concavity = hull_concavity(h, part, concavity_tol, missing, m.vertices, kConvexitySamples,
-                               stop_above, &faces);
+  r.concavity = hull_concavity(h, part, concavity_tol, missing, distinct_columns(m.vertices),
+                               kConvexitySamples, stop_above, &faces);
   return r;
 }
 
@@ -302,7 +316,7 @@ Convexity measure_convexity(const Mesh& m, double concavity_tol, double stop_abo
     if (r.hull_area > 0) r.screen = std::max(0.0, r.hull_volume - r.volume) / r.hull_area;
   }
   r.concavity = hull_concavity(h, part, concavity_tol, r.closed ? r.hull_volume - r.volume : -1.0,
-                               m.vertices, kConvexitySamples, stop_above);
+                               distinct_columns(m.vertices), kConvexitySamples, stop_above);
   r.convex = r.concavity.value <= concavity_tol;
   if (!r.convex && r.shells > 1) {
     const std::vector<Mesh> shells = mesh_shells(m);
@@ -314,7 +328,7 @@ Convexity measure_convexity(const Mesh& m, double concavity_tol, double stop_abo
           const double hv = hs.solid() ? hs.volume : 0.0;
           // Only the comparison is kept: the estimate may stop at the tolerance.
           return hull_concavity(hs, ps, concavity_tol, ps.closed() ? hv - mesh_volume(s) : -1.0,
-                                s.vertices, kConvexitySamples, concavity_tol)
+                                distinct_columns(s.vertices), kConvexitySamples, concavity_tol)
                      .value <= concavity_tol;
         });
   }
