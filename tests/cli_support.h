@@ -23,12 +23,7 @@ struct CliResult {
   std::string out, err;
 };
 
-inline std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using pd_test::read_text;
 
 using pd_test::process_dir;
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 
 namespace pd_test {
@@ -33,6 +34,23 @@ inline std::filesystem::path scratch_dir(const std::string& group, const std::st
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;
+}
+
+/// The path `group`_`name`_<pid> under the test temp dir, removed: for code that
+/// must create its directory itself (the caches).
+inline std::filesystem::path absent_dir(const std::string& group, const std::string& name) {
+  const std::filesystem::path d = std::filesystem::path(testing::TempDir()) /
+                                  (group + "_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(d);
+  return d;
+}
+
+/// A file's whole text ("" when it cannot be read).
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline void write_bytes(const std::filesystem::path& p, const std::string& bytes) {

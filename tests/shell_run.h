@@ -12,6 +12,7 @@
 #include <string>
 
 #include "run_capture.h"
+#include "scratch_dir.h"
 
 namespace pd_test {
 
@@ -31,13 +32,6 @@ inline std::string scratch_dir(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();
-}
-
-inline std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 /// Runs `script` with /bin/sh in `dir`; "$PDCHECK" and "$DEMO" name the binary

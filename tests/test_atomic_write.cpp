@@ -9,19 +9,12 @@
 #include "atomic_write.h"
 #include "cli_support.h"
 #include "output_error.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::path(testing::TempDir()) / ("atomic_write_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 size_t entries(const fs::path& d) {
   size_t n = 0;
@@ -32,7 +25,7 @@ size_t entries(const fs::path& d) {
 }  // namespace
 
 TEST(AtomicWrite, ReplacesWholeKeepsTheModeLeavesNoTemporary) {
-  const fs::path d = fresh_dir("whole");
+  const fs::path d = pd_test::scratch_dir("atomic_write", "whole");
   const std::string path = (d / "r.json").string();
   write_file_atomically(path, "one", false);
   EXPECT_EQ(pd::test::read_text(path), "one");
@@ -49,7 +42,7 @@ TEST(AtomicWrite, ReplacesWholeKeepsTheModeLeavesNoTemporary) {
 }
 
 TEST(AtomicWrite, TemporaryFilesAreNewHiddenAndUnique) {
-  const fs::path d = fresh_dir("temp");
+  const fs::path d = pd_test::scratch_dir("atomic_write", "temp");
   std::string a, b;
   const int fa = create_temp_beside(d.string(), "r.json", a);
   const int fb = create_temp_beside(d.string(), "r.json", b);

@@ -10,11 +10,14 @@
 #include "cli_support.h"
 #include "corpus/cad_shapes.h"
 #include "report/finding_text.h"
+#include "sag_part.h"
 #include "scene/hull_cache.h"
 #include "scene/scene.h"
 #include "tolerances.h"
 
 using namespace pd;
+using pd_test::chord_sag;
+using pd_test::sag_part;
 using namespace pd::test;
 
 namespace {
@@ -34,22 +37,6 @@ std::string error_of(const std::string& tolerance, const std::string& part_extra
     return e.what();
   }
   return "";
-}
-
-double sag_of(int n, double r) {
-  return r * (1 - std::cos(M_PI / n));
-}
-
-// A part as build_parts makes it under auto: its placed sag and box.
-Part part_of(const std::string& id, const Mesh& m, std::optional<double> declared = {}) {
-  Part p;
-  p.id = id;
-  p.box = Aabb::of(m.vertices);
-  PartSag s;
-  s.measured = measure_tessellation_sag(m, CoordinateStorage::kDouble);
-  s.declared = declared;
-  p.sag = s;
-  return p;
 }
 
 }  // namespace
@@ -134,19 +121,19 @@ TEST(AutoTolerance, EachPairGetsTheSagsWhereItsPartsMeet) {
   const Mesh coarse_bore = shapes::revolution({{5, 0}, {8, 0}, {8, 10}, {5, 10}}, 16);
   const Mesh fine_bore =
       shapes::translated(shapes::revolution({{5, 0}, {8, 0}, {8, 10}, {5, 10}}, 128), {100, 0, 0});
-  const Part bushing = part_of("bushing", shapes::joined({coarse_bore, fine_bore}));
+  const Part bushing = sag_part("bushing", shapes::joined({coarse_bore, fine_bore}));
   const Mesh pin = shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 24);
-  const Part coarse_pin = part_of("pin", pin);
-  const Part fine_pin = part_of("fine_pin", shapes::translated(pin, {100, 0, 0}));
+  const Part coarse_pin = sag_part("pin", pin);
+  const Part fine_pin = sag_part("fine_pin", shapes::translated(pin, {100, 0, 0}));
   const double m = 1 + tol::kAutoToleranceMargin;
   const PairTolerance coarse = pair_tolerance(bushing, coarse_pin, {}, "mm");
-  EXPECT_NEAR(coarse.value, sag_of(16, 5) * m, 1e-9);  // the pin is convex: no overlap sag
+  EXPECT_NEAR(coarse.value, chord_sag(16, 5) * m, 1e-9);  // the pin is convex: no overlap sag
   EXPECT_EQ(coarse.source, "measured");
   EXPECT_EQ(coarse.basis,
             "bushing: bore r 5 mm, 16 segments, sag 0.0961 mm; pin: no concave tessellated "
             "surface there; coordinate steps 1.42e-14 + 1.78e-15 mm");
   const PairTolerance fine = pair_tolerance(bushing, fine_pin, {}, "mm");
-  EXPECT_NEAR(fine.value, sag_of(128, 5) * m, 1e-9);
+  EXPECT_NEAR(fine.value, chord_sag(128, 5) * m, 1e-9);
   EXPECT_NE(fine.basis.find("128 segments"), std::string::npos) << fine.basis;
   // A declared sag replaces the measured one; the clamps say so.
   Part declared = coarse_pin;

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "cache_file.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
@@ -20,13 +21,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr CacheKind kKind{"pdcheck-test-1", ".pdt"};
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::path(testing::TempDir()) / ("cache_file_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -40,7 +34,7 @@ void spit(const fs::path& p, const std::string& s) {
 }  // namespace
 
 TEST(CacheFile, EntryReadsBackExactly) {
-  const fs::path dir = fresh_dir("roundtrip");
+  const fs::path dir = pd_test::absent_dir("cache_file", "roundtrip");
   std::string body = "line\n";
   for (int k = 0; k < 256; ++k) body += static_cast<char>(k);  // binary, NULs, newlines
   ASSERT_EQ(write_cache_entry(dir.string(), kKind, "k1", body), "");
@@ -54,7 +48,7 @@ TEST(CacheFile, EntryReadsBackExactly) {
 }
 
 TEST(CacheFile, DamagedOrForeignEntriesAreMisses) {
-  const fs::path dir = fresh_dir("damage");
+  const fs::path dir = pd_test::absent_dir("cache_file", "damage");
   const std::string body(1000, 'x');
   ASSERT_EQ(write_cache_entry(dir.string(), kKind, "k", body), "");
   const fs::path file = dir / "k.pdt";
@@ -90,7 +84,7 @@ TEST(CacheFile, DamagedOrForeignEntriesAreMisses) {
 }
 
 TEST(CacheFile, AnUnwritableCacheIsReportedNotThrown) {
-  const fs::path dir = fresh_dir("unwritable");
+  const fs::path dir = pd_test::absent_dir("cache_file", "unwritable");
   fs::create_directories(dir.parent_path());
   spit(dir, "a file where the cache directory should be");
   const std::string why = write_cache_entry(dir.string(), kKind, "k", "body");
@@ -103,7 +97,7 @@ TEST(CacheFile, AnUnwritableCacheIsReportedNotThrown) {
 // Four processes rewrite one key with bodies of their own while this one
 // reads it: every read is a miss or one writer's body, whole.
 TEST(CacheFile, ConcurrentWritersNeverTearAnEntry) {
-  const fs::path dir = fresh_dir("concurrent");
+  const fs::path dir = pd_test::absent_dir("cache_file", "concurrent");
   constexpr int kWriters = 4, kWrites = 40;
   std::set<std::string> bodies;
   for (int w = 0; w < kWriters; ++w) bodies.insert(std::string(200000 + 1000 * w, char('a' + w)));

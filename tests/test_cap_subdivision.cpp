@@ -4,23 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "corpus/contacts.h"
+#include "method_solve.h"
 #include "solve/cap_subdivision.h"
 #include "solve/methods.h"
 #include "tolerances.h"
 
 using namespace pd;
+using pd_test::solve;
 using testgen::Contact;
-
-namespace {
-
-DepthSolution solve(const testgen::PairCase& c, Method m) {
-  static IpoptLocalSolver ipopt;
-  SolverSettings s;
-  s.method = m;
-  return solve_convex_pair(c.a, c.b, s, ipopt);
-}
-
-}  // namespace
 
 TEST(Contacts, SubdividedCapSearchFindsWhatOneHullFinds) {
   // On random overlapping pairs and caps, the subdivided search (tiny leaves:

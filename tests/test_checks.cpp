@@ -6,19 +6,15 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/run.h"
+#include "cube_json.h"
 #include "report/report_json.h"
 
 using namespace pd;
 using nlohmann::json;
 
-namespace {
+using pd_test::cube_json;
 
-json cube(const std::string& id, double x, double y = 0, double z = 0, double s = 1) {
-  json v = json::array();
-  for (int k = 0; k < 8; ++k)
-    v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), z + s * ((k >> 2) & 1)});
-  return {{"id", id}, {"vertices", v}};
-}
+namespace {
 
 json run(const json& scene) {
   const SceneSpec spec = parse_scene_json(scene.dump(), "test.json", ".");
@@ -47,7 +43,8 @@ TEST(Checks, StaticScenePaysNothing) {
   // The same pairs, the same solves (counters included), the same report.
   const json base = {
       {"tolerance", 0.1},
-      {"parts", {cube("a", 0), cube("b", 0.95), cube("c", 1.99, 0.2), cube("d", 9)}}};
+      {"parts",
+       {cube_json("a", 0), cube_json("b", 0.95), cube_json("c", 1.99, 0.2), cube_json("d", 9)}}};
   json with = base;
   with["checks"] = json::object();
   EXPECT_EQ(run(base), run(with));
@@ -69,7 +66,8 @@ TEST(Checks, StaticScenePaysNothing) {
 TEST(Checks, ClearanceViolationsAgainstExactDistances) {
   json scene = {
       {"tolerance", 0.1},
-      {"parts", {cube("a", 0), cube("b", 4), cube("c", 0, 8), cube("d", 0, 0, 5.5)}},
+      {"parts",
+       {cube_json("a", 0), cube_json("b", 4), cube_json("c", 0, 8), cube_json("d", 0, 0, 5.5)}},
       {"checks",
        {{"clearance", {{"min", 5.0}, {"pairs", {{{"pair", {"a", "d"}}, {"min", 2.0}}}}}}}}};
   const json r = run(scene);
@@ -92,7 +90,7 @@ TEST(Checks, MotionSweepAgainstAnalyticValues) {
   // b slides along −x through a at 1 unit/s: s(t) = t − 2 until contact at t = 2,
   // then the overlap 1 − |t − 3| (the x overlap is the smallest way out).
   json scene = {{"tolerance", 0.1},
-                {"parts", {cube("a", 0), cube("b", 3)}},
+                {"parts", {cube_json("a", 0), cube_json("b", 3)}},
                 {"checks", {{"motion", {{"t0", 0}, {"t1", 4}, {"dt", 0.5}, {"series", true}}}}}};
   scene["parts"][1]["motion"] = {{"velocity", {-1, 0, 0}}};
   const json r = run(scene);
@@ -114,7 +112,7 @@ TEST(Checks, MotionSweepAgainstAnalyticValues) {
 }
 
 TEST(Checks, MotionNeedsATimeGrid) {
-  json scene = {{"tolerance", 0.1}, {"parts", {cube("a", 0), cube("b", 3)}}};
+  json scene = {{"tolerance", 0.1}, {"parts", {cube_json("a", 0), cube_json("b", 3)}}};
   scene["parts"][1]["motion"] = {{"velocity", {-1, 0, 0}}};
   try {
     parse_scene_json(scene.dump(), "s.json", ".");

@@ -5,24 +5,20 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_support.h"
+#include "cube_json.h"
 
 using nlohmann::json;
 using namespace pd::test;
 
-namespace {
+using pd_test::cube_json;
 
-json cube(const std::string& id, double x, double y, double z, double s) {
-  json v = json::array();
-  for (int k = 0; k < 8; ++k)
-    v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), z + s * ((k >> 2) & 1)});
-  return {{"id", id}, {"vertices", v}};
-}
+namespace {
 
 // A frame with a press-fit bushing (0.5 deep: an accepted interference), a lid
 // resting on top, a bolt far away. `lid_z` moves the lid: 10 rests, 9 sinks 1.0 in.
 std::string assembly(const std::string& name, double lid_z, const json& extra = json::array()) {
-  json parts = {cube("frame", 0, 0, 0, 10), cube("bushing", 9.5, 2, 2, 4),
-                cube("lid", 0, 0, lid_z, 10), cube("bolt", 40, 0, 0, 2)};
+  json parts = {cube_json("frame", 0, 0, 0, 10), cube_json("bushing", 9.5, 2, 2, 4),
+                cube_json("lid", 0, 0, lid_z, 10), cube_json("bolt", 40, 0, 0, 2)};
   for (const auto& p : extra) parts.push_back(p);
   return write_temp(name, json{{"units", "mm"}, {"tolerance", 0.1}, {"parts", parts}}.dump());
 }
@@ -30,7 +26,7 @@ std::string assembly(const std::string& name, double lid_z, const json& extra = 
 // The nightly loop's assembly adds a clip 0.3 into the frame's side: a known
 // interference that nobody suppressed.
 std::string loop_assembly(const std::string& name, double lid_z) {
-  return assembly(name, lid_z, json::array({cube("clip", -1.7, 6, 6, 2)}));
+  return assembly(name, lid_z, json::array({cube_json("clip", -1.7, 6, 6, 2)}));
 }
 
 json read_json(const std::string& path) {
@@ -207,7 +203,7 @@ TEST(CiLoop, AbsentWhenCheckedAndClean) {
   ASSERT_EQ(pdcheck(assembly("abs1.json", 9.0) + " -q -o " + r1).code, 1);
   // The lid back on top (touching: separated) and the bushing out of the frame (culled).
   json scene = json::parse(read_text(assembly("abs2.json", 10.0)));
-  scene["parts"][1] = cube("bushing", 20, 2, 2, 4);
+  scene["parts"][1] = cube_json("bushing", 20, 2, 2, 4);
   const CliResult r = pdcheck(write_temp("abs2.json", scene.dump()) + " -q -o " + r2 +
                               " --baseline " + r1 + " --fail-on new");
   EXPECT_EQ(r.code, 0) << r.err;
@@ -265,7 +261,7 @@ TEST(CiLoop, FailOnBars) {
   // The resting lid touches (separated); the press fit is an interference; a
   // shim 0.05 deep in the frame is a false positive.
   const std::string scene =
-      assembly("bars.json", 10.0, json::array({cube("shim", -1.95, 2, 2, 2)}));
+      assembly("bars.json", 10.0, json::array({cube_json("shim", -1.95, 2, 2, 2)}));
   EXPECT_EQ(pdcheck(scene + " -q").code, 1);
   EXPECT_EQ(pdcheck(scene + " -q --fail-on interference").code, 1);
   EXPECT_EQ(pdcheck(scene + " -q --fail-on none").code, 0);

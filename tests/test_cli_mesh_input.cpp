@@ -23,17 +23,17 @@ namespace {
 
 const std::string kBox = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/box_binary.stl";
 
-struct CliRun {
+struct TimedRun {
   int code = -1;
   std::string out, err;
   double seconds = 0;
 };
 
-CliRun pdcheck(const std::string& args, const std::string& env = "") {
+TimedRun timed_pdcheck(const std::string& args, const std::string& env = "") {
   const std::string err_file =
       testing::TempDir() + "pdcheck_mesh_err_" + std::to_string(getpid()) + ".txt";
   const std::string cmd = env + " " + pd_test::pdcheck_binary_for(env) + " " + args + " </dev/null";
-  CliRun r;
+  TimedRun r;
   const auto t0 = std::chrono::steady_clock::now();
   pd_test::Captured c = pd_test::run_capture(cmd, err_file);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -65,7 +65,7 @@ std::string scene_with(const std::string& c_name, const std::string& c_bytes = "
 }
 
 /// Part c failed with a message holding `says`; a and b were still checked.
-void expect_only_c_lost(const CliRun& r, const std::string& says) {
+void expect_only_c_lost(const TimedRun& r, const std::string& says) {
   EXPECT_EQ(r.code, 3) << r.err;
   const json rep = json::parse(r.out);
   ASSERT_EQ(rep["parts"].size(), 3u);
@@ -82,15 +82,15 @@ void expect_only_c_lost(const CliRun& r, const std::string& says) {
 }  // namespace
 
 TEST(MeshIsolation, AHangingLoaderIsStoppedAtTheLimit) {
-  const CliRun r = pdcheck(scene_with("hang_me.stl") + " --quiet --load-timeout 1",
-                           "PDCHECK_TEST_HANG_MESH=hang_me.stl");
+  const TimedRun r = timed_pdcheck(scene_with("hang_me.stl") + " --quiet --load-timeout 1",
+                                   "PDCHECK_TEST_HANG_MESH=hang_me.stl");
   expect_only_c_lost(r, "load limit of 1 s");
   EXPECT_LT(r.seconds, 30.0);  // bounded, not forever (the limit is 1 s)
 }
 
 TEST(MeshIsolation, ACrashingLoaderCostsOnlyItsPart) {
-  const CliRun r =
-      pdcheck(scene_with("crash_me.stl") + " --quiet -j 2", "PDCHECK_TEST_CRASH_MESH=crash_me.stl");
+  const TimedRun r = timed_pdcheck(scene_with("crash_me.stl") + " --quiet -j 2",
+                                   "PDCHECK_TEST_CRASH_MESH=crash_me.stl");
   expect_only_c_lost(r, "loader process failed");
   EXPECT_NE(r.err.find("crash_me.stl"), std::string::npos) << r.err;
 }
@@ -105,7 +105,7 @@ TEST(MeshIsolation, PlyCutInItsHeaderIsAPartError) {
   for (const std::string& bytes :
        {header.substr(0, header.find("end_header")) + std::string(40, '\x01'),
         header.substr(0, 50)}) {
-    const CliRun r = pdcheck(scene_with("cut.ply", bytes) + " --quiet --load-timeout 20");
+    const TimedRun r = timed_pdcheck(scene_with("cut.ply", bytes) + " --quiet --load-timeout 20");
     expect_only_c_lost(r, "end_header");
     EXPECT_NE(r.err.find("cut.ply"), std::string::npos) << r.err;
     EXPECT_LT(r.seconds, 20.0);
@@ -119,7 +119,7 @@ TEST(MeshIsolation, PlyHeaderLineWithoutCommentLoadsWithAWarning) {
       "element vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
       "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n3 0 1 2\n";
-  const CliRun r = pdcheck(scene_with("wuson.ply", ply));
+  const TimedRun r = timed_pdcheck(scene_with("wuson.ply", ply));
   EXPECT_EQ(r.code, 1) << r.err;  // a and b interfere; c loads
   const json rep = json::parse(r.out);
   ASSERT_FALSE(rep["parts"][2].contains("error")) << rep["parts"][2];
@@ -134,7 +134,7 @@ TEST(MeshIsolation, PlyHeaderLineWithoutCommentLoadsWithAWarning) {
 
 TEST(MeshIsolation, LoadTimeoutMustBeANumberOfSeconds) {
   for (const char* bad : {"-1", "nan", "inf", "1e300"}) {
-    const CliRun r = pdcheck(scene_with("c.stl") + " --quiet --load-timeout " + bad);
+    const TimedRun r = timed_pdcheck(scene_with("c.stl") + " --quiet --load-timeout " + bad);
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_NE(r.err.find("--load-timeout"), std::string::npos) << r.err;
   }
@@ -151,7 +151,7 @@ TEST(MeshPathsCli, APathThatIsNotAFileSaysWhatItIsAndItsPairsAreUnchecked) {
   for (const auto& [make, says] : cases) {
     std::filesystem::remove_all(c);
     make();
-    const CliRun r = pdcheck(scene + " --quiet");
+    const TimedRun r = timed_pdcheck(scene + " --quiet");
     expect_only_c_lost(r, says);
     const json s = json::parse(r.out)["summary"];
     EXPECT_EQ(s["pairs"], 3);
@@ -173,14 +173,14 @@ std::string file_bytes(const std::string& path) {
 // time limit are all that stand between them and the batch.
 TEST(MeshIsolation, FilesThatHangAssimpCostOnlyTheirPart) {
   const std::string known = std::string(PDCHECK_SOURCE_DIR) + "/tests/fuzz/assimp-known/";
-  const CliRun hang =
-      pdcheck(scene_with("hang.glb", file_bytes(known + "gltf/hang-in-assimp.glb")) +
-              " --quiet --load-timeout 1");
+  const TimedRun hang =
+      timed_pdcheck(scene_with("hang.glb", file_bytes(known + "gltf/hang-in-assimp.glb")) +
+                    " --quiet --load-timeout 1");
   expect_only_c_lost(hang, "load limit of 1 s");
   EXPECT_LT(hang.seconds, 30.0);
-  const CliRun obj =
-      pdcheck(scene_with("c.obj", file_bytes(known + "obj/segv-in-assimp-from-memory.obj")) +
-              " --quiet --load-timeout 5");
+  const TimedRun obj =
+      timed_pdcheck(scene_with("c.obj", file_bytes(known + "obj/segv-in-assimp-from-memory.obj")) +
+                    " --quiet --load-timeout 5");
   expect_only_c_lost(obj, "c.obj");
 }
 
@@ -207,16 +207,16 @@ std::string binary_stl(int n) {
 TEST(MeshIsolation, AFileNeedingMoreThanTheLoadMemoryCostsOnlyItsPart) {
   if (!pd::can_cap_address_space()) GTEST_SKIP() << "no address-space cap under AddressSanitizer";
   const std::string scene = scene_with("big.stl", binary_stl(200000));
-  const CliRun capped = pdcheck(scene + " --quiet --load-memory 16");
+  const TimedRun capped = timed_pdcheck(scene + " --quiet --load-memory 16");
   expect_only_c_lost(capped, "memory limit of 16 MB (--load-memory)");
-  const CliRun room = pdcheck(scene + " --quiet --load-memory 2000");
+  const TimedRun room = timed_pdcheck(scene + " --quiet --load-memory 2000");
   EXPECT_EQ(room.code, 1) << room.err;
   EXPECT_FALSE(json::parse(room.out)["parts"][2].contains("error"));
 }
 
 TEST(MeshIsolation, LoadMemoryMustBeANumberOfMegabytes) {
   for (const char* bad : {"-1", "nan", "inf", "1e300"}) {
-    const CliRun r = pdcheck(scene_with("c.stl") + " --quiet --load-memory " + bad);
+    const TimedRun r = timed_pdcheck(scene_with("c.stl") + " --quiet --load-memory " + bad);
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_NE(r.err.find("--load-memory"), std::string::npos) << r.err;
   }

@@ -12,17 +12,16 @@
 #include "batch/pair_tolerance.h"
 #include "cli_support.h"
 #include "corpus/cad_shapes.h"
+#include "sag_part.h"
 #include "scratch_dir.h"
 #include "stl_file.h"
 #include "tolerances.h"
 
 using namespace pd;
+using pd_test::chord_sag;
+using pd_test::sag_part;
 
 namespace {
-
-double sag_of(int n, double r) {
-  return r * (1 - std::cos(M_PI / n));
-}
 
 const double kMargin = 1 + tol::kAutoToleranceMargin;
 
@@ -36,19 +35,9 @@ Mesh flanged_bushing() {
       {{5, 0}, {16, 0}, {16, 2}, {10, 2}, {10 - c, 4 - c}, {8, 4}, {8, 10}, {5, 10}}, 128);
 }
 
-Part part_of(const std::string& id, const Mesh& m) {
-  Part p;
-  p.id = id;
-  p.box = Aabb::of(m.vertices);
-  PartSag s;
-  s.measured = measure_tessellation_sag(m, CoordinateStorage::kDouble);
-  p.sag = s;
-  return p;
-}
-
 struct Fixture {
-  Part bushing = part_of("bushing", flanged_bushing());
-  Part pin = part_of("pin", shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 96));
+  Part bushing = sag_part("bushing", flanged_bushing());
+  Part pin = sag_part("pin", shapes::revolution({{0, -5}, {5, -5}, {5, 15}, {0, 15}}, 96));
   Vec3 on_bore{4.999, 0.0, 5.0};  // where the pin meets the bore
 };
 
@@ -75,7 +64,7 @@ TEST(ContactBand, PatchesLieAlongTheSurfaceNotInTheFeaturesBox) {
   const LocalSag boxes = sag_near(s, meeting_region(f.bushing, f.pin));
   EXPECT_GT(boxes.concave, 0.1);  // the fillet's region box holds the bore
   const LocalSag at = sag_at(s, f.on_bore, 0.01);
-  EXPECT_NEAR(at.concave, sag_of(128, 5), 0.1 * sag_of(128, 5));
+  EXPECT_NEAR(at.concave, chord_sag(128, 5), 0.1 * chord_sag(128, 5));
   ASSERT_GE(at.concave_feature, 0);
   EXPECT_EQ(s.features[at.concave_feature].segments, 128);
   EXPECT_EQ(sag_at(s, {0, 0, 50}, 0.01).concave_feature, -1);  // nothing there
@@ -90,7 +79,7 @@ TEST(ContactBand, TheBandAtTheContactComesFromTheBoreOnly) {
   EXPECT_NE(wide.basis.find("saddle"), std::string::npos) << wide.basis;
   ASSERT_TRUE(wide.at_contact);
   const PairTolerance local = wide.at_contact(f.on_bore, contact_reach(0.001, wide.value));
-  const double bore = sag_of(128, 5) * kMargin;
+  const double bore = chord_sag(128, 5) * kMargin;
   EXPECT_NEAR(local.value, bore, 0.1 * bore);
   EXPECT_EQ(local.source, "measured");
   EXPECT_EQ(local.basis.rfind("bushing: bore r 5 mm, 128 segments, sag 0.00151 mm; pin: no concave "
@@ -170,11 +159,11 @@ TEST(ContactBand, TheGapBandIsTheConvexSagsWhereTheGapIs) {
   // counts, the bore (concave) adds none.
   const Fixture f;
   const Part pin48 =
-      part_of("pin", shapes::revolution({{0, -5}, {4.9, -5}, {4.9, 15}, {0, 15}}, 48));
+      sag_part("pin", shapes::revolution({{0, -5}, {4.9, -5}, {4.9, 15}, {0, 15}}, 48));
   const PairTolerance wide = pair_tolerance(f.bushing, pin48, {}, "mm");
   ASSERT_TRUE(wide.gap_at);
   const GapBand g = wide.gap_at({4.95, 0, 5}, 0.1);
-  const double pin = sag_of(48, 4.9) * kMargin;
+  const double pin = chord_sag(48, 4.9) * kMargin;
   EXPECT_NEAR(g.value, pin, 0.1 * pin);
   EXPECT_NE(g.basis.find("pin: pin r 4.9 mm, 48 segments"), std::string::npos) << g.basis;
   EXPECT_NE(g.basis.find("bushing: no convex tessellated surface there"), std::string::npos)
@@ -238,7 +227,7 @@ TEST(ContactBand, AFineBoreBesideACoarseFilletGetsTheBoresBand) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto p = only_pair(r);
   EXPECT_EQ(p["status"], "false_positive");
-  const double bore = sag_of(64, 5) * kMargin;
+  const double bore = chord_sag(64, 5) * kMargin;
   EXPECT_NEAR(p["tolerance"].get<double>(), bore, 0.1 * bore) << p.dump();
   const std::string basis = p["tolerance_basis"];
   EXPECT_EQ(basis.rfind("bushing: bore r 5 mm, 64 segments, sag 0.006", 0), 0u) << basis;
@@ -258,7 +247,7 @@ TEST(ContactBand, AFineFloat32ContactFarFromTheOriginIsDecided) {
   const auto p = only_pair(r);
   EXPECT_EQ(p["status"], "false_positive") << p.dump();
   const double step = 1.0 / 256;  // float32 at 32,768–65,536
-  const double band = (sag_of(64, 5) + 2 * step) * kMargin;
+  const double band = (chord_sag(64, 5) + 2 * step) * kMargin;
   EXPECT_NEAR(p["tolerance"].get<double>(), band, 0.1 * band) << p.dump();
   EXPECT_LE(p["depth_bounds"][1].get<double>(), p["tolerance"].get<double>());
   EXPECT_NE(p["tolerance_basis"].get<std::string>().find("coordinate steps 0.00391 + 0.00391 mm"),
@@ -289,7 +278,7 @@ TEST(ContactBand, AClearanceIsCheckedAgainstTheGapBand) {
             d + R"(block.stl"}, {"id": "pin", "mesh": ")" + d + R"(pin.stl", "transform": )" +
             transform + "}]}");
   };
-  const double pin_sag = sag_of(48, 4.6);
+  const double pin_sag = chord_sag(48, 4.6);
   // True gap 0.09 (< 0.105): the mesh shows 0.0999; auto says how much of it
   // the tessellation can have made (the boxes of a pair farther apart than the
   // clearance are culled before any gap band is known).

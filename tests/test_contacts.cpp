@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "batch/run.h"
+#include "box_points.h"
 #include "corpus/contacts.h"
 #include "solve/methods.h"
 #include "tolerances.h"
@@ -10,9 +11,11 @@
 using namespace pd;
 using testgen::Contact;
 
+using pd_test::box_points;
+
 namespace {
 
-DepthSolution solve(const testgen::PairCase& c, Method m, SolverSettings s = {}) {
+DepthSolution solve_with(const testgen::PairCase& c, Method m, SolverSettings s = {}) {
   static IpoptLocalSolver ipopt;
   s.method = m;
   return solve_convex_pair(c.a, c.b, s, ipopt);
@@ -30,12 +33,12 @@ SolverSettings sampling_only() {
 // above it mlsl must equal exact to 1e-9 relative (pdbench's measure).
 // Both with the EPA bracket first (the default) and with the sampling alone.
 void expect_same_depth(const testgen::PairCase& c, const std::string& what) {
-  const DepthSolution e = solve(c, Method::kExact);
+  const DepthSolution e = solve_with(c, Method::kExact);
   const double touch = tol::kTouch * pair_frame(c.a, c.b).scale;
   for (bool epa : {true, false}) {
     SolverSettings s;
     s.epa = epa;
-    const DepthSolution m = solve(c, Method::kMlsl, s);
+    const DepthSolution m = solve_with(c, Method::kMlsl, s);
     SCOPED_TRACE(what + (epa ? "" : " sampling only") + " exact " + std::to_string(e.depth) +
                  " mlsl " + std::to_string(m.depth));
     EXPECT_TRUE(m.fallback.empty()) << m.fallback;
@@ -46,13 +49,6 @@ void expect_same_depth(const testgen::PairCase& c, const std::string& what) {
       EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
     }
   }
-}
-
-Points box(const Vec3& lo, const Vec3& hi) {
-  Points p(3, 8);
-  for (int k = 0; k < 8; ++k)
-    p.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  return p;
 }
 
 }  // namespace
@@ -79,7 +75,7 @@ TEST(Contacts, SeparatedPairStopsAsProvenSeparatedAtItsFirstSamples) {
   SphereSampler r(4);
   for (int k = 0; k < 5; ++k) {
     const auto c = testgen::apart_boxes_overlapping(r, 100);
-    const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
+    const DepthSolution m = solve_with(c, Method::kMlsl, sampling_only());
     EXPECT_EQ(m.depth, 0.0);
     EXPECT_STREQ(stop_reason_name(m.stats.stop_reason), "proven_separated");
     // One batch of samples at most: no descent, no Ipopt, no certificate.
@@ -87,7 +83,7 @@ TEST(Contacts, SeparatedPairStopsAsProvenSeparatedAtItsFirstSamples) {
     EXPECT_EQ(m.stats.local_solves, 0);
     EXPECT_EQ(m.stats.ipopt_calls, 0);
     // With the bracket first, GJK finds the separating direction.
-    const DepthSolution d = solve(c, Method::kMlsl);
+    const DepthSolution d = solve_with(c, Method::kMlsl);
     EXPECT_EQ(d.depth, 0.0);
     EXPECT_EQ(d.stats.stop_reason, StopReason::kProvenSeparated);
     EXPECT_LE(d.stats.alpha_evaluations, tol::kGjkMaxIterations);
@@ -96,8 +92,9 @@ TEST(Contacts, SeparatedPairStopsAsProvenSeparatedAtItsFirstSamples) {
 
 TEST(Contacts, AxisAlignedTouchingBoxesStopAtTheOverlapAxis) {
   // The box test's overlap axis is the contact normal: gap 0 there, six evaluations.
-  const testgen::PairCase c{box(Vec3::Zero(), Vec3(4, 3, 1)), box(Vec3(1, 1, 1), Vec3(2, 2, 5))};
-  const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
+  const testgen::PairCase c{box_points(Vec3::Zero(), Vec3(4, 3, 1)),
+                            box_points(Vec3(1, 1, 1), Vec3(2, 2, 5))};
+  const DepthSolution m = solve_with(c, Method::kMlsl, sampling_only());
   EXPECT_EQ(m.depth, 0.0);
   EXPECT_EQ(m.stats.stop_reason, StopReason::kProvenSeparated);
   EXPECT_LE(m.stats.alpha_evaluations, 6);
@@ -108,7 +105,7 @@ TEST(Contacts, RotatedTouchingPlatesNeedNoIpopt) {
   SphereSampler r(8);
   for (int k = 0; k < 4; ++k) {
     const auto c = testgen::place(r, testgen::plates_touching(r, 30), testgen::Placement::kRotated);
-    const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
+    const DepthSolution m = solve_with(c, Method::kMlsl, sampling_only());
     SCOPED_TRACE(k);
     EXPECT_LE(m.depth, tol::kTouch * pair_frame(c.a, c.b).scale);
     EXPECT_TRUE(m.stats.stop_reason == StopReason::kProvenSeparated ||
@@ -126,7 +123,8 @@ TEST(Contacts, InterferingShaftIsCertifiedAfterItsFirstBasin) {
   int certified = 0;
   for (int k = 0; k < 6; ++k) {
     const auto c = testgen::shaft_in_bore(r, 64, -0.05);
-    const DepthSolution e = solve(c, Method::kExact), m = solve(c, Method::kMlsl, sampling_only());
+    const DepthSolution e = solve_with(c, Method::kExact),
+                        m = solve_with(c, Method::kMlsl, sampling_only());
     ASSERT_GT(e.depth, 0.04);
     EXPECT_LE(std::abs(m.depth - e.depth), 1e-9 * e.depth);
     if (m.stats.stop_reason == StopReason::kCertificate) {
@@ -145,15 +143,15 @@ TEST(Contacts, StopReasonsOfTheSamplingRules) {
   // lifted: under a sanitizer on a loaded machine the solve can take 30 s).
   SolverSettings untimed;
   untimed.max_seconds = 1e9;
-  EXPECT_EQ(solve(c, Method::kMlslPaper, untimed).stats.stop_reason, StopReason::kBayesian);
-  EXPECT_EQ(solve(c, Method::kExact).stats.stop_reason, StopReason::kNone);
+  EXPECT_EQ(solve_with(c, Method::kMlslPaper, untimed).stats.stop_reason, StopReason::kBayesian);
+  EXPECT_EQ(solve_with(c, Method::kExact).stats.stop_reason, StopReason::kNone);
   // Nearly concentric spheres defeat the certificate; one iteration is the cap.
   SphereSampler z(1);
   const testgen::PairCase s{testgen::sphere_polytope(z, 300, Vec3::Zero(), 10),
                             testgen::sphere_polytope(z, 300, Vec3(1e-3, 0, 0), 10)};
   SolverSettings one = sampling_only();
   one.max_iterations = 1;
-  const DepthSolution m = solve(s, Method::kMlsl, one);
+  const DepthSolution m = solve_with(s, Method::kMlsl, one);
   EXPECT_EQ(m.stats.stop_reason, StopReason::kCap);
   EXPECT_FALSE(m.fallback.empty());
 }
@@ -187,7 +185,7 @@ TEST(Contacts, BumpyFloat32FacesAreCertifiedWithoutTheExactHull) {
       const auto c = testgen::contact_case(r, family, 300, k);
       SCOPED_TRACE(testgen::contact_name(family) + " pair " + std::to_string(k));
       expect_same_depth(c, "float32");
-      const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
+      const DepthSolution m = solve_with(c, Method::kMlsl, sampling_only());
       EXPECT_TRUE(m.fallback.empty()) << m.fallback;
       EXPECT_EQ(m.stats.ipopt_calls, 0);
     }
@@ -205,7 +203,7 @@ TEST(Contacts, TouchingRotatedBoxOnABoardIsSettledInOneCertificate) {
   testgen::PairCase c;
   for (int k = 0; k <= 13; ++k) c = testgen::contact_case(r, Contact::kSeated, 1000, k);
   expect_same_depth(c, "seated pair 13");
-  const DepthSolution m = solve(c, Method::kMlsl, sampling_only());
+  const DepthSolution m = solve_with(c, Method::kMlsl, sampling_only());
   EXPECT_EQ(m.stats.local_solves, 1);
   // Since a contact stop verifies its gap with the certificate instead of
   // stopping at the first cap within kTouch (the touching-pair fix of issue

@@ -14,9 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  return pd_test::scratch_dir("content_hashes", name);
-}
 using pd_test::write_bytes;
 void write(const fs::path& p, const std::string& bytes) {
   write_bytes(p, bytes);
@@ -25,7 +22,7 @@ void write(const fs::path& p, const std::string& bytes) {
 }  // namespace
 
 TEST(ContentHashes, PartHashesFollowTheFile) {
-  const fs::path d = fresh_dir("parts");
+  const fs::path d = pd_test::scratch_dir("content_hashes", "parts");
   write(d / "m.stl", "one");
   SceneSpec s;
   for (const char* id : {"a", "b"}) {

@@ -11,16 +11,10 @@
 using namespace pd;
 namespace fs = std::filesystem;
 
-namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  return pd_test::scratch_dir("convexity_cache", name);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(ConvexityCache, EntriesReadBackExactlyAndKeysFollowTheirInputs) {
-  const fs::path dir = fresh_dir("convexity");
+  const fs::path dir = pd_test::scratch_dir("convexity_cache", "convexity");
   const std::string k = convexity_key("aaaa", 0.01, 0.02);
   EXPECT_EQ(k, convexity_key("aaaa", 0.01, 0.02));
   EXPECT_NE(k, convexity_key("aaab", 0.01, 0.02));                       // another file's bytes

@@ -17,7 +17,7 @@ using namespace pd::shapes;
 
 namespace {
 
-const Vec3 kFar(20000.0, -3000.0, 500.0);
+const Vec3 kFarPlace(20000.0, -3000.0, 500.0);
 
 // Tests decide on the work budget (concavity estimates), never on wall time.
 const DecomposeLimits kBudget{INFINITY, tol::kDecomposeMaxWork};
@@ -89,7 +89,7 @@ void expect_cover_and_within(const Mesh& m, const Decomposition& d, double tol, 
 }  // namespace
 
 TEST(Decompose, ConvexPartIsOnePiece) {
-  const Mesh b = float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFar));
+  const Mesh b = float32(translated(cylinder({0, 0}, 5, 0, 30, 64), kFarPlace));
   const Decomposition d = decompose_convex(b, 0.025, kBudget);
   EXPECT_TRUE(d.complete);
   ASSERT_EQ(d.pieces.size(), 1u);
@@ -97,7 +97,7 @@ TEST(Decompose, ConvexPartIsOnePiece) {
 }
 
 TEST(Decompose, LBracketIsTwoPieces) {
-  const Mesh l = float32(translated(l_bracket(40, 5, 20), kFar));
+  const Mesh l = float32(translated(l_bracket(40, 5, 20), kFarPlace));
   const Decomposition d = decompose_convex(l, 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
   EXPECT_GE(d.pieces.size(), 2u);
@@ -109,7 +109,7 @@ TEST(Decompose, LBracketIsTwoPieces) {
 TEST(Decompose, PlateWithBoltHole) {
   for (int segments : {8, 16}) {
     SCOPED_TRACE(segments);
-    const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, segments), kFar));
+    const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, segments), kFarPlace));
     const Decomposition d = decompose_convex(plate, 0.025, kBudget);
     EXPECT_TRUE(d.complete) << d.note;
     EXPECT_LE(d.pieces.size(), static_cast<std::size_t>(segments));  // one per hole face at most
@@ -121,14 +121,14 @@ TEST(Decompose, PiecesDoNotCollapseTheDepth) {
   // A bolt 0.05 too large for its hole: the deepest piece pair is the radial
   // interference, (r − R)·cos(π/n), not a sliver's fraction of it.
   const int n = 16;
-  const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, n), kFar));
-  const Mesh bolt = float32(translated(cylinder({0, 0}, 5.05, -10, 16, n), kFar));
+  const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, n), kFarPlace));
+  const Mesh bolt = float32(translated(cylinder({0, 0}, 5.05, -10, 16, n), kFarPlace));
   const Decomposition d = decompose_convex(plate, 0.025, kBudget);
   ASSERT_TRUE(d.complete);
-  const Points q = bolt.vertices.colwise() - kFar;
+  const Points q = bolt.vertices.colwise() - kFarPlace;
   double deepest = 0.0;
   for (const Points& p : d.pieces)
-    deepest = std::max(deepest, exact_depth(p.colwise() - kFar, q).depth);
+    deepest = std::max(deepest, exact_depth(p.colwise() - kFarPlace, q).depth);
   const double want = 0.05 * std::cos(M_PI / n);
   EXPECT_GE(deepest, want - 4e-3);  // float32 at 20,000 moves vertices ~1e-3
   EXPECT_LE(deepest, want + 2 * 0.025 + 4e-3);
@@ -175,7 +175,7 @@ TEST(Decompose, TimeLimitReturnsCoveringPiecesMarkedIncomplete) {
 }
 
 TEST(Decompose, DrilledBoardFarAway) {
-  const Mesh board = float32(translated(drilled_board(2, 1, 20, 1.6, 2, 8), kFar));
+  const Mesh board = float32(translated(drilled_board(2, 1, 20, 1.6, 2, 8), kFarPlace));
   EXPECT_TRUE(PreparedMesh(board).closed());
   const Decomposition d = decompose_convex(board, 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
@@ -189,7 +189,7 @@ TEST(Decompose, DrilledBoardFarAway) {
 TEST(Decompose, PlateWithHoleIsAFanOfWedges) {
   for (int segments : {16, 32, 128}) {
     SCOPED_TRACE(segments);
-    const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, segments), kFar));
+    const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, segments), kFarPlace));
     const Decomposition d = decompose_convex(plate, 0.025, kBudget);
     EXPECT_TRUE(d.complete) << d.note;
     // An arc of k faces has sagitta r(1 − cos(kπ/n)) <= tol: at most n / k pieces.
@@ -202,13 +202,13 @@ TEST(Decompose, PlateWithHoleIsAFanOfWedges) {
 }
 
 TEST(Decompose, HollowHousingFarAwayIsItsWalls) {
-  const Mesh h = float32(translated(hollow_box({0, 0, 0}, {30, 20, 10}, 1.5), kFar));
+  const Mesh h = float32(translated(hollow_box({0, 0, 0}, {30, 20, 10}, 1.5), kFarPlace));
   const Decomposition d = decompose_convex(h, 0.025, kBudget);
   EXPECT_TRUE(d.complete) << d.note;
   EXPECT_LE(d.pieces.size(), 8u);
   EXPECT_GE(d.pieces.size(), 5u);
   expect_cover_and_within(h, d, 0.025, 1e-6);
-  for (const HullTest& t : hulls_of(d)) EXPECT_FALSE(t.contains(kFar + Vec3(15, 10, 5), 0.0));
+  for (const HullTest& t : hulls_of(d)) EXPECT_FALSE(t.contains(kFarPlace + Vec3(15, 10, 5), 0.0));
 }
 
 TEST(Decompose, WorkBudgetStopsReproducibly) {

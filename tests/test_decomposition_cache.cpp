@@ -11,16 +11,10 @@
 using namespace pd;
 namespace fs = std::filesystem;
 
-namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  return pd_test::scratch_dir("decomposition_cache", name);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(DecompositionCache, EntriesReadBackAndDamageIsIgnored) {
-  const fs::path dir = fresh_dir("decomposition");
+  const fs::path dir = pd_test::scratch_dir("decomposition_cache", "decomposition");
   StoredDecomposition d;
   Points a(3, 4), b(3, 5);
   a.setRandom();

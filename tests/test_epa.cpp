@@ -18,11 +18,9 @@ using namespace pd;
 using pd::testing::BracketTally;
 using pd::testing::expect_bracket_holds;
 
-namespace {
+using pd_test::box_points;
 
-Points box(const Vec3& lo, const Vec3& hi) {
-  return pd_test::box_points(lo, hi);
-}
+namespace {
 
 // Where a generated pair is checked: rotated at random, moved `far` away, and
 // in double or rounded to float32 as a mesh file stores it.
@@ -186,7 +184,7 @@ TEST(Epa, TouchingCoplanarAndTinyOffsets) {
   SphereSampler r(1e9);
   BracketTally bt;
   DefaultTally dt;
-  const Points a = box(Vec3::Zero(), Vec3::Ones());
+  const Points a = box_points(Vec3::Zero(), Vec3::Ones());
   const Eigen::Matrix3d tilt = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
   const Eigen::Matrix3d turn =
       Eigen::AngleAxisd(0.6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
@@ -197,7 +195,7 @@ TEST(Epa, TouchingCoplanarAndTinyOffsets) {
   for (double eps : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6}) {
     const std::string e = " eps " + std::to_string(eps);
     const Family family = {
-        {"face" + e, {a, against(box(Vec3::Zero(), Vec3(1, 0.5, 0.7)), eps, 0.2, 0.1)}},
+        {"face" + e, {a, against(box_points(Vec3::Zero(), Vec3(1, 0.5, 0.7)), eps, 0.2, 0.1)}},
         {"coplanar" + e, {a, against(a, eps, 0, 0)}},
         {"edge" + e, {a, against(tilt * a, eps, 0.1, 0.1)}},
         {"corner" + e, {a, against(turn * a, eps, 0.3, 0.3)}},
@@ -216,7 +214,7 @@ TEST(Epa, FlatParts) {
   SphereSampler r(3);
   BracketTally bt;
   DefaultTally dt;
-  const Points cube = box(Vec3::Zero(), Vec3::Ones());
+  const Points cube = box_points(Vec3::Zero(), Vec3::Ones());
   Points square(3, 4), segment(3, 2), triangle(3, 3), square2(3, 4);
   square << 0.2, 0.8, 0.8, 0.2, 0.2, 0.2, 0.8, 0.8, 0.5, 0.5, 0.5, 0.5;
   segment << 0.2, 0.8, 0.5, 0.5, 0.3, 0.3;

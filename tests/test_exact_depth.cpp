@@ -14,21 +14,18 @@
 #include "corpus/exact_reference.h"
 #include "corpus/generators.h"
 #include "geometry/frame.h"
+#include "random_rotation.h"
 #include "solve/epa.h"
 #include "solve/methods.h"
 #include "tolerances.h"
 
 using namespace pd;
 
+using pd_test::box_points;
+
 namespace {
 
-Points box(const Vec3& lo, const Vec3& hi) {
-  return pd_test::box_points(lo, hi);
-}
-
-Eigen::Matrix3d random_rotation(SphereSampler& r) {
-  return Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
-}
+using pd_test::random_rotation;
 
 // b's lowest x at 1 − eps (a is the unit cube), moved by (0, y, z).
 Points against(const Points& b, double eps, double y, double z) {
@@ -78,14 +75,14 @@ TEST(ExactFacet, DefaultIsExactOnNearDegeneratePairs) {
   // in double and float32.
   SphereSampler r(1e9);
   Tally t;
-  const Points a = box(Vec3::Zero(), Vec3::Ones());
+  const Points a = box_points(Vec3::Zero(), Vec3::Ones());
   const Eigen::Matrix3d tilt = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
   const Eigen::Matrix3d turn =
       Eigen::AngleAxisd(0.6, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   for (double eps : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6}) {
     const std::string e = " eps " + std::to_string(eps);
     const std::vector<std::pair<std::string, testgen::PairCase>> family = {
-        {"face" + e, {a, against(box(Vec3::Zero(), Vec3(1, 0.5, 0.7)), eps, 0.2, 0.1)}},
+        {"face" + e, {a, against(box_points(Vec3::Zero(), Vec3(1, 0.5, 0.7)), eps, 0.2, 0.1)}},
         {"coplanar" + e, {a, against(a, eps, 0, 0)}},
         {"edge" + e, {a, against(tilt * a, eps, 0.1, 0.1)}},
         {"corner" + e, {a, against(turn * a, eps, 0.3, 0.3)}}};
@@ -106,7 +103,7 @@ TEST(ExactFacet, DefaultIsExactOnNearDegeneratePairs) {
 TEST(ExactFacet, DefaultIsExactOnFlatPartsAndHardCases) {
   SphereSampler r(3);
   Tally t;
-  const Points cube = box(Vec3::Zero(), Vec3::Ones());
+  const Points cube = box_points(Vec3::Zero(), Vec3::Ones());
   for (double eps : {1e-9, 1e-12}) {
     // A square just inside the cube's top face: depth eps (push it up).
     Points square(3, 4);

@@ -8,6 +8,7 @@
 #include "box_points.h"
 #include "corpus/exact_reference.h"
 #include "corpus/generators.h"
+#include "random_rotation.h"
 #include "solve/epa.h"
 #include "solve/exact_facet.h"
 #include "solve/exact_hull_depth.h"
@@ -15,15 +16,11 @@
 
 using namespace pd;
 
+using pd_test::box_points;
+
 namespace {
 
-Points box(const Vec3& lo, const Vec3& hi) {
-  return pd_test::box_points(lo, hi);
-}
-
-Eigen::Matrix3d random_rotation(SphereSampler& r) {
-  return Eigen::AngleAxisd(2 * M_PI * r.uniform(), r.direction()).toRotationMatrix();
-}
+using pd_test::random_rotation;
 
 }  // namespace
 
@@ -36,8 +33,8 @@ TEST(ExactFacet, RotatedTinyOverlapsAreRecomputedExactly) {
   for (double eps : {1e-9, 1e-12})
     for (int k = 0; k < 6; ++k) {
       const Eigen::Matrix3d rot = random_rotation(r);
-      const Points a = rot * box(Vec3::Zero(), Vec3::Ones());
-      const Points b = rot * box(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8));
+      const Points a = rot * box_points(Vec3::Zero(), Vec3::Ones());
+      const Points b = rot * box_points(Vec3(1 - eps, 0.2, 0.1), Vec3(2 - eps, 0.7, 0.8));
       const PairProblem pr(a, b);
       const DepthBracket br = epa_bracket(pr, tol::kEpaMaxIterations);
       const double truth = testgen::exact_reference_depth(a, b).depth;

@@ -14,20 +14,16 @@
 #include "bcf_check.h"
 #include "cli_support.h"
 #include "csv_reader.h"
+#include "cube_json.h"
 #include "report/bcf_topics.h"
 #include "results/fingerprint.h"
 
 using nlohmann::json;
 using namespace pd::test;
 
-namespace {
+using pd_test::cube_json;
 
-json cube(const std::string& id, double x, double y, double z, double s) {
-  json v = json::array();
-  for (int k = 0; k < 8; ++k)
-    v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), z + s * ((k >> 2) & 1)});
-  return {{"id", id}, {"vertices", v}};
-}
+namespace {
 
 // An L-shaped prism (nonconvex): a block in its arm is a `thickness` pair with `at`.
 std::string ell_mesh() {
@@ -61,10 +57,11 @@ std::string scene(const std::string& name, double lid_z) {
   const json ell = {{"id", "ell"},
                     {"mesh", ell_mesh()},
                     {"transform", {1, 0, 0, 100, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}};
-  const json parts = {cube("frame", 0, 0, 0, 10),          cube("lid, top", 0, 0, lid_z, 10),
-                      cube("bushing \"A\"", 9.5, 2, 2, 4), cube("pin", -1.95, 4, 4, 2),
-                      cube("bolt", 40, 0, 0, 2),           ell,
-                      cube("block", 107, 1.5, 0.5, 1)};
+  const json parts = {
+      cube_json("frame", 0, 0, 0, 10),          cube_json("lid, top", 0, 0, lid_z, 10),
+      cube_json("bushing \"A\"", 9.5, 2, 2, 4), cube_json("pin", -1.95, 4, 4, 2),
+      cube_json("bolt", 40, 0, 0, 2),           ell,
+      cube_json("block", 107, 1.5, 0.5, 1)};
   return write_temp(name, json{{"units", "mm"}, {"tolerance", 0.1}, {"parts", parts}}.dump());
 }
 

@@ -7,19 +7,17 @@
 
 #include "corpus/cad_shapes.h"
 #include "geometry/face_axes.h"
+#include "random_rotation.h"
 
 namespace pd {
 namespace {
+
+using pd_test::random_rotation;
 
 Mesh rotated(Mesh m, const Eigen::Matrix3d& r, const Vec3& offset) {
   for (long k = 0; k < m.vertices.cols(); ++k)
     m.vertices.col(k) = r * Vec3(m.vertices.col(k)) + offset;
   return m;
-}
-
-Eigen::Matrix3d random_rotation(std::mt19937& rng) {
-  std::normal_distribution<double> n(0, 1);
-  return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
 }
 
 void expect_rotation(const Eigen::Matrix3d& r) {

@@ -15,9 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  return pd_test::scratch_dir("file_hash", name);
-}
 using pd_test::write_bytes;
 void write(const fs::path& p, const std::string& bytes) {
   write_bytes(p, bytes);
@@ -26,7 +23,7 @@ void write(const fs::path& p, const std::string& bytes) {
 }  // namespace
 
 TEST(FileHash, RegularFileIsItsBytes) {
-  const fs::path d = fresh_dir("bytes");
+  const fs::path d = pd_test::scratch_dir("file_hash", "bytes");
   const std::string bytes("solid x\n\0\x01\xff end", 16);
   write(d / "a.stl", bytes);
   EXPECT_EQ(file_content_hash((d / "a.stl").string()), content_hash(bytes));
@@ -35,7 +32,7 @@ TEST(FileHash, RegularFileIsItsBytes) {
 }
 
 TEST(FileHash, NonFilesNeverMatchAReadableFile) {
-  const fs::path d = fresh_dir("nonfiles");
+  const fs::path d = pd_test::scratch_dir("file_hash", "nonfiles");
   write(d / "empty.stl", "");
   const std::string empty = file_content_hash((d / "empty.stl").string());
   fs::create_directory(d / "dir.stl");

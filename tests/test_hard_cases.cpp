@@ -16,11 +16,9 @@
 using namespace pd;
 using pd_test::inline_part;
 
-namespace {
+using pd_test::box_points;
 
-Points box(const Vec3& lo, const Vec3& hi) {
-  return pd_test::box_points(lo, hi);
-}
+namespace {
 
 Points shifted(Points p, const Vec3& d) {
   p.colwise() += d;
@@ -83,9 +81,9 @@ const Vec3 kO = Vec3::Zero(), kOne = Vec3::Ones();
 }  // namespace
 
 TEST(HardCases, TouchingFaceFace) {
-  const Points a = box(kO, kOne);
+  const Points a = box_points(kO, kOne);
   for (double eps : {0.0, 1e-12, -1e-12}) {  // of the size (the pair spans 2 along x)
-    const Points b = box(Vec3(1 - 2 * eps, 0, 0), Vec3(2 - 2 * eps, 1, 1));
+    const Points b = box_points(Vec3(1 - 2 * eps, 0, 0), Vec3(2 - 2 * eps, 1, 1));
     expect_case("face-face eps " + std::to_string(eps), a, b, std::max(0.0, 2 * eps), 1e-14,
                 Status::kSeparated);
   }
@@ -103,7 +101,7 @@ TEST(HardCases, TouchingEdgeEdge) {
 }
 
 TEST(HardCases, TouchingVertexFace) {
-  const Points a = box(Vec3(-1, -1, -1), Vec3(1, 1, 0));
+  const Points a = box_points(Vec3(-1, -1, -1), Vec3(1, 1, 0));
   for (double eps : {0.0, 1e-12, -1e-12}) {
     const Points b =
         shifted(points({{0, 0, 0}, {1, 0, 2}, {-1, 1, 2}, {-1, -1, 2}}), Vec3(0, 0, -3 * eps));
@@ -152,7 +150,7 @@ Points joined(const Points& a, const Points& b) {
 /// has z = 0, every other of b has z > 0 and of a z < 0).
 testgen::PairCase touching_pair(SphereSampler& r, Touch t) {
   const double w = 1 + 4 * r.uniform();
-  const Points a_box = box(Vec3(-w, -w, -1 - r.uniform()), Vec3(w, w, 0));
+  const Points a_box = box_points(Vec3(-w, -w, -1 - r.uniform()), Vec3(w, w, 0));
   switch (t) {
     case Touch::kBoxEdgeOnFace:
     case Touch::kBoxEdgeOnEdge: {
@@ -285,30 +283,31 @@ TEST(HardCases, TouchingFloat32PairsAtRandomPosesGiveTheExactDepth) {
 }
 
 TEST(HardCases, OverlapOfOneBillionthOfTheSize) {
-  const Points a = box(kO, kOne), b = box(Vec3(1 - 2e-9, 0, 0), Vec3(2 - 2e-9, 1, 1));
+  const Points a = box_points(kO, kOne), b = box_points(Vec3(1 - 2e-9, 0, 0), Vec3(2 - 2e-9, 1, 1));
   expect_case("overlap 1e-9", a, b, 2e-9, 1e-15, Status::kFalsePositive);
 }
 
 TEST(HardCases, CoplanarFacesWithTiedOptima) {
   // Top and bottom faces coplanar; moving along +x or +y both need 0.5.
-  const Points a = box(kO, kOne), b = box(Vec3(0.5, 0.5, 0), Vec3(1.5, 1.5, 1));
+  const Points a = box_points(kO, kOne), b = box_points(Vec3(0.5, 0.5, 0), Vec3(1.5, 1.5, 1));
   expect_case("coplanar", a, b, 0.5, 1e-12, Status::kInterference);
 }
 
 TEST(HardCases, IdenticalPolytopes) {
-  expect_case("identical cubes", box(kO, kOne), box(kO, kOne), 1.0, 1e-12, Status::kInterference);
+  expect_case("identical cubes", box_points(kO, kOne), box_points(kO, kOne), 1.0, 1e-12,
+              Status::kInterference);
   SphereSampler r(77);
   const Points p = testgen::ball_polytope(r, 40, Vec3(3, 4, 5), 10);
   expect_mlsl_equals_exact("identical random", p, p);
 }
 
 TEST(HardCases, OneStrictlyInsideTheOther) {
-  expect_case("inside", box(kO, kOne), box(Vec3::Constant(0.4), Vec3::Constant(0.6)), 0.6, 1e-12,
-              Status::kInterference);
+  expect_case("inside", box_points(kO, kOne), box_points(Vec3::Constant(0.4), Vec3::Constant(0.6)),
+              0.6, 1e-12, Status::kInterference);
 }
 
 TEST(HardCases, OptimumAtThePolesAndTheWrapAround) {
-  const Points a = box(-kOne, kOne);  // libccd's 2x2x2 cube, shifted 1.9 each way
+  const Points a = box_points(-kOne, kOne);  // libccd's 2x2x2 cube, shifted 1.9 each way
   const Vec3 axes[] = {Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX()};
   for (const Vec3& d : axes) {
     const Points b = shifted(a, 1.9 * d);
@@ -319,39 +318,40 @@ TEST(HardCases, OptimumAtThePolesAndTheWrapAround) {
 }
 
 TEST(HardCases, ThinPlates) {
-  const Points a = box(kO, Vec3(1000, 1000, 1)), b = box(Vec3(0, 0, 0.99), Vec3(1000, 1000, 1.99));
+  const Points a = box_points(kO, Vec3(1000, 1000, 1)),
+               b = box_points(Vec3(0, 0, 0.99), Vec3(1000, 1000, 1.99));
   expect_case("plates 1000x1000x1", a, b, 0.01, 1e-9, Status::kFalsePositive, 0.05);
   // Thickness 1e-6 of the size, overlapping by half of it, rotated off the axes.
   const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-  const Points c = rot * box(kO, Vec3(1000, 1000, 1e-3));
-  const Points d = rot * box(Vec3(100, 100, 0.5e-3), Vec3(900, 900, 1.5e-3));
+  const Points c = rot * box_points(kO, Vec3(1000, 1000, 1e-3));
+  const Points d = rot * box_points(Vec3(100, 100, 0.5e-3), Vec3(900, 900, 1.5e-3));
   expect_case("plates 1e-6", c, d, 0.5e-3, 1e-12, Status::kFalsePositive, 0.01);
 }
 
 TEST(HardCases, NeedlesAndSlivers) {
-  const Points a = box(kO, Vec3(100, 0.01, 0.01));
-  const Points b = box(Vec3(50, -50, 0.005), Vec3(50.01, 50, 0.015));
+  const Points a = box_points(kO, Vec3(100, 0.01, 0.01));
+  const Points b = box_points(Vec3(50, -50, 0.005), Vec3(50.01, 50, 0.015));
   expect_case("crossed needles", a, b, 0.005, 1e-12, Status::kFalsePositive);
   // A sliver tetrahedron (height 1e-4 of its size) through a box corner.
   const Points s = points({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {3, 3, 1e-3}});
-  expect_mlsl_equals_exact("sliver", s, shifted(box(kO, kOne), Vec3(2, 2, -0.5)));
+  expect_mlsl_equals_exact("sliver", s, shifted(box_points(kO, kOne), Vec3(2, 2, -0.5)));
 }
 
 TEST(HardCases, DuplicateAndNearDuplicateVertices) {
   // An unwelded STL: every vertex three times, two copies off by 1e-13.
-  const Points clean = box(kO, kOne);
+  const Points clean = box_points(kO, kOne);
   Points dup(3, 24);
   for (int k = 0; k < 8; ++k) {
     dup.col(3 * k) = clean.col(k);
     dup.col(3 * k + 1) = clean.col(k);
     dup.col(3 * k + 2) = clean.col(k) + Vec3(1e-13, -1e-13, 1e-13);
   }
-  const Points b = box(Vec3(0.7, 0.2, 0.2), Vec3(1.7, 0.8, 0.8));
+  const Points b = box_points(Vec3(0.7, 0.2, 0.2), Vec3(1.7, 0.8, 0.8));
   expect_case("duplicates", dup, b, 0.3, 1e-12, Status::kInterference);
 }
 
 TEST(HardCases, FlatAndCollinearInput) {
-  const Points cube = box(kO, kOne);
+  const Points cube = box_points(kO, kOne);
   const Points square =
       points({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}});
   expect_case("flat square in a cube", cube, square, 0.5, 1e-12, Status::kInterference);
@@ -361,16 +361,16 @@ TEST(HardCases, FlatAndCollinearInput) {
 
 TEST(HardCases, FarFromTheOriginWithASmallInterference) {
   // x ≈ 35,000 mm, 0.01 mm of interference: double coordinates keep it to ~1e-11.
-  const Points a = box(Vec3(35000, 0, 0), Vec3(35010, 10, 10));
-  const Points b = box(Vec3(35009.99, 2, 2), Vec3(35020, 8, 8));
+  const Points a = box_points(Vec3(35000, 0, 0), Vec3(35010, 10, 10));
+  const Points b = box_points(Vec3(35009.99, 2, 2), Vec3(35020, 8, 8));
   expect_case("x=35000 tol 0.005", a, b, 0.01, 1e-9, Status::kInterference, 0.005);
   expect_case("x=35000 tol 0.02", a, b, 0.01, 1e-9, Status::kFalsePositive, 0.02);
 }
 
 TEST(HardCases, TinyParts) {
   // 1e-3 mm parts overlapping by 1e-5 mm: the unit frame makes size irrelevant.
-  const Points a = box(kO, Vec3::Constant(1e-3)),
-               b = box(Vec3(0.99e-3, 0, 0), Vec3(2e-3, 1e-3, 1e-3));
+  const Points a = box_points(kO, Vec3::Constant(1e-3)),
+               b = box_points(Vec3(0.99e-3, 0, 0), Vec3(2e-3, 1e-3, 1e-3));
   expect_case("tiny", a, b, 1e-5, 1e-17, Status::kInterference, 1e-6);
 }
 
@@ -382,7 +382,7 @@ TEST(HardCases, PinAgainstATenMetrePanel) {
     pin.col(k) = Vec3(5000 + 0.5 * std::cos(t), 5000 + 0.5 * std::sin(t), 4.9);
     pin.col(24 + k) = Vec3(5000 + 0.5 * std::cos(t), 5000 + 0.5 * std::sin(t), 24.9);
   }
-  const Points panel = box(kO, Vec3(10000, 10000, 5));
+  const Points panel = box_points(kO, Vec3(10000, 10000, 5));
   expect_case("pin", panel, pin, 0.1, 1e-9, Status::kFalsePositive, 0.2);
 }
 

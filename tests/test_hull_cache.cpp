@@ -17,6 +17,7 @@
 #include "scene/hull_cache.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
+#include "scratch_dir.h"
 #include "tolerances.h"
 
 using namespace pd;
@@ -25,13 +26,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kBox = std::string(PDCHECK_SOURCE_DIR) + "/testdata/formats/box.obj";
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::path(testing::TempDir()) / ("hull_cache_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
 
 // Two instances of the box mesh under `pieces`, 10 apart.
 SceneSpec box_scene(const std::string& pieces, const std::string& tolerance = "0.1") {
@@ -57,7 +51,7 @@ std::vector<fs::path> all_entries(const fs::path& dir) {
   return out;
 }
 
-Aabb box(const Vec3& lo, const Vec3& hi) {
+Aabb aabb(const Vec3& lo, const Vec3& hi) {
   Aabb b;
   b.lo = lo;
   b.hi = hi;
@@ -74,14 +68,14 @@ TessellationSag measured() {
   s.creases = 42;
   s.design_edges = 12;
   SagFeature f;
-  f.box = box(Vec3(-1e5, 0.1, -0.0), Vec3(1e5 + 0.3, 2.0 / 3.0, 7));
+  f.box = aabb(Vec3(-1e5, 0.1, -0.0), Vec3(1e5 + 0.3, 2.0 / 3.0, 7));
   f.concave = 1.0 / 3.0;
   f.convex = std::nextafter(0.1, 1.0);
   f.radius = 12.5;
   f.segments = 64;
   f.facets = 128;
-  f.patches = {{box(Vec3(0, 0, 0), Vec3(1, 1, 1)), 0.01, 0.02},
-               {box(Vec3(1, 0, 0), Vec3(2, 1, 1)), 1e-300, 0.0}};
+  f.patches = {{aabb(Vec3(0, 0, 0), Vec3(1, 1, 1)), 0.01, 0.02},
+               {aabb(Vec3(1, 0, 0), Vec3(2, 1, 1)), 1e-300, 0.0}};
   s.features = {f, SagFeature{}};
   return s;
 }
@@ -104,7 +98,7 @@ void crash_on_box(const std::string& path) {
 }  // namespace
 
 TEST(HullCache, EntriesReadBackExactlyOrNotAtAll) {
-  const fs::path dir = fresh_dir("entries");
+  const fs::path dir = pd_test::absent_dir("hull_cache", "entries");
   StoredHulls h;
   h.counts = {8, 12};
   h.reduced.push_back(Points::Random(3, 5));
@@ -128,7 +122,7 @@ TEST(HullCache, EntriesReadBackExactlyOrNotAtAll) {
 }
 
 TEST(HullCache, ASagReadsBackBitForBit) {
-  const fs::path dir = fresh_dir("sag");
+  const fs::path dir = pd_test::absent_dir("hull_cache", "sag");
   const std::string k = hulls_key("aaaa", false);
   const StoredHulls h = hulls_with(measured());
   ASSERT_EQ(write_cached_hulls(dir.string(), k, h), "");
@@ -176,7 +170,7 @@ TEST(HullCache, ASagReadsBackBitForBit) {
 }
 
 TEST(HullCache, AnEntryWithADamagedSagIsAMiss) {
-  const fs::path dir = fresh_dir("damaged_sag");
+  const fs::path dir = pd_test::absent_dir("hull_cache", "damaged_sag");
   const std::string k = hulls_key("bbbb", false);
   ASSERT_EQ(write_cached_hulls(dir.string(), k, hulls_with(measured())), "");
   ASSERT_TRUE(read_cached_hulls(dir.string(), k));
@@ -207,7 +201,7 @@ TEST(HullCache, AnEntryWithADamagedSagIsAMiss) {
 }
 
 TEST(HullCache, UnderAutoOneEntryHoldsTheHullsAndTheSag) {
-  const fs::path dir = fresh_dir("auto");
+  const fs::path dir = pd_test::absent_dir("hull_cache", "auto");
   const PartsCache cache{dir.string()};
   // A run without auto stores the hulls alone.
   ASSERT_FALSE(build_parts(box_scene("hull"), 1, {}, kDefaultLoadTimeout, cache)[0].error);
@@ -251,7 +245,7 @@ TEST(HullCache, UnderAutoOneEntryHoldsTheHullsAndTheSag) {
 }
 
 TEST(HullCache, ARerunTakesTheHullsFromTheCache) {
-  const fs::path dir = fresh_dir("rerun");
+  const fs::path dir = pd_test::absent_dir("hull_cache", "rerun");
   const PartsCache cache{dir.string()};
   const SceneSpec s = box_scene("hull");
   const auto cold = build_parts(s, 1, {}, kDefaultLoadTimeout, cache);
@@ -319,7 +313,7 @@ std::string inline_part(const std::string& id, int n, double r, double shift) {
 }  // namespace
 
 TEST(HullCache, LargeInlinePartsTakeTheirHullsFromTheCache) {
-  const fs::path dir = fresh_dir("inline");
+  const fs::path dir = pd_test::absent_dir("hull_cache", "inline");
   const PartsCache cache{dir.string()};
   const long big = tol::kInlineHullCacheVertices;
   auto scene = [&](double shift) {

@@ -16,7 +16,7 @@ using nlohmann::json;
 
 namespace {
 
-json cube(const std::string& id, double x, double y, double s) {
+json floor_cube(const std::string& id, double x, double y, double s) {
   json v = json::array();
   for (int k = 0; k < 8; ++k) v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), s * (k >> 2)});
   return {{"id", id}, {"vertices", v}};
@@ -30,10 +30,10 @@ SceneSpec scene() {
   json parts = json::array();
   for (int g = 0; g < 10; ++g) {
     const std::string id = "g" + std::to_string(g);
-    parts.push_back(cube(id + "a", 10.0 * g, 0, 1));
-    parts.push_back(cube(id + "b", 10.0 * g + offsets[g % 5], 0.2, 1));
+    parts.push_back(floor_cube(id + "a", 10.0 * g, 0, 1));
+    parts.push_back(floor_cube(id + "b", 10.0 * g + offsets[g % 5], 0.2, 1));
   }
-  parts.push_back(cube("chain", 0.7, 0.5, 1));
+  parts.push_back(floor_cube("chain", 0.7, 0.5, 1));
   const json s = {{"tolerance", 0.1}, {"units", "mm"}, {"parts", parts}};
   return parse_scene_json(s.dump(), "merge.json", ".");
 }

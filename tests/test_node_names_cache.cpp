@@ -8,23 +8,15 @@
 #include <fstream>
 
 #include "scene/node_names_cache.h"
+#include "scratch_dir.h"
 
 using namespace pd;
 namespace fs = std::filesystem;
 
-namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::path(testing::TempDir()) / ("node_names_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(NodeNamesCache, PathsReadBackByteForByte) {
-  const fs::path dir = fresh_dir("roundtrip");
+  const fs::path dir = pd_test::absent_dir("node_names", "roundtrip");
   const std::string k = node_names_key("aaaa");
   EXPECT_EQ(k, node_names_key("aaaa"));
   EXPECT_NE(k, node_names_key("aaab"));
@@ -39,7 +31,7 @@ TEST(NodeNamesCache, PathsReadBackByteForByte) {
 }
 
 TEST(NodeNamesCache, ADamagedEntryIsAMiss) {
-  const fs::path dir = fresh_dir("damaged");
+  const fs::path dir = pd_test::absent_dir("node_names", "damaged");
   const std::string k = node_names_key("bbbb");
   ASSERT_EQ(write_cached_node_names(dir.string(), k, {"a", "b/c"}), "");
   ASSERT_TRUE(read_cached_node_names(dir.string(), k));

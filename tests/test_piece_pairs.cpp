@@ -42,7 +42,7 @@ Part part_of(const std::vector<Points>& pieces) {
 
 // An octahedron |x|+|y|+|z| <= 1 between two cubes on its diagonal: both piece
 // boxes overlap its box, the first cube is 0.8/√3 away, the second 0.5/√3.
-const Points kFar = box_points(Vec3::Constant(0.6), Vec3::Constant(1.6));
+const Points kFarBox = box_points(Vec3::Constant(0.6), Vec3::Constant(1.6));
 const Points kNear = box_points(Vec3::Constant(-1.5), Vec3::Constant(-0.5));
 
 // Every point of `a` at or below every point of `b` along `dir` (to rounding):
@@ -129,7 +129,7 @@ TEST(PiecePairs, BoxDisjointPairsAreSolvedOnlyWhileTheyCouldBeCloser) {
 TEST(PiecePairs, SeparatedPairReportsTheClosestPiecePairNotTheFirst) {
   // The case: with --method exact the first piece pair's distance was
   // reported (here 0.8/√3 ≈ 0.462) where the pair is 0.5/√3 ≈ 0.289 apart.
-  const Part a = part_of({kFar, kNear});
+  const Part a = part_of({kFarBox, kNear});
   const Part b = part_of({octahedron(1.0)});
   IpoptLocalSolver ipopt;
   const PairResult r = solve_part_pair(0, a, 1, b, exact_method(), 0.1, ipopt);
@@ -169,7 +169,7 @@ TEST(PiecePairs, EveryPiecePairSkippedStillGivesASeparatingDirection) {
 }
 
 TEST(PiecePairs, MotionSweepTakesTheClosestPiecePair) {
-  Part a = part_of({kFar, kNear});
+  Part a = part_of({kFarBox, kNear});
   const Part b = part_of({octahedron(1.0)});
   a.motion = RigidMotion{};  // at rest: every step is the static pair
   MotionCheck m;
@@ -188,7 +188,7 @@ TEST(PiecePairs, ExactSceneWithMeshPiecesReportsTheSmallestDistance) {
   {
     std::ofstream f(obj);
     int base = 0;
-    for (const Points* p : {&kFar, &kNear}) {
+    for (const Points* p : {&kFarBox, &kNear}) {
       f << "o piece" << base / 8 << "\n";
       for (int k = 0; k < 8; ++k)
         f << "v " << p->col(k).x() << " " << p->col(k).y() << " " << p->col(k).z() << "\n";

@@ -16,7 +16,7 @@ using namespace pd;
 
 namespace {
 
-json cube(const std::string& id, double x, double s, const json& transform = nullptr) {
+json cube_along_x(const std::string& id, double x, double s, const json& transform = nullptr) {
   json v = json::array();
   for (int k = 0; k < 8; ++k)
     v.push_back({x + s * (k & 1), s * ((k >> 1) & 1), s * ((k >> 2) & 1)});
@@ -138,11 +138,11 @@ TEST(SetupWarnings, RunReportsEachSmellOncePerKind) {
   const json scale2 = {{2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, 2, 0}, {0, 0, 0, 1}};
   const json far = {{1, 0, 0, -35000}, {0, 1, 0, -35000}, {0, 0, 1, -35000}, {0, 0, 0, 1}};
   const std::string stl = stl_cube("far_cube.stl", 35000, 10);
-  json parts = {cube("a", 0, 10),
-                cube("b", 30, 10),
-                cube("c", 60, 5, scale2),
-                cube("d", 90, 5, scale2),
-                cube("inch", 120, 10 / 25.4),
+  json parts = {cube_along_x("a", 0, 10),
+                cube_along_x("b", 30, 10),
+                cube_along_x("c", 60, 5, scale2),
+                cube_along_x("d", 90, 5, scale2),
+                cube_along_x("inch", 120, 10 / 25.4),
                 {{"id", "far"}, {"mesh", stl}, {"transform", far}}};
   // "far" sits at x 0..10, touching "a" face to face.
   parts[5]["transform"][0][3] = -35010.0;
@@ -177,9 +177,10 @@ TEST(SetupWarnings, RunReportsEachSmellOncePerKind) {
 
   // A tolerance at least as large as the smaller part of a flagged pair.
   const std::string big = test::write_temp(
-      "big_tol.json",
-      json{{"units", "mm"}, {"tolerance", 1000}, {"parts", {cube("p", 0, 10), cube("q", 2, 10)}}}
-          .dump());
+      "big_tol.json", json{{"units", "mm"},
+                           {"tolerance", 1000},
+                           {"parts", {cube_along_x("p", 0, 10), cube_along_x("q", 2, 10)}}}
+                          .dump());
   const test::CliResult t = test::pdcheck(big);
   const json tr = json::parse(t.out);
   ASSERT_EQ(tr["pairs"].size(), 1u);

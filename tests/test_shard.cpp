@@ -12,9 +12,13 @@
 
 #include "batch/shard.h"
 #include "cli_support.h"
+#include "cube_json.h"
+#include "page_data.h"
 
 using nlohmann::json;
 using namespace pd::test;
+
+using pd_test::cube_json;
 
 namespace {
 
@@ -22,13 +26,6 @@ namespace {
 const std::string kNoShardEnv =
     "env -u CI_NODE_INDEX -u CI_NODE_TOTAL -u SLURM_ARRAY_TASK_ID -u SLURM_ARRAY_TASK_MIN "
     "-u SLURM_ARRAY_TASK_COUNT ";
-
-json cube(const std::string& id, double x, double y, double z, double s) {
-  json v = json::array();
-  for (int k = 0; k < 8; ++k)
-    v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), z + s * ((k >> 2) & 1)});
-  return {{"id", id}, {"vertices", v}};
-}
 
 // Groups 20 apart along x, each one relation between cubes of size 4 (a, b, and
 // c for a chain): interference (0.5 in), false_positive (0.05 in, tolerance 0.1),
@@ -43,14 +40,14 @@ std::string scene(const std::string& name, double shift = 0.0, int groups = 14) 
   for (int g = 0; g < groups; ++g) {
     const double x = 20.0 * g, y = (g % 3) * 2.0;
     const std::string id = "g" + std::to_string(g);
-    parts.push_back(cube(id + "a", x, y + (g == 2 ? shift : 0.0), 0, 4));
-    parts.push_back(cube(id + "b", x + offsets[g % 7], y + 0.5, 0.5, 4));
-    if (g % 7 == 5) parts.push_back(cube(id + "c", x + 1.5, y + 2.0, 3.0, 4));
+    parts.push_back(cube_json(id + "a", x, y + (g == 2 ? shift : 0.0), 0, 4));
+    parts.push_back(cube_json(id + "b", x + offsets[g % 7], y + 0.5, 0.5, 4));
+    if (g % 7 == 5) parts.push_back(cube_json(id + "c", x + 1.5, y + 2.0, 3.0, 4));
   }
   // Just beyond the reach (1.0): culled by the exact box test, planned by the
   // shards' widened boxes, so the shards' own test must drop it.
-  parts.push_back(cube("near_a", 400, 0, 0, 4));
-  parts.push_back(cube("near_b", 405.00000003, 0, 0, 4));
+  parts.push_back(cube_json("near_a", 400, 0, 0, 4));
+  parts.push_back(cube_json("near_b", 405.00000003, 0, 0, 4));
   const std::string dir = kSource + "/testdata/formats/";
   parts.push_back({{"id", "boxmesh"},
                    {"mesh", dir + "box.obj"},
@@ -243,13 +240,9 @@ void move_part(json& doc, const std::string& id, double dx) {
 }
 
 // The data an HTML page shows (its JSON island), without the run's timings.
-json page_data(const std::string& path) {
-  const std::string page = read_text(path);
-  const std::string open = "<script id=\"pdcheck-data\" type=\"application/json\">";
-  const size_t at = page.find(open);
-  if (at == std::string::npos) return nullptr;
-  json d =
-      json::parse(page.substr(at + open.size(), page.find("</script>", at) - at - open.size()));
+json timeless_page_data(const std::string& path) {
+  json d = pd::page_data(read_text(path));
+  if (d.is_null()) return d;
   d.erase("seconds");
   d.erase("stage_seconds");
   return d;
@@ -326,10 +319,10 @@ TEST(Shard, MergeWritesTheRunsCiOutputs) {
             without_times(read_text(tmp("ci_full.xml"))));
   EXPECT_EQ(read_json(tmp("ci_merged.sarif")), read_json(tmp("ci_full.sarif")));
   EXPECT_EQ(read_text(tmp("ci_merged_sup.json")), read_text(tmp("ci_full_sup.json")));
-  const json page = page_data(tmp("ci_merged.html"));
+  const json page = timeless_page_data(tmp("ci_merged.html"));
   ASSERT_TRUE(page.is_object()) << "no page written by the merge";
   EXPECT_FALSE(page["findings"].empty());
-  EXPECT_EQ(page, page_data(tmp("ci_full.html")));
+  EXPECT_EQ(page, timeless_page_data(tmp("ci_full.html")));
 
   // --fail-on new: only g1's finding is new; the bar holds for both.
   for (const char* bar : {"new", "none"}) {

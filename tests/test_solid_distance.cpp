@@ -10,9 +10,12 @@
 
 #include "corpus/cad_shapes.h"
 #include "geometry/solid_distance.h"
+#include "random_rotation.h"
 
 namespace pd {
 namespace {
+
+using pd_test::random_rotation;
 
 namespace sh = shapes;
 
@@ -23,11 +26,6 @@ struct ModelCounts {
 };
 
 // A rotation drawn uniformly (a random unit quaternion).
-Eigen::Matrix3d random_rotation(std::mt19937& g) {
-  std::normal_distribution<double> n(0, 1);
-  return Eigen::Quaterniond(n(g), n(g), n(g), n(g)).normalized().toRotationMatrix();
-}
-
 // Checks every plane, hole and wedge bound of s's models about framed boxes
 // (a random rotation, the origin at `centre(rng)`, sides up to 0.4 of `scale`,
 // some twenty times longer than thick, a margin up to half of `scale`):

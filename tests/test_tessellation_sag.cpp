@@ -13,9 +13,11 @@
 #include "corpus/cad_shapes.h"
 #include "geometry/coordinate_resolution.h"
 #include "geometry/tessellation_sag.h"
+#include "sag_part.h"
 
 using namespace pd;
 using namespace pd::shapes;
+using pd_test::chord_sag;
 
 namespace {
 
@@ -49,10 +51,6 @@ Excursion excursion(const Mesh& m, const Sdf& sdf) {
       }
   }
   return e;
-}
-
-double sag_of(int segments, double r) {
-  return r * (1 - std::cos(M_PI / segments));
 }
 
 // A radius whose sag at `segments` is about 0.2 (at least 5): far above the
@@ -130,8 +128,8 @@ TEST(TessellationSag, CylinderAndBoreMatchTheChordFormula) {
     const Mesh tube = revolution({{r, 0}, {2 * r, 0}, {2 * r, r}, {r, r}}, n);
     const TessellationSag s = measure_tessellation_sag(tube, CoordinateStorage::kDouble);
     const std::string what = std::to_string(n) + " segments";
-    expect_within_10_percent(s.concave, sag_of(n, r), s.resolution, what);
-    expect_within_10_percent(s.convex, sag_of(n, 2 * r), s.resolution, what);
+    expect_within_10_percent(s.concave, chord_sag(n, r), s.resolution, what);
+    expect_within_10_percent(s.convex, chord_sag(n, 2 * r), s.resolution, what);
     ASSERT_EQ(s.features.size(), 2u) << what;  // the bore and the outside: the flat ends have none
     for (const SagFeature& f : s.features) {
       EXPECT_EQ(f.segments, n) << what;
@@ -171,16 +169,16 @@ TEST(TessellationSag, NearAFeatureTakesItsSagNotThePartsWorst) {
   const TessellationSag s =
       measure_tessellation_sag(joined({coarse, fine}), CoordinateStorage::kDouble);
   ASSERT_EQ(s.features.size(), 2u);
-  EXPECT_NEAR(s.convex, sag_of(8, 5), 1e-9);
+  EXPECT_NEAR(s.convex, chord_sag(8, 5), 1e-9);
   const LocalSag at_fine = sag_near(s, {{98, -1, 4}, {101, 1, 6}});
-  EXPECT_NEAR(at_fine.convex, sag_of(128, 5), 1e-9);
+  EXPECT_NEAR(at_fine.convex, chord_sag(128, 5), 1e-9);
   ASSERT_GE(at_fine.convex_feature, 0);
   EXPECT_EQ(s.features[at_fine.convex_feature].segments, 128);
   const LocalSag nowhere = sag_near(s, {{50, 50, 50}, {51, 51, 51}});
   EXPECT_EQ(nowhere.convex, 0.0);
   EXPECT_EQ(nowhere.convex_feature, -1);
   // Reach grows the query box.
-  EXPECT_NEAR(sag_near(s, {{50, 0, 5}, {51, 0, 5}}, 45).convex, sag_of(8, 5), 1e-9);
+  EXPECT_NEAR(sag_near(s, {{50, 0, 5}, {51, 0, 5}}, 45).convex, chord_sag(8, 5), 1e-9);
 }
 
 TEST(TessellationSag, PlacementScalesLengthsAndMovesBoxes) {
@@ -217,7 +215,7 @@ TEST(TessellationSag, FlatWallBesideARoundedCornerHasNoSag) {
     const TessellationSag s =
         measure_tessellation_sag(m, far ? CoordinateStorage::kFloat32 : CoordinateStorage::kDouble);
     const std::string what = far ? "far, float32" : "at the origin";
-    expect_within_10_percent(s.concave, sag_of(4 * quarter, r), s.resolution, what);
+    expect_within_10_percent(s.concave, chord_sag(4 * quarter, r), s.resolution, what);
     EXPECT_EQ(s.convex, 0.0) << what;
     ASSERT_EQ(s.features.size(), 1u) << what;  // the round and the two walls beside it
     EXPECT_EQ(s.features[0].segments, 4 * quarter) << what;

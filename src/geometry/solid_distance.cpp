@@ -286,7 +286,7 @@ struct Region {
   Vec3 e = Vec3::Zero();  ///< half-extents
   double r = 0.0;         ///< half-diagonal
   double margin = 0.0;
-  const Frame* frame = nullptr;
+  const RigidFrame* frame = nullptr;
   double pad = 0.0;  ///< how far taking a face into the frame may move it
   /// The largest and the least s_q over the box.
   double most(const FacePlane& q) const { return q.at(c) + e.dot(q.normal.cwiseAbs()); }

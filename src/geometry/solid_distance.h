@@ -91,7 +91,7 @@ struct LocalPlanes {
 };
 
 /// A frame of the caller's: the points x = origin + R·y, R a rotation.
-struct Frame {
+struct RigidFrame {
   Vec3 origin = Vec3::Zero();
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   Vec3 world(const Vec3& y) const { return origin + R * y; }
@@ -101,7 +101,7 @@ struct Frame {
 /// A box [lo, hi] of a frame's y; a model about it (SolidDistance::local_planes)
 /// is in y.
 struct FramedBox {
-  Frame frame;
+  RigidFrame frame;
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
 };
 

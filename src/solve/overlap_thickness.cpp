@@ -87,7 +87,7 @@ std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& 
 
 class Search {
  public:
-  Search(const SolidDistance& a, const SolidDistance& b, double threshold, const Frame& frame)
+  Search(const SolidDistance& a, const SolidDistance& b, double threshold, const RigidFrame& frame)
       : frame_(frame),
         a_(a),
         b_(b),
@@ -220,7 +220,7 @@ class Search {
     return d.lower > 0 ? v : Vec3(-v);
   }
 
-  Frame frame_;
+  RigidFrame frame_;
   const SolidDistance &a_, &b_;
   double min_step_;
   double settled_;  ///< a box whose φ bound is below this never decides the pair
@@ -268,7 +268,7 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
   // of where the parts' boxes meet, so coordinates stay small. The search
   // region is where the smaller part's box (its vertices there) meets the
   // other's box (its corners there).
-  Frame frame;
+  RigidFrame frame;
   frame.origin = region.center();
   const SolidDistance& small = a.box().diagonal().norm() <= b.box().diagonal().norm() ? a : b;
   frame.R = small.axes();
