@@ -10,10 +10,6 @@ namespace pd {
 
 namespace {
 
-std::string number(double x) {
-  return band_number(x);
-}
-
 // The depth and witness are the parts' own, not a hull's or a piece pair's
 // (whose witness can lie inside a part, away from every surface).
 bool at_the_parts(const PairResult& r) {
@@ -43,9 +39,9 @@ void decide_at_contact(PairResult& r, const PairTolerance& wide) {
   if (s == Status::kUndecided) {
     if (r.status != Status::kUndecided)
       r.tolerance_basis += "; decided against the band where the boxes meet: the depth bracket [" +
-                           number(lower) + ", " + number(upper) +
+                           band_number(lower) + ", " + band_number(upper) +
                            "] does not decide against the band at the contact, " +
-                           number(local.value);
+                           band_number(local.value);
     return;
   }
   if (r.status == Status::kUndecided) {  // the band at the contact decides it

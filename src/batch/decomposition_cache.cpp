@@ -11,14 +11,14 @@ namespace pd {
 namespace {
 
 // 3: the entry's fields moved into the checked body (cache_file.h).
-constexpr CacheKind kKind{"pdcheck-decomposition-3", ".pdd"};
+constexpr CacheKind kDecompositionCache{"pdcheck-decomposition-3", ".pdd"};
 
 }  // namespace
 
 std::string decomposition_key(const std::string& content_hash, double concavity_tol,
                               double time_limit_seconds) {
   Hasher h;
-  h.add(kKind.format).add(content_hash).add(concavity_tol).add(time_limit_seconds);
+  h.add(kDecompositionCache.format).add(content_hash).add(concavity_tol).add(time_limit_seconds);
   h.add(static_cast<double>(tol::kDecomposeMaxWork));
   return h.hex();
 }
@@ -27,7 +27,7 @@ std::string decomposition_key(const std::string& content_hash, double concavity_
 // then 3·count doubles, per piece).
 std::optional<StoredDecomposition> read_cached_decomposition(const std::string& dir,
                                                              const std::string& key) {
-  const std::optional<std::string> entry = read_cache_entry(dir, kKind, key);
+  const std::optional<std::string> entry = read_cache_entry(dir, kDecompositionCache, key);
   if (!entry) return std::nullopt;
   const std::string& e = *entry;
   const size_t eol1 = e.find('\n');
@@ -55,7 +55,7 @@ std::string write_cached_decomposition(const std::string& dir, const std::string
   head.precision(17);
   head << (d.complete ? 1 : 0) << " " << d.seconds << " " << d.pieces.size() << "\n"
        << note << "\n";
-  return write_cache_entry(dir, kKind, key, head.str() + point_sets_bytes(d.pieces));
+  return write_cache_entry(dir, kDecompositionCache, key, head.str() + point_sets_bytes(d.pieces));
 }
 
 }  // namespace pd

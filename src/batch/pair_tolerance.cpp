@@ -15,10 +15,6 @@ std::string band_number(double x) {
 
 namespace {
 
-std::string number(double x) {
-  return band_number(x);
-}
-
 // One part's share of a band: its sag of one sign where the parts meet, and the
 // clause saying which feature gives it.
 struct Share {
@@ -35,7 +31,7 @@ Share share(const Part& p, const LocalSag& near, Sign sign, const std::string& u
   if (sag.declared) {
     s.sag = *sag.declared;
     s.declared = true;
-    s.clause = p.id + ": declared sag " + number(s.sag) + " " + units;
+    s.clause = p.id + ": declared sag " + band_number(s.sag) + " " + units;
     return s;
   }
   const bool concave = sign == Sign::kConcave;
@@ -47,8 +43,8 @@ Share share(const Part& p, const LocalSag& near, Sign sign, const std::string& u
   }
   const SagFeature& f = sag.measured.features[k];
   const char* kind = f.convex > 0 && f.concave > 0 ? "saddle" : concave ? "bore" : "pin";
-  s.clause = p.id + ": " + kind + " r " + number(f.radius) + " " + units + ", " +
-             std::to_string(f.segments) + " segments, sag " + number(s.sag) + " " + units;
+  s.clause = p.id + ": " + kind + " r " + band_number(f.radius) + " " + units + ", " +
+             std::to_string(f.segments) + " segments, sag " + band_number(s.sag) + " " + units;
   return s;
 }
 
@@ -60,8 +56,8 @@ PairTolerance band_of(const Part& a, const Part& b, const AutoTolerance& t,
   PairTolerance out;
   out.value = t.band(sa.sag, sb.sag, ra, rb);
   out.source = sa.declared || sb.declared ? "declared" : "measured";
-  out.basis = sa.clause + "; " + sb.clause + "; coordinate steps " + number(ra) + " + " +
-              number(rb) + " " + units;
+  out.basis = sa.clause + "; " + sb.clause + "; coordinate steps " + band_number(ra) + " + " +
+              band_number(rb) + " " + units;
   const double unclamped = AutoTolerance{}.band(sa.sag, sb.sag, ra, rb);
   if (out.value > unclamped) out.basis += "; raised to the scene's min";
   if (out.value < unclamped) out.basis += "; lowered to the scene's max";
@@ -103,8 +99,8 @@ GapBand gap_band(const Part& a, const Part& b, const std::string& units, const V
   const double ra = a.sag->measured.resolution, rb = b.sag->measured.resolution;
   GapBand out;
   out.value = AutoTolerance{}.band(sa.sag, sb.sag, ra, rb);
-  out.basis = sa.clause + "; " + sb.clause + "; coordinate steps " + number(ra) + " + " +
-              number(rb) + " " + units;
+  out.basis = sa.clause + "; " + sb.clause + "; coordinate steps " + band_number(ra) + " + " +
+              band_number(rb) + " " + units;
   return out;
 }
 

@@ -29,7 +29,7 @@ namespace {
 // 13: a box's plane models look at the faces within a margin of the box and
 //     bound min(sd, margin), a hole's feet move along the bisector of its
 //     normals farthest apart when it spreads less: other boxes, other brackets.
-constexpr CacheKind kKind{"pdcheck-refinement-13", ".pdr"};
+constexpr CacheKind kRefinementCache{"pdcheck-refinement-13", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
@@ -52,7 +52,7 @@ void add_part(Hasher& h, const Part& p) {
 std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
                            const RunOptions& options, const PairChecks& checks) {
   Hasher h;
-  h.add(kKind.format);
+  h.add(kRefinementCache.format);
   add_part(h, a);
   add_part(h, b);
   h.add(status_name(hull.status)).add(hull.depth);
@@ -81,7 +81,7 @@ std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
 // encoding (results/codec.h: every field, lossless for doubles).
 std::optional<StoredRefinement> read_cached_refinement(const std::string& dir,
                                                        const std::string& key) {
-  const std::optional<std::string> body = read_cache_entry(dir, kKind, key);
+  const std::optional<std::string> body = read_cache_entry(dir, kRefinementCache, key);
   if (!body || body->size() < 2 || ((*body)[0] != '0' && (*body)[0] != '1') || (*body)[1] != '\n')
     return std::nullopt;
   try {
@@ -96,7 +96,7 @@ std::optional<StoredRefinement> read_cached_refinement(const std::string& dir,
 
 std::string write_cached_refinement(const std::string& dir, const std::string& key,
                                     const StoredRefinement& r) {
-  return write_cache_entry(dir, kKind, key,
+  return write_cache_entry(dir, kRefinementCache, key,
                            std::string(r.solved ? "1" : "0") + "\n" + encode_pair_result(r.result));
 }
 

@@ -14,7 +14,7 @@ namespace pd {
 namespace {
 
 // 3: the sag inside (before: a `.pds` entry of its own per file).
-constexpr CacheKind kKind{"pdcheck-hulls-3", ".pdh"};
+constexpr CacheKind kHullCache{"pdcheck-hulls-3", ".pdh"};
 constexpr CacheKind kInlineKind{"pdcheck-inline-hull-1", ".pdi"};
 
 /// One line per warning (a line end inside one becomes a space).
@@ -121,14 +121,14 @@ std::optional<TessellationSag> sag_from_bytes(const std::string& e, size_t& at) 
 
 std::string hulls_key(const std::string& content_hash, bool per_mesh) {
   Hasher h;
-  h.add(kKind.format).add(content_hash).add(per_mesh ? 1.0 : 0.0);
+  h.add(kHullCache.format).add(content_hash).add(per_mesh ? 1.0 : 0.0);
   return h.hex();
 }
 
 // Body: the counts on one line ("n c1 … cn w s"), w warning lines, the sag's
 // bytes when s is 1, then the point-set bytes.
 std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key) {
-  const std::optional<std::string> entry = read_cache_entry(dir, kKind, key);
+  const std::optional<std::string> entry = read_cache_entry(dir, kHullCache, key);
   if (!entry) return std::nullopt;
   const size_t eol = entry->find('\n');
   if (eol == std::string::npos) return std::nullopt;
@@ -164,7 +164,7 @@ std::string write_cached_hulls(const std::string& dir, const std::string& key,
   for (long c : h.counts) head << ' ' << c;
   head << ' ' << h.warnings.size() << ' ' << (h.sag ? 1 : 0) << '\n' << warning_lines(h.warnings);
   return write_cache_entry(
-      dir, kKind, key,
+      dir, kHullCache, key,
       head.str() + (h.sag ? sag_bytes(*h.sag) : std::string()) + point_sets_bytes(h.reduced));
 }
 

@@ -11,19 +11,19 @@ namespace {
 
 // The naming rules (node_names.h) and assimp's reading are part of the format:
 // bump it when either changes.
-constexpr CacheKind kKind{"pdcheck-node-names-1", ".pdn"};
+constexpr CacheKind kNodeNamesCache{"pdcheck-node-names-1", ".pdn"};
 
 }  // namespace
 
 std::string node_names_key(const std::string& content_hash) {
-  return Hasher().add(kKind.format).add(content_hash).hex();
+  return Hasher().add(kNodeNamesCache.format).add(content_hash).hex();
 }
 
 // Body: the count, then per path its length in bytes and the bytes (a name
 // may hold any byte, a line end too), each field on its own line.
 std::optional<std::vector<std::string>> read_cached_node_names(const std::string& dir,
                                                                const std::string& key) {
-  const std::optional<std::string> body = read_cache_entry(dir, kKind, key);
+  const std::optional<std::string> body = read_cache_entry(dir, kNodeNamesCache, key);
   if (!body) return std::nullopt;
   std::istringstream in(*body);
   long count = 0;
@@ -45,7 +45,7 @@ std::string write_cached_node_names(const std::string& dir, const std::string& k
                                     const std::vector<std::string>& names) {
   std::string body = std::to_string(names.size()) + '\n';
   for (const std::string& n : names) body += std::to_string(n.size()) + '\n' + n + '\n';
-  return write_cache_entry(dir, kKind, key, body);
+  return write_cache_entry(dir, kNodeNamesCache, key, body);
 }
 
 }  // namespace pd
