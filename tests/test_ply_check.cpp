@@ -183,6 +183,18 @@ TEST(PlyInput, DamagedFilesAreErrors) {
        "not a number"},
       {"unknown format", std::string(ascii).replace(ascii.find("ascii"), 5, "utf16"),
        "unknown format"},
+      // assimp overruns its heap on these (fuzzing: a vertex element of 4, then one of 8).
+      {"a second vertex element",
+       std::string(good).replace(good.find("element face"), 0,
+                                 "element vertex 8\nproperty float x\n"),
+       "header line 8: a second element \"vertex\""},
+      {"a second face element",
+       std::string(good).replace(good.find("end_header"), 0,
+                                 "element face 2\nproperty list uchar int vertex_indices\n"),
+       "a second element \"face\""},
+      {"a second format line",
+       std::string(ascii).replace(ascii.find("element"), 0, "format binary_little_endian 1.0\n"),
+       "header line 3: a second format line"},
   };
   for (const Case& c : cases)
     EXPECT_NE(error_of<MeshError>([&] { read_meshes(c.bytes, "ply", false); }).find(c.says),

@@ -351,10 +351,19 @@ Header parse_header(std::string_view bytes, size_t data, std::vector<std::string
     if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "end_header") break;
     if (w[0] == "format") {
+      if (h.format) fail(at + "a second format line (a PLY file has one)");
       h.format = format_of(w, at);
       h.format_line = std::string(line);
     } else if (w[0] == "element") {
-      h.elements.push_back(element_of(w, line, at));
+      Element e = element_of(w, line, at);
+      // assimp 5.2.5 sizes a geometry element's buffers by its first
+      // declaration and writes the second's instances past them (a heap
+      // overrun fuzzing found); no exporter writes one twice.
+      if (e.name == "vertex" || e.name == "face" || e.name == "tristrips")
+        for (const Element& before : h.elements)
+          if (before.name == e.name)
+            fail(at + "a second element " + quoted(e.name) + " (a PLY file declares it once)");
+      h.elements.push_back(std::move(e));
     } else if (w[0] == "property") {
       if (h.elements.empty()) fail(at + "property before any element");
       h.elements.back().properties.push_back(property_of(w, at));

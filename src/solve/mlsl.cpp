@@ -204,6 +204,8 @@ bool certify_minimum(const PairProblem& pr, Vec3& v, double& gap, SolveStats& st
   return false;
 }
 
+namespace {
+
 // The default method's search (mlsl_depth): its samples, the basins found and
 // the best direction so far, with one method per phase.
 class MlslSearch {
@@ -386,6 +388,8 @@ class MlslSearch {
   Optimum best_{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
   bool contact_certified_ = false, tried_certificate_ = false;
 };
+
+}  // namespace
 
 DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const SolverSettings& s,
                          const InputPoints* input) {
