@@ -2,12 +2,10 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <numeric>
-#include <set>
 
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
@@ -173,18 +171,15 @@ double mesh_volume(const Mesh& m) {
 std::vector<std::vector<int>> shell_triangles(const Mesh& m) {
   const long n = m.vertices.cols();
   // Vertices with equal coordinates are one (STL repeats each corner).
-  std::map<std::array<double, 3>, int> first;
+  const std::vector<int> first = first_at_same_position(m.vertices);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (int v = 0; v < n; ++v) {
-    auto [it, fresh] = first.emplace(
-        std::array<double, 3>{m.vertices(0, v), m.vertices(1, v), m.vertices(2, v)}, v);
-    if (!fresh) parent[root(v)] = root(it->second);
-  }
+  for (int v = 0; v < n; ++v)
+    if (first[v] != v) parent[root(v)] = root(first[v]);
   for (long t = 0; t < m.triangles.cols(); ++t) {
     parent[root(m.triangles(1, t))] = root(m.triangles(0, t));
     parent[root(m.triangles(2, t))] = root(m.triangles(0, t));
@@ -266,10 +261,10 @@ namespace {
 // STL repeats every corner for each of its triangles, and the estimate would
 // project each copy.
 Points distinct_columns(const Points& p) {
-  std::set<std::array<double, 3>> seen;
+  const std::vector<int> first = first_at_same_position(p);
   std::vector<long> keep;
   for (long i = 0; i < p.cols(); ++i)
-    if (seen.insert({p(0, i), p(1, i), p(2, i)}).second) keep.push_back(i);
+    if (first[i] == i) keep.push_back(i);
   Points out(3, static_cast<long>(keep.size()));
   for (size_t k = 0; k < keep.size(); ++k) out.col(static_cast<long>(k)) = p.col(keep[k]);
   return out;

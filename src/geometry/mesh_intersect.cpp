@@ -11,12 +11,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "geometry/same_position.h"
 #include "geometry/triangle_tree.h"
 #include "tolerances.h"
 
@@ -98,25 +98,36 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
                                     std::to_string(mesh.triangles(k, t)) + " of " +
                                     std::to_string(n));
 
-  // Merge vertices with equal coordinates (STL stores each triangle's corners).
+  // Merge vertices with equal coordinates (STL stores each triangle's corners),
+  // numbered in the order the triangles first use them.
   m.merged.assign(n, -1);
-  std::map<std::array<double, 3>, int> index;
+  const std::vector<int> first = first_at_same_position(mesh.vertices);
+  std::vector<int> point_of(n, -1);  // by a position's first column
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles(k, t);
       if (m.merged[v] >= 0) continue;
-      const std::array<double, 3> c{mesh.vertices(0, v), mesh.vertices(1, v), mesh.vertices(2, v)};
-      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+      if (!mesh.vertices.col(v).allFinite())
         throw std::invalid_argument("vertex " + std::to_string(v) + " is not finite");
-      auto [it, inserted] = index.emplace(c, static_cast<int>(m.points.size()));
-      if (inserted) m.points.emplace_back(c[0], c[1], c[2]);
-      m.merged[v] = it->second;
+      int& at = point_of[first[v]];
+      if (at < 0) {
+        at = static_cast<int>(m.points.size());
+        m.points.emplace_back(mesh.vertices(0, v), mesh.vertices(1, v), mesh.vertices(2, v));
+      }
+      m.merged[v] = at;
     }
 
-  // Edge parity (closedness), shells and the two primitive sets.
+  // Edge parity (closedness), shells and the two primitive sets. Each use of
+  // an edge is listed (its ends in order, +1 when walked from the lower end);
+  // sorted, the uses of one edge are a run.
   std::vector<int> parent(m.points.size());
   std::iota(parent.begin(), parent.end(), 0);
-  std::map<std::pair<int, int>, int> edge_uses;
+  struct EdgeUse {
+    int lo, hi, sign;
+    bool operator<(const EdgeUse& o) const { return lo != o.lo ? lo < o.lo : hi < o.hi; }
+  };
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * static_cast<size_t>(mesh.triangles.cols()));
   for (long t = 0; t < mesh.triangles.cols(); ++t) {
     const int i = m.merged[mesh.triangles(0, t)], j = m.merged[mesh.triangles(1, t)],
               k = m.merged[mesh.triangles(2, t)];
@@ -129,7 +140,7 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
       continue;
     }
     for (auto [u, w] : {std::pair{i, j}, std::pair{j, k}, std::pair{k, i}})
-      ++edge_uses[{std::min(u, w), std::max(u, w)}];
+      uses.push_back({std::min(u, w), std::max(u, w), u < w ? 1 : -1});
     const Point3 &p = m.points[i], &q = m.points[j], &r = m.points[k];
     if (!CGAL::collinear(p, q, r)) {
       m.faces.emplace_back(p, q, r);
@@ -145,27 +156,25 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
         m.segments.emplace_back(r, p);
     }
   }
-  {
-    std::map<std::pair<int, int>, int> balance;
-    double volume = 0.0;
-    const Point3& o = m.points[0];
-    for (const Triangle3& f : m.faces) {
-      volume += CGAL::scalar_product(f[0] - o, CGAL::cross_product(f[1] - o, f[2] - o));
+  // Closed: every edge used an even number of times. Oriented as well: each
+  // walked as often one way as the other, and the volume positive (outward).
+  std::sort(uses.begin(), uses.end());
+  bool even = !uses.empty(), balanced = true;
+  for (size_t a = 0, b = 0; a < uses.size(); a = b) {
+    int count = 0, balance = 0;
+    for (b = a; b < uses.size() && uses[b].lo == uses[a].lo && uses[b].hi == uses[a].hi; ++b) {
+      ++count;
+      balance += uses[b].sign;
     }
-    for (long t = 0; t < mesh.triangles.cols(); ++t) {
-      const int v[3] = {m.merged[mesh.triangles(0, t)], m.merged[mesh.triangles(1, t)],
-                        m.merged[mesh.triangles(2, t)]};
-      if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
-      for (int k = 0; k < 3; ++k) {
-        const int a = v[k], b = v[(k + 1) % 3];
-        balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
-      }
-    }
-    m.oriented = volume > 0 && std::all_of(balance.begin(), balance.end(),
-                                           [](const auto& e) { return e.second == 0; });
+    even = even && count % 2 == 0;
+    balanced = balanced && balance == 0;
   }
-  m.closed = !edge_uses.empty() && std::all_of(edge_uses.begin(), edge_uses.end(),
-                                               [](const auto& e) { return e.second % 2 == 0; });
+  double volume = 0.0;
+  const Point3& o = m.points[0];
+  for (const Triangle3& f : m.faces)
+    volume += CGAL::scalar_product(f[0] - o, CGAL::cross_product(f[1] - o, f[2] - o));
+  m.oriented = volume > 0 && balanced;
+  m.closed = even;
   for (int v = 0; v < static_cast<int>(m.points.size()); ++v)
     if (find_root(parent, v) == v) m.shell_vertex.push_back(v);
 

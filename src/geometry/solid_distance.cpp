@@ -12,6 +12,7 @@
 
 #include "geometry/convexity.h"
 #include "geometry/face_axes.h"
+#include "geometry/same_position.h"
 #include "geometry/triangle_tree.h"
 #include "geometry/union_find.h"
 #include "tolerances.h"
@@ -27,16 +28,18 @@ int find_root(std::vector<int>& parent, int i) {
 // The mesh's triangles grouped into shells: triangles that share a vertex
 // position (equal coordinates) are in one shell.
 std::vector<Mesh> shells_of(const Mesh& mesh) {
-  std::map<std::array<double, 3>, int> index;
-  std::vector<int> id(mesh.vertices.cols(), -1);
+  // Positions (welded by position) numbered in the order triangles use them.
+  const std::vector<int> first = first_at_same_position(mesh.vertices);
+  std::vector<int> number(first.size(), -1), id(first.size(), -1);
+  int positions = 0;
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles(k, t);
-      if (id[v] >= 0) continue;
-      const std::array<double, 3> c{mesh.vertices(0, v), mesh.vertices(1, v), mesh.vertices(2, v)};
-      id[v] = index.emplace(c, static_cast<int>(index.size())).first->second;
+      int& n = number[first[v]];
+      if (n < 0) n = positions++;
+      id[v] = n;
     }
-  std::vector<int> parent(index.size());
+  std::vector<int> parent(positions);
   std::iota(parent.begin(), parent.end(), 0);
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 1; k < 3; ++k)

@@ -1,0 +1,39 @@
+// Welding by position (geometry/same_position.h) against a scan of every
+// earlier column.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "geometry/same_position.h"
+
+using namespace pd;
+
+TEST(SamePosition, EveryColumnPointsAtTheFirstEqualOne) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> pick(0, 5);
+  for (int round = 0; round < 20; ++round) {
+    // Few distinct values, so many repeats; −0 beside 0, a NaN and an infinity.
+    const double values[] = {0.0, -0.0, 1.0, 1e300, 30000.125f, -2.5};
+    Points p(3, 60 + round);
+    for (long i = 0; i < p.cols(); ++i)
+      for (int k = 0; k < 3; ++k) p(k, i) = values[pick(rng)];
+    p(1, 7) = NAN;
+    p(2, 11) = INFINITY;
+    p.col(12) = p.col(11);  // equal, but not finite: each its own
+    const std::vector<int> first = first_at_same_position(p);
+    ASSERT_EQ(first.size(), static_cast<size_t>(p.cols()));
+    for (long i = 0; i < p.cols(); ++i) {
+      int expected = static_cast<int>(i);
+      if (p.col(i).allFinite())
+        for (long j = 0; j < i; ++j)
+          if (p.col(j).allFinite() && p(0, j) == p(0, i) && p(1, j) == p(1, i) &&
+              p(2, j) == p(2, i)) {
+            expected = static_cast<int>(j);
+            break;
+          }
+      EXPECT_EQ(first[i], expected) << "round " << round << " column " << i;
+    }
+  }
+  EXPECT_TRUE(first_at_same_position(Points(3, 0)).empty());
+}
