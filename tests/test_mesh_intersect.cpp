@@ -266,3 +266,24 @@ TEST(MeshIntersect, ANearFaceHintGivesTheSameSignedDistance) {
     EXPECT_GT(inside, 50);
   }
 }
+
+TEST(MeshIntersect, UnsignedDistanceIsTheSignedOnesMagnitude) {
+  // The same nearest point, normal and face, without the inside test: on a
+  // plate with a hole (float32, far from the origin) at points inside, outside
+  // and in the hole.
+  const Mesh plate = float32(translated(plate_with_hole(40, 6, 5, 32), Vec3(20000, -3000, 500)));
+  const PreparedMesh m(plate);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-25, 25);
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 p = Vec3(20000, -3000, 500) + Vec3(u(rng), u(rng), u(rng) / 4);
+    Vec3 ns, nu, fs, fu;
+    int face_s = -1, face_u = -1;
+    const double s = m.signed_distance(p, &ns, &fs, &face_s);
+    const double d = m.unsigned_distance(p, &nu, &fu, &face_u);
+    EXPECT_EQ(d, std::abs(s)) << i;
+    EXPECT_EQ(nu, ns) << i;
+    EXPECT_EQ(fu, fs) << i;
+    EXPECT_EQ(face_u, face_s) << i;
+  }
+}

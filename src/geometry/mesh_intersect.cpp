@@ -288,6 +288,16 @@ bool PreparedMesh::has_segments() const {
 
 double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
                                      int* near_face) const {
+  return nearest_on_surface(v, nearest, face_normal, near_face, true);
+}
+
+double PreparedMesh::unsigned_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
+                                       int* near_face) const {
+  return -nearest_on_surface(v, nearest, face_normal, near_face, false);
+}
+
+double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face_normal,
+                                        int* near_face, bool signed_) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
   Point3 q = p;
@@ -300,7 +310,7 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
     const TriIter face = m.faces.cbegin() + found.face;
     q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);
-    if (m.parity) side = nearest_face_side(m, v, q, face, d2);
+    if (m.parity && signed_) side = nearest_face_side(m, v, q, face, d2);
     const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
     normal = Vec3(n.x(), n.y(), n.z()).normalized();
   }
@@ -315,7 +325,7 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   if (face_normal) *face_normal = normal;
   if (nearest) *nearest = Vec3(q.x(), q.y(), q.z());
   const double d = std::sqrt(d2);
-  if (!m.parity || d == 0) return -d;
+  if (!m.parity || d == 0 || !signed_) return -d;
   if (side == 0) side = m.side(p) == CGAL::ON_BOUNDED_SIDE ? -1 : 1;
   return side < 0 ? d : -d;
 }

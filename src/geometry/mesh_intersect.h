@@ -46,6 +46,11 @@ class PreparedMesh {
   /// found sooner in a run of nearby queries.
   double signed_distance(const Vec3& p, Vec3* nearest = nullptr, Vec3* face_normal = nullptr,
                          int* near_face = nullptr) const;
+  /// The distance to the surface, with the same nearest point, normal and
+  /// `near_face` as signed_distance, but no inside test (for callers that
+  /// decide inside another way: a union of shells).
+  double unsigned_distance(const Vec3& p, Vec3* nearest, Vec3* face_normal,
+                           int* near_face = nullptr) const;
   /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to
   /// `out` in increasing order; past `limit` of them, limit + 1 in no order.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
@@ -86,6 +91,9 @@ class PreparedMesh {
   const Impl& impl() const { return *impl_; }
 
  private:
+  // signed_distance's work; without `signed_`, minus the distance.
+  double nearest_on_surface(const Vec3& p, Vec3* nearest, Vec3* face_normal, int* near_face,
+                            bool signed_) const;
   std::unique_ptr<Impl> impl_;
 };
 

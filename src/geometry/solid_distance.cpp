@@ -167,12 +167,12 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
 DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
   DistanceBounds r;
   Vec3 normal = Vec3::Zero();
-  const double sd = whole_.signed_distance(p, &r.nearest, &normal, near_face);
   if (exact_) {
-    r.lower = r.upper = sd;
+    r.lower = r.upper = whole_.signed_distance(p, &r.nearest, &normal, near_face);
     return r;
   }
-  const double d = std::abs(sd);
+  // A union: the shells' own tests say inside, not the soup's parity.
+  const double d = whole_.unsigned_distance(p, &r.nearest, &normal, near_face);
   const bool inside = closed_ && std::any_of(shells_.begin(), shells_.end(),
                                              [&](const PreparedMesh& s) { return s.inside(p); });
   // Inside the union: every triangle is at least as near as the union's
