@@ -27,21 +27,19 @@ inline const std::string& process_dir() {
   return dir;
 }
 
-/// An empty directory `group`_`name`_<pid> under the test temp dir.
-inline std::filesystem::path scratch_dir(const std::string& group, const std::string& name) {
-  const std::filesystem::path d = std::filesystem::path(testing::TempDir()) /
-                                  (group + "_" + name + "_" + std::to_string(getpid()));
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
-}
-
 /// The path `group`_`name`_<pid> under the test temp dir, removed: for code that
 /// must create its directory itself (the caches).
 inline std::filesystem::path absent_dir(const std::string& group, const std::string& name) {
   const std::filesystem::path d = std::filesystem::path(testing::TempDir()) /
                                   (group + "_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(d);
+  return d;
+}
+
+/// An empty directory `group`_`name`_<pid> under the test temp dir.
+inline std::filesystem::path scratch_dir(const std::string& group, const std::string& name) {
+  const std::filesystem::path d = absent_dir(group, name);
+  std::filesystem::create_directories(d);
   return d;
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/run.h"
+#include "cube_json.h"
 #include "report/merge.h"
 #include "report/report_json.h"
 #include "report/writer.h"
@@ -14,13 +15,9 @@
 using namespace pd;
 using nlohmann::json;
 
-namespace {
+using pd_test::cube_json;
 
-json floor_cube(const std::string& id, double x, double y, double s) {
-  json v = json::array();
-  for (int k = 0; k < 8; ++k) v.push_back({x + s * (k & 1), y + s * ((k >> 1) & 1), s * (k >> 2)});
-  return {{"id", id}, {"vertices", v}};
-}
+namespace {
 
 // Groups 10 apart along x, each a pair of unit cubes: interfering (0.5 in),
 // within the tolerance (0.05 in), touching, 0.5 apart (checked, separated) and
@@ -30,10 +27,10 @@ SceneSpec scene() {
   json parts = json::array();
   for (int g = 0; g < 10; ++g) {
     const std::string id = "g" + std::to_string(g);
-    parts.push_back(floor_cube(id + "a", 10.0 * g, 0, 1));
-    parts.push_back(floor_cube(id + "b", 10.0 * g + offsets[g % 5], 0.2, 1));
+    parts.push_back(cube_json(id + "a", 10.0 * g, 0, 0, 1));
+    parts.push_back(cube_json(id + "b", 10.0 * g + offsets[g % 5], 0.2, 0, 1));
   }
-  parts.push_back(floor_cube("chain", 0.7, 0.5, 1));
+  parts.push_back(cube_json("chain", 0.7, 0.5, 0, 1));
   const json s = {{"tolerance", 0.1}, {"units", "mm"}, {"parts", parts}};
   return parse_scene_json(s.dump(), "merge.json", ".");
 }

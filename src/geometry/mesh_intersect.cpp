@@ -288,21 +288,24 @@ bool PreparedMesh::has_segments() const {
 
 double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
                                      int* near_face) const {
-  return nearest_on_surface(v, nearest, face_normal, near_face, true);
+  int side = 0;
+  const double d = nearest_on_surface(v, nearest, face_normal, near_face, &side);
+  if (!impl_->parity || d == 0) return -d;
+  if (side == 0) side = impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_BOUNDED_SIDE ? -1 : 1;
+  return side < 0 ? d : -d;
 }
 
 double PreparedMesh::unsigned_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
                                        int* near_face) const {
-  return -nearest_on_surface(v, nearest, face_normal, near_face, false);
+  return nearest_on_surface(v, nearest, face_normal, near_face, nullptr);
 }
 
 double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face_normal,
-                                        int* near_face, bool signed_) const {
+                                        int* near_face, int* side) const {
   const Impl& m = *impl_;
   const Point3 p(v.x(), v.y(), v.z());
   Point3 q = p;
   double d2 = INFINITY;
-  int side = 0;
   Vec3 normal = Vec3::Zero();
   if (!m.faces.empty()) {
     const TriangleTree::Nearest found = m.search.nearest(v, near_face ? *near_face : -1);
@@ -310,7 +313,7 @@ double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face
     const TriIter face = m.faces.cbegin() + found.face;
     q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);
-    if (m.parity && signed_) side = nearest_face_side(m, v, q, face, d2);
+    if (m.parity && side) *side = nearest_face_side(m, v, q, face, d2);
     const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
     normal = Vec3(n.x(), n.y(), n.z()).normalized();
   }
@@ -318,16 +321,13 @@ double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face
     if (CGAL::squared_distance(p, s) < d2) {
       q = m.closest(p);
       d2 = CGAL::squared_distance(p, q);
-      side = 0;
+      if (side) *side = 0;
       normal.setZero();
       break;
     }
   if (face_normal) *face_normal = normal;
   if (nearest) *nearest = Vec3(q.x(), q.y(), q.z());
-  const double d = std::sqrt(d2);
-  if (!m.parity || d == 0 || !signed_) return -d;
-  if (side == 0) side = m.side(p) == CGAL::ON_BOUNDED_SIDE ? -1 : 1;
-  return side < 0 ? d : -d;
+  return std::sqrt(d2);
 }
 
 void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,

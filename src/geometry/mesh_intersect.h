@@ -91,9 +91,10 @@ class PreparedMesh {
   const Impl& impl() const { return *impl_; }
 
  private:
-  // signed_distance's work; without `signed_`, minus the distance.
+  // The distance and nearest point of signed_distance; with `side`, also the
+  // nearest face's verdict (+1 outside, -1 inside, 0 when it cannot say).
   double nearest_on_surface(const Vec3& p, Vec3* nearest, Vec3* face_normal, int* near_face,
-                            bool signed_) const;
+                            int* side) const;
   std::unique_ptr<Impl> impl_;
 };
 
