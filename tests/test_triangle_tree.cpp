@@ -97,6 +97,42 @@ TEST(TriangleTree, ListsEveryTriangleWhoseBoxMeetsABoxInOrder) {
   }
 }
 
+// A segment through a point inside a triangle must reach that triangle,
+// whatever its direction (oblique or along an axis, where the box test
+// compares coordinates), and visits stop when the visitor says so.
+TEST(TriangleTree, ASegmentVisitsEveryTriangleItPierces) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1), w(0.05, 0.9);
+  const Vec3 o(3.1e4, -7.7e3, 512.0);  // far from the origin
+  Triangles3 t;
+  for (int i = 0; i < 600; ++i) {
+    const Vec3 a = o + 10 * Vec3(u(rng), u(rng), u(rng));
+    t.push_back({a, a + 2 * Vec3(u(rng), u(rng), u(rng)), a + Vec3(u(rng), u(rng), u(rng))});
+  }
+  const TriangleTree tree(t);
+  for (int k = 0; k < 600; ++k) {
+    const int i = static_cast<int>(rng() % t.size());
+    const double b1 = w(rng) / 2, b2 = w(rng) / 2;
+    const Vec3 x = t[i][0] + b1 * (t[i][1] - t[i][0]) + b2 * (t[i][2] - t[i][0]);
+    Vec3 d = Vec3(u(rng), u(rng), u(rng)).normalized();
+    if (k % 2) d = Vec3::Unit(k % 3);  // along an axis
+    bool seen = false;
+    int visits = 0;
+    tree.along_segment(x - 30 * d, x + 3 * w(rng) * d, [&](int id, const std::array<Vec3, 3>& c) {
+      seen = seen || id == i;
+      EXPECT_EQ(c, t[id]);
+      ++visits;
+      return false;
+    });
+    EXPECT_TRUE(seen) << k;
+    EXPECT_LT(visits, 600) << k;  // the tree prunes
+  }
+  int visits = 0;
+  EXPECT_TRUE(tree.along_segment(o - Vec3::Constant(20), o + Vec3::Constant(20),
+                                 [&](int, const std::array<Vec3, 3>&) { return ++visits == 3; }));
+  EXPECT_EQ(visits, 3);
+}
+
 TEST(TriangleTree, StopsListingPastTheLimit) {
   Triangles3 t;
   for (int i = 0; i < 100; ++i) t.push_back({Vec3(i, 0, 0), Vec3(i + 1, 0, 0), Vec3(i, 1, 0)});

@@ -1,10 +1,6 @@
 #include "geometry/mesh_intersect.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
 #include <CGAL/box_intersection_d.h>
 
 #include <Eigen/Geometry>
@@ -16,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/ray_parity.h"
 #include "geometry/same_position.h"
 #include "geometry/triangle_tree.h"
 #include "tolerances.h"
@@ -29,12 +26,6 @@ using Point3 = K::Point_3;
 using Triangle3 = K::Triangle_3;
 using Segment3 = K::Segment_3;
 using TriIter = std::vector<Triangle3>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<K, TriIter>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-// The engine of CGAL::Side_of_triangle_mesh (ray parity, a new random ray when
-// one meets an edge or vertex), called on our own tree of triangles: that class
-// wants a face graph, and merged float32 soups are often not one.
-using RayCast = CGAL::internal::Point_inside_vertical_ray_cast<K, Tree>;
 
 int find_root(std::vector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -51,16 +42,22 @@ struct PreparedMesh::Impl {
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
   CGAL::Bbox_3 box;
-  Tree tree;              // over faces: the ray tests
-  TriangleTree search;    // over faces: nearest points and box listings (faster than the tree's)
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // the box again, for the ray tests
+  TriangleTree search;    // over faces: nearest points, box listings and ray tests
   bool parity = false;    // closed and has faces: points can be located
   bool oriented = false;  // closed, each edge as often u→v as v→u, outward (volume > 0)
 
+  // Meaningful on closed meshes only (parity).
   CGAL::Bounded_side side(const Point3& p) const {
-    if (p.x() < box.xmin() || p.x() > box.xmax() || p.y() < box.ymin() || p.y() > box.ymax() ||
-        p.z() < box.zmin() || p.z() > box.zmax())
-      return CGAL::ON_UNBOUNDED_SIDE;
-    return RayCast()(p, tree);
+    switch (ray_parity_side(search, lo, hi, Vec3(p.x(), p.y(), p.z()))) {
+      case RaySide::kInside:
+        return CGAL::ON_BOUNDED_SIDE;
+      case RaySide::kOnSurface:
+        return CGAL::ON_BOUNDARY;
+      case RaySide::kOutside:
+        break;
+    }
+    return CGAL::ON_UNBOUNDED_SIDE;
   }
 
   // Closest point of the surface to p (faces and degenerate segments).
@@ -179,9 +176,9 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     if (find_root(parent, v) == v) m.shell_vertex.push_back(v);
 
   m.box = CGAL::bbox_3(m.points.begin(), m.points.end());
+  m.lo = Vec3(m.box.xmin(), m.box.ymin(), m.box.zmin());
+  m.hi = Vec3(m.box.xmax(), m.box.ymax(), m.box.zmax());
   if (!m.faces.empty()) {
-    m.tree.insert(m.faces.cbegin(), m.faces.cend());
-    m.tree.build();
     std::vector<std::array<Vec3, 3>> corners(m.faces.size());
     for (size_t f = 0; f < m.faces.size(); ++f)
       for (int k = 0; k < 3; ++k)
@@ -254,9 +251,7 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
     return 0.0;
   };
   // Joined to an inside point without crossing the surface: inside too.
-  if (hint.has_inside &&
-      !m.tree.do_intersect(
-          Segment3(Point3(hint.inside_point.x(), hint.inside_point.y(), hint.inside_point.z()), p)))
+  if (hint.has_inside && !segment_meets_triangles(m.search, hint.inside_point, v))
     return inside_here();
   hint.has_inside = false;
   const TriangleTree::Nearest n = m.search.nearest(v, static_cast<int>(hint.face));

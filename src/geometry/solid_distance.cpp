@@ -12,6 +12,7 @@
 
 #include "geometry/convexity.h"
 #include "geometry/face_axes.h"
+#include "geometry/ray_parity.h"
 #include "geometry/same_position.h"
 #include "geometry/triangle_tree.h"
 #include "geometry/union_find.h"
@@ -159,6 +160,17 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   closed_ = std::all_of(prepared.begin(), prepared.end(),
                         [](const PreparedMesh& s) { return s.closed(); });
   shells_ = std::move(prepared);
+  std::vector<std::array<Vec3, 3>> faces;
+  Eigen::AlignedBox3d all;
+  for (size_t i = 0; i < shells_.size(); ++i)
+    for (int f = 0; f < shells_[i].faces(); ++f) {
+      faces.push_back(shells_[i].face(f));
+      shell_of_face_.push_back(static_cast<int>(i));
+      for (const Vec3& v : faces.back()) all.extend(v);
+    }
+  shell_faces_ = TriangleTree(faces);
+  shells_lo_ = all.min();
+  shells_hi_ = all.max();
   note_ = closed_
               ? std::to_string(shells_.size()) + " shells whose surfaces meet: taken as their union"
               : "open shell: no inside";
@@ -173,8 +185,7 @@ DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
   }
   // A union: the shells' own tests say inside, not the soup's parity.
   const double d = whole_.unsigned_distance(p, &r.nearest, &normal, near_face);
-  const bool inside = closed_ && std::any_of(shells_.begin(), shells_.end(),
-                                             [&](const PreparedMesh& s) { return s.inside(p); });
+  const bool inside = closed_ && inside_some_shell(p);
   // Inside the union: every triangle is at least as near as the union's
   // surface (shared faces are not surface), so d is a lower bound. It is also
   // one from above, up to a hair, where the nearest point is union surface:
@@ -184,11 +195,25 @@ DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
   r.upper = inside ? INFINITY : -d;
   if (inside && normal.allFinite() && normal.norm() > 0) {
     const Vec3 y = r.nearest + hair_ * normal;
-    if (std::all_of(shells_.begin(), shells_.end(),
-                    [&](const PreparedMesh& s) { return s.outside(y); }))
-      r.upper = (y - p).norm();
+    if (outside_every_shell(y)) r.upper = (y - p).norm();
   }
   return r;
+}
+
+bool SolidDistance::inside_some_shell(const Vec3& p) const {
+  std::vector<RaySide> sides(shells_.size());
+  ray_parity_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, sides);
+  for (size_t i = 0; i < sides.size(); ++i)
+    if (shells_[i].closed() && sides[i] == RaySide::kInside) return true;
+  return false;
+}
+
+bool SolidDistance::outside_every_shell(const Vec3& p) const {
+  std::vector<RaySide> sides(shells_.size());
+  ray_parity_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, sides);
+  for (size_t i = 0; i < sides.size(); ++i)
+    if (!shells_[i].closed() || sides[i] != RaySide::kOutside) return false;
+  return true;
 }
 
 SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long max_samples,
@@ -784,11 +809,7 @@ LocalPlanes SolidDistance::local_planes(const FramedBox& box, double margin) con
     const auto outside = [&](const Vec3& y) { return whole_.outside(box.frame.world(y)); };
     return planes_near(whole_, noise_, rg, wbox, false, outside);
   }
-  const auto outside_all = [&](const Vec3& y) {
-    const Vec3 p = box.frame.world(y);
-    return std::all_of(shells_.begin(), shells_.end(),
-                       [&](const PreparedMesh& s) { return s.outside(p); });
-  };
+  const auto outside_all = [&](const Vec3& y) { return outside_every_shell(box.frame.world(y)); };
   return union_planes(shells_, whole_, noise_, rg, wbox, box.frame.world(rg.c), outside_all);
 }
 

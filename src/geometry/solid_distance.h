@@ -12,6 +12,7 @@
 
 #include "geometry/mesh.h"
 #include "geometry/mesh_intersect.h"
+#include "geometry/triangle_tree.h"
 #include "geometry/types.h"
 #include "tolerances.h"
 
@@ -145,8 +146,18 @@ class SolidDistance {
   LocalPlanes local_planes(const FramedBox& box, double margin) const;
 
  private:
+  // Union mode: inside some shell, and strictly outside every shell (exact ray
+  // parity; one ray for all shells).
+  bool inside_some_shell(const Vec3& p) const;
+  bool outside_every_shell(const Vec3& p) const;
+
   PreparedMesh whole_;
   std::vector<PreparedMesh> shells_;  ///< union mode only: one per shell
+  // Union mode: the shells' faces in one tree, each labelled with its shell,
+  // and their box.
+  TriangleTree shell_faces_;
+  std::vector<int> shell_of_face_;
+  Vec3 shells_lo_ = Vec3::Zero(), shells_hi_ = Vec3::Zero();
   bool closed_ = false, exact_ = true, oriented_ = false;
   std::string note_;
   Eigen::AlignedBox3d box_;

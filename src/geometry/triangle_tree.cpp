@@ -80,6 +80,27 @@ bool boxes_meet(const Vec3& lo, const Vec3& hi, const Vec3& a, const Vec3& b) {
   return true;
 }
 
+// Whether the segment a + t·d, t in [0, 1], may meet the box [lo, hi]: the
+// slab test, with the parameter interval padded so that rounding never drops
+// a box the segment meets. An axis the segment does not move along compares
+// its coordinate exactly (the axis-aligned rays of the inside tests).
+bool segment_may_meet_box(const Vec3& a, const Vec3& d, const Vec3& lo, const Vec3& hi) {
+  constexpr double kPad = 1e-9;  // in t: far above the division's rounding
+  double t0 = -kPad, t1 = 1 + kPad;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0) {
+      if (a[k] < lo[k] || a[k] > hi[k]) return false;
+      continue;
+    }
+    double enter = (lo[k] - a[k]) / d[k], leave = (hi[k] - a[k]) / d[k];
+    if (enter > leave) std::swap(enter, leave);
+    t0 = std::max(t0, enter - kPad);
+    t1 = std::min(t1, leave + kPad);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
@@ -126,6 +147,45 @@ void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
 }
 
+template <class Meets>
+bool TriangleTree::visit_boxes(const Meets& meets, const SegmentVisit& visit) const {
+  std::array<int, 2 * 32 + 2> stack;  // as in nearest()
+  int size = 0;
+  stack[size++] = 0;
+  while (size > 0) {
+    const int at = stack[--size];
+    const Node& n = nodes_[at];
+    if (!meets(n.lo, n.hi)) continue;
+    if (n.count > 0) {
+      for (int i = n.first; i < n.first + n.count; ++i)
+        if (meets(boxes_[i][0], boxes_[i][1]) && visit(id_[i], triangles_[i])) return true;
+      continue;
+    }
+    stack[size++] = n.first;
+    stack[size++] = at + 1;
+  }
+  return false;
+}
+
+bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const {
+  if (triangles_.empty()) return false;
+  const Vec3 d = b - a;
+  // Along an axis (the inside tests' rays), boxes are met by comparisons.
+  const int moving = (d.x() != 0) + (d.y() != 0) + (d.z() != 0);
+  if (moving == 1) {
+    const int k = d.x() != 0 ? 0 : d.y() != 0 ? 1 : 2, u = (k + 1) % 3, v = (k + 2) % 3;
+    const double from = std::min(a[k], b[k]), to = std::max(a[k], b[k]);
+    return visit_boxes(
+        [&](const Vec3& lo, const Vec3& hi) {
+          return lo[u] <= a[u] && a[u] <= hi[u] && lo[v] <= a[v] && a[v] <= hi[v] && lo[k] <= to &&
+                 from <= hi[k];
+        },
+        visit);
+  }
+  return visit_boxes(
+      [&](const Vec3& lo, const Vec3& hi) { return segment_may_meet_box(a, d, lo, hi); }, visit);
+}
+
 // Median split of the centroids along their longest extent.
 int TriangleTree::build(int begin, int end, const std::vector<Vec3>& centroids) {
   const int index = static_cast<int>(nodes_.size());
@@ -167,29 +227,35 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
   };
   if (start >= 0 && start < static_cast<int>(slot_.size())) test(slot_[start]);
   // Depth first, the nearer child first; a node no nearer than the best is
-  // skipped. Each visit pushes at most two nodes, one level down, and median
-  // splits keep the depth below 32: the stack never holds more than 64.
-  std::array<int, 2 * 32 + 2> stack;
+  // skipped. A node's box distance is computed once, when its parent is
+  // visited, and kept beside it on the stack. Each visit pushes at most two
+  // nodes, one level down, and median splits keep the depth below 32: the
+  // stack never holds more than 64.
+  struct Open {
+    int node;
+    double d2;
+  };
+  std::array<Open, 2 * 32 + 2> stack;
   int size = 0;
-  stack[size++] = 0;
+  stack[size++] = {0, box_squared_distance(nodes_[0].lo, nodes_[0].hi, p)};
   while (size > 0) {
-    const int at = stack[--size];
-    const Node& n = nodes_[at];
-    if (!(box_squared_distance(n.lo, n.hi, p) < best.squared_distance)) continue;
+    const Open open = stack[--size];
+    if (!(open.d2 < best.squared_distance)) continue;
+    const Node& n = nodes_[open.node];
     if (n.count > 0) {
       for (int i = n.first; i < n.first + n.count; ++i) test(i);
       continue;
     }
-    const int left = at + 1, right = n.first;
+    const int left = open.node + 1, right = n.first;
     const double dl = box_squared_distance(nodes_[left].lo, nodes_[left].hi, p),
                  dr = box_squared_distance(nodes_[right].lo, nodes_[right].hi, p);
     // Pushed last is searched first.
     if (dl < dr) {
-      if (dr < best.squared_distance) stack[size++] = right;
-      if (dl < best.squared_distance) stack[size++] = left;
+      if (dr < best.squared_distance) stack[size++] = {right, dr};
+      if (dl < best.squared_distance) stack[size++] = {left, dl};
     } else {
-      if (dl < best.squared_distance) stack[size++] = left;
-      if (dr < best.squared_distance) stack[size++] = right;
+      if (dl < best.squared_distance) stack[size++] = {left, dl};
+      if (dr < best.squared_distance) stack[size++] = {right, dr};
     }
   }
   return best;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -40,6 +41,12 @@ class TriangleTree {
   /// count need not list them all).
   void in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
               size_t limit = std::numeric_limits<size_t>::max()) const;
+  /// Calls visit(index, corners) for the triangles whose boxes may meet the
+  /// segment [a, b], in no order, until a call returns true; returns whether
+  /// one did. The box test is padded (a few more triangles may come, none that
+  /// meets the segment is missed), so exact tests can follow on the corners.
+  using SegmentVisit = std::function<bool(int, const std::array<Vec3, 3>&)>;
+  bool along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const;
   bool empty() const { return triangles_.empty(); }
 
  private:
@@ -49,6 +56,9 @@ class TriangleTree {
     int count = 0;  ///< triangles in a leaf, 0 for an inner node
   };
   int build(int begin, int end, const std::vector<Vec3>& centroids);
+  // The triangles in boxes `meets` accepts (nodes' first), until visit says stop.
+  template <class Meets>
+  bool visit_boxes(const Meets& meets, const SegmentVisit& visit) const;
   std::vector<std::array<Vec3, 3>> triangles_;  ///< in tree order
   std::vector<int> id_;                         ///< tree order → caller's index
   std::vector<int> slot_;                       ///< caller's index → tree order
