@@ -257,3 +257,47 @@ TEST(SurfaceDepth, AsAGuardItFollowsOnlyWhatCanDecide) {
 
 }  // namespace
 }  // namespace pd
+
+namespace pd {
+namespace {
+
+// A union's inside against its shells' own ray tests: a bolt exported as two
+// bodies face to face (a 32-sided shank under a hexagonal head, float32, far
+// from the origin) and a flipped third body (its faces inward: the shortcut by
+// the nearest face must not trust it). Inside the union exactly where some
+// shell holds the point; the lower bound's magnitude is the distance to the
+// nearest face either way.
+TEST(SolidDistance, AUnionIsInsideWhereSomeShellIs) {
+  namespace sh = shapes;
+  const Vec3 far(21500.5, -3070.25, 880.0);
+  const std::vector<Mesh> bodies{
+      sh::float32(sh::translated(sh::cylinder({0, 0}, 4, 0, 20, 32), far)),
+      sh::float32(sh::translated(sh::prism(sh::circle({0, 0}, 7, 6), 20, 25), far)),
+      sh::float32(sh::translated(sh::flipped(sh::box(Vec3(5, 5, 2), Vec3(9, 9, 6))), far))};
+  const SolidDistance bolt(sh::joined(bodies));
+  ASSERT_FALSE(bolt.exact());
+  ASSERT_TRUE(bolt.closed());
+  std::vector<PreparedMesh> shells;
+  for (const Mesh& m : bodies) shells.emplace_back(m);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-10, 10), h(-2, 27);
+  int inside = 0, near_face = -1;
+  for (int k = 0; k < 4000; ++k) {
+    Vec3 p = far + Vec3(u(rng), u(rng), h(rng));
+    // Some points on a corner's level or line, where rays run along faces.
+    const Mesh& m = bodies[rng() % bodies.size()];
+    const Vec3 v = m.vertices.col(rng() % m.vertices.cols());
+    if (k % 4 == 1) p.z() = v.z();
+    if (k % 4 == 2) p.head<2>() = v.head<2>();
+    const bool want = std::any_of(shells.begin(), shells.end(),
+                                  [&](const PreparedMesh& s) { return s.inside(p); });
+    const DistanceBounds d = bolt.at(p, k % 2 ? &near_face : nullptr);
+    EXPECT_EQ(d.lower > 0, want) << k;
+    EXPECT_NEAR(std::abs(d.lower), bolt.mesh().distance(p), 1e-9) << k;
+    inside += want;
+  }
+  EXPECT_GT(inside, 300);
+}
+
+}  // namespace
+}  // namespace pd

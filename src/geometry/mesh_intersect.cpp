@@ -215,14 +215,15 @@ double PreparedMesh::outside_distance(const Vec3& v) const {
 
 namespace {
 
-// Which side of an oriented closed mesh p lies on, from its nearest point q on
-// face `face` (squared distance d2): +1 outside, -1 inside, 0 when the nearest
-// face cannot tell (q on an edge or vertex, a degenerate segment as near, or
-// orientation unknown), and only the ray test can. Exact when q lies strictly
-// inside the face: the segment p–q then crosses no other face.
-int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
-                      double d2) {
-  bool decided = m.oriented && d2 > 0;
+// Which side of its nearest face p lies on, from its nearest point q on face
+// `face` (squared distance d2): +1 the side the face's corner order points to,
+// -1 the other, 0 when the nearest face cannot tell (q on an edge or vertex, or
+// a degenerate segment as near), and only a ray test can. Exact when q lies
+// strictly inside the face: the segment p–q then crosses no other face, so p
+// is on that side of every closed shell the face belongs to.
+int face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
+              double d2) {
+  bool decided = d2 > 0;
   for (const Segment3& s : m.segments)
     decided = decided && CGAL::squared_distance(Point3(v.x(), v.y(), v.z()), s) > d2;
   if (!decided) return 0;
@@ -237,6 +238,13 @@ int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& 
   const double margin = tol::kNearestFaceMargin;
   if (!(den > 0 && l1 > margin && l2 > margin && 1 - l1 - l2 > margin)) return 0;
   return e0.cross(e1).dot(Vec3(v - x)) > 0 ? 1 : -1;
+}
+
+// The side of an oriented closed mesh p lies on: +1 outside, -1 inside, 0
+// when its nearest face cannot tell or the orientation is unknown.
+int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
+                      double d2) {
+  return m.oriented ? face_side(m, v, q, face, d2) : 0;
 }
 
 }  // namespace
@@ -291,13 +299,14 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
 }
 
 double PreparedMesh::unsigned_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
-                                       int* near_face) const {
-  return nearest_on_surface(v, nearest, face_normal, near_face, nullptr);
+                                       int* near_face, int* side_of_face) const {
+  return nearest_on_surface(v, nearest, face_normal, near_face, side_of_face, true);
 }
 
 double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face_normal,
-                                        int* near_face, int* side) const {
+                                        int* near_face, int* side, bool of_face) const {
   const Impl& m = *impl_;
+  if (side) *side = 0;
   const Point3 p(v.x(), v.y(), v.z());
   Point3 q = p;
   double d2 = INFINITY;
@@ -308,7 +317,8 @@ double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face
     const TriIter face = m.faces.cbegin() + found.face;
     q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);
-    if (m.parity && side) *side = nearest_face_side(m, v, q, face, d2);
+    if (side && of_face) *side = face_side(m, v, q, face, d2);
+    if (side && !of_face && m.parity) *side = nearest_face_side(m, v, q, face, d2);
     const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
     normal = Vec3(n.x(), n.y(), n.z()).normalized();
   }

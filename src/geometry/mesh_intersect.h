@@ -48,9 +48,13 @@ class PreparedMesh {
                          int* near_face = nullptr) const;
   /// The distance to the surface, with the same nearest point, normal and
   /// `near_face` as signed_distance, but no inside test (for callers that
-  /// decide inside another way: a union of shells).
+  /// decide inside another way: a union of shells). `side_of_face`, when
+  /// given, gets the side of the nearest face p lies on where that face alone
+  /// says it (the nearest point strictly inside it): +1 the side its normal
+  /// points to, -1 the other, 0 when it cannot say. Whatever the mesh's
+  /// orientation: p lies on that side of every closed shell the face is of.
   double unsigned_distance(const Vec3& p, Vec3* nearest, Vec3* face_normal,
-                           int* near_face = nullptr) const;
+                           int* near_face = nullptr, int* side_of_face = nullptr) const;
   /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to
   /// `out` in increasing order; past `limit` of them, limit + 1 in no order.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
@@ -92,9 +96,10 @@ class PreparedMesh {
 
  private:
   // The distance and nearest point of signed_distance; with `side`, also the
-  // nearest face's verdict (+1 outside, -1 inside, 0 when it cannot say).
+  // nearest face's verdict (+1 outside, -1 inside, 0 when it cannot say), or
+  // with `of_face` the side of the face itself (unsigned_distance's).
   double nearest_on_surface(const Vec3& p, Vec3* nearest, Vec3* face_normal, int* near_face,
-                            int* side) const;
+                            int* side, bool of_face = false) const;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -162,21 +162,34 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   shells_ = std::move(prepared);
   std::vector<std::array<Vec3, 3>> faces;
   Eigen::AlignedBox3d all;
+  // Shells share no vertex position (shells_of), so a face's first corner
+  // names its shell.
+  std::vector<std::pair<std::array<double, 3>, int>> shell_at;
+  shell_box_.resize(shells_.size());
   for (size_t i = 0; i < shells_.size(); ++i)
     for (int f = 0; f < shells_[i].faces(); ++f) {
       faces.push_back(shells_[i].face(f));
       shell_of_face_.push_back(static_cast<int>(i));
-      for (const Vec3& v : faces.back()) all.extend(v);
+      for (const Vec3& v : faces.back()) all.extend(v), shell_box_[i].extend(v);
+      const Vec3& v = faces.back()[0];
+      shell_at.push_back({{v.x(), v.y(), v.z()}, static_cast<int>(i)});
     }
   shell_faces_ = TriangleTree(faces);
   shells_lo_ = all.min();
   shells_hi_ = all.max();
+  std::sort(shell_at.begin(), shell_at.end());
+  for (int f = 0; f < whole_.faces(); ++f) {
+    const Vec3 v = whole_.face(f)[0];
+    const std::array<double, 3> key{v.x(), v.y(), v.z()};
+    const auto it = std::lower_bound(shell_at.begin(), shell_at.end(), std::pair{key, -1});
+    shell_of_whole_face_.push_back(it != shell_at.end() && it->first == key ? it->second : -1);
+  }
   note_ = closed_
               ? std::to_string(shells_.size()) + " shells whose surfaces meet: taken as their union"
               : "open shell: no inside";
 }
 
-DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
+DistanceBounds SolidDistance::at(const Vec3& p, int* near_face, bool upper) const {
   DistanceBounds r;
   Vec3 normal = Vec3::Zero();
   if (exact_) {
@@ -184,8 +197,10 @@ DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
     return r;
   }
   // A union: the shells' own tests say inside, not the soup's parity.
-  const double d = whole_.unsigned_distance(p, &r.nearest, &normal, near_face);
-  const bool inside = closed_ && inside_some_shell(p);
+  int face = near_face ? *near_face : -1, side = 0;
+  const double d = whole_.unsigned_distance(p, &r.nearest, &normal, &face, &side);
+  if (near_face) *near_face = face;
+  const bool inside = closed_ && inside_union(p, face, side);
   // Inside the union: every triangle is at least as near as the union's
   // surface (shared faces are not surface), so d is a lower bound. It is also
   // one from above, up to a hair, where the nearest point is union surface:
@@ -193,7 +208,7 @@ DistanceBounds SolidDistance::at(const Vec3& p, int* near_face) const {
   // of the complement (the ray tests are exact).
   r.lower = inside ? d : -d;
   r.upper = inside ? INFINITY : -d;
-  if (inside && normal.allFinite() && normal.norm() > 0) {
+  if (upper && inside && normal.allFinite() && normal.norm() > 0) {
     const Vec3 y = r.nearest + hair_ * normal;
     if (outside_every_shell(y)) r.upper = (y - p).norm();
   }
@@ -206,6 +221,20 @@ bool SolidDistance::inside_some_shell(const Vec3& p) const {
   for (size_t i = 0; i < sides.size(); ++i)
     if (shells_[i].closed() && sides[i] == RaySide::kInside) return true;
   return false;
+}
+
+bool SolidDistance::inside_union(const Vec3& p, int face, int side) const {
+  const int s = face >= 0 && side != 0 ? shell_of_whole_face_[face] : -1;
+  if (s >= 0 && shells_[s].oriented()) {
+    if (side < 0) return true;  // behind an outward face of its nearest point
+    // Outside shell s: inside the union only inside another, so not when no
+    // other shell's box holds p.
+    bool other = false;
+    for (size_t i = 0; i < shells_.size() && !other; ++i)
+      other = static_cast<int>(i) != s && shell_box_[i].contains(p);
+    if (!other) return false;
+  }
+  return inside_some_shell(p);
 }
 
 bool SolidDistance::outside_every_shell(const Vec3& p) const {
@@ -225,7 +254,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   a.faces_in_box(box.min(), box.max(), faces);
   int near_face = -1;  // the samples come in runs close together
   const auto sample = [&](const Vec3& p) {
-    const DistanceBounds d = b.at(p, &near_face);
+    const DistanceBounds d = b.at(p, &near_face, false);  // the lower bound is all it needs
     if (!(d.lower > best.depth)) return d.lower;
     best.depth = d.lower;
     best.at = p;

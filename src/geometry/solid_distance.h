@@ -136,8 +136,10 @@ class SolidDistance {
   const Eigen::Matrix3d& axes() const { return axes_; }
   const Eigen::AlignedBox3d& box_in_axes() const { return box_in_axes_; }
 
-  /// `near_face`: as PreparedMesh::signed_distance's, for a run of nearby queries.
-  DistanceBounds at(const Vec3& p, int* near_face = nullptr) const;
+  /// `near_face`: as PreparedMesh::signed_distance's, for a run of nearby
+  /// queries. Without `upper`, the upper bound is left infinite inside a union
+  /// (callers that read only the lower bound: it costs a ray test there).
+  DistanceBounds at(const Vec3& p, int* near_face = nullptr, bool upper = true) const;
 
   /// The plane structure of the surface about a box of a frame, in that
   /// frame's coordinates: the planes of the faces within `margin` of the
@@ -149,6 +151,9 @@ class SolidDistance {
   // Union mode: inside some shell, and strictly outside every shell (exact ray
   // parity; one ray for all shells).
   bool inside_some_shell(const Vec3& p) const;
+  // inside_some_shell, told first by p's nearest face (of the whole, `face`)
+  // where it can: `side` is unsigned_distance's side_of_face.
+  bool inside_union(const Vec3& p, int face, int side) const;
   bool outside_every_shell(const Vec3& p) const;
 
   PreparedMesh whole_;
@@ -158,6 +163,8 @@ class SolidDistance {
   TriangleTree shell_faces_;
   std::vector<int> shell_of_face_;
   Vec3 shells_lo_ = Vec3::Zero(), shells_hi_ = Vec3::Zero();
+  std::vector<Eigen::AlignedBox3d> shell_box_;
+  std::vector<int> shell_of_whole_face_;  ///< the shell each face of whole_ is of
   bool closed_ = false, exact_ = true, oriented_ = false;
   std::string note_;
   Eigen::AlignedBox3d box_;
