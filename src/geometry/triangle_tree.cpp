@@ -110,8 +110,8 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
   std::vector<Vec3> centroids(triangles.size());
   for (size_t i = 0; i < triangles.size(); ++i)
     centroids[i] = (triangles[i][0] + triangles[i][1] + triangles[i][2]) / 3;
-  nodes_.reserve(2 * triangles.size() / kLeafSize + 2);
-  build(0, static_cast<int>(triangles.size()), centroids);
+  nodes_.reserve(triangles.size() / kLeafSize + 2);
+  root_ = build(0, static_cast<int>(triangles.size()), centroids);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
   boxes_.resize(triangles_.size());
@@ -121,55 +121,46 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
   }
 }
 
-void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
-                          size_t limit) const {
-  if (triangles_.empty()) return;
-  const auto meets = [&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); };
-  const size_t before = out.size();
-  std::array<int, 2 * 32 + 2> stack;  // as in nearest()
+// Depth first, the first child first; a subtree is entered when `meets`
+// accepts its box, a leaf's triangle when it accepts the triangle's box. Stops
+// when `visit` returns true, and says so. Each visit pushes at most two
+// subtrees, one level down, and median splits keep the depth below 32: the
+// stack never holds more than 64.
+template <class Meets, class Visit>
+bool TriangleTree::visit_boxes(const Meets& meets, const Visit& visit) const {
+  if (triangles_.empty() || !meets(root_.lo, root_.hi)) return false;
+  std::array<const Subtree*, 2 * 32 + 2> stack;
   int size = 0;
-  stack[size++] = 0;
+  stack[size++] = &root_;
   while (size > 0) {
-    const int at = stack[--size];
-    const Node& n = nodes_[at];
-    if (!meets(n.lo, n.hi)) continue;
-    if (n.count > 0) {
-      for (int i = n.first; i < n.first + n.count; ++i)
-        if (meets(boxes_[i][0], boxes_[i][1])) {
-          out.push_back(id_[i]);
-          if (out.size() - before > limit) return;
-        }
+    const Subtree& t = *stack[--size];
+    if (t.count > 0) {
+      for (int i = t.index; i < t.index + t.count; ++i)
+        if (meets(boxes_[i][0], boxes_[i][1]) && visit(i)) return true;
       continue;
     }
-    stack[size++] = n.first;
-    stack[size++] = at + 1;
-  }
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
-}
-
-template <class Meets>
-bool TriangleTree::visit_boxes(const Meets& meets, const SegmentVisit& visit) const {
-  std::array<int, 2 * 32 + 2> stack;  // as in nearest()
-  int size = 0;
-  stack[size++] = 0;
-  while (size > 0) {
-    const int at = stack[--size];
-    const Node& n = nodes_[at];
-    if (!meets(n.lo, n.hi)) continue;
-    if (n.count > 0) {
-      for (int i = n.first; i < n.first + n.count; ++i)
-        if (meets(boxes_[i][0], boxes_[i][1]) && visit(id_[i], triangles_[i])) return true;
-      continue;
-    }
-    stack[size++] = n.first;
-    stack[size++] = at + 1;
+    const Node& n = nodes_[t.index];
+    if (meets(n.child[1].lo, n.child[1].hi)) stack[size++] = &n.child[1];
+    if (meets(n.child[0].lo, n.child[0].hi)) stack[size++] = &n.child[0];
   }
   return false;
 }
 
+void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
+                          size_t limit) const {
+  const size_t before = out.size();
+  const bool past_limit =
+      visit_boxes([&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); },
+                  [&](int slot) {
+                    out.push_back(id_[slot]);
+                    return out.size() - before > limit;
+                  });
+  if (!past_limit) std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
+}
+
 bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const {
-  if (triangles_.empty()) return false;
   const Vec3 d = b - a;
+  const auto call = [&](int slot) { return visit(id_[slot], triangles_[slot]); };
   // Along an axis (the inside tests' rays), boxes are met by comparisons.
   const int moving = (d.x() != 0) + (d.y() != 0) + (d.z() != 0);
   if (moving == 1) {
@@ -180,38 +171,39 @@ bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisi
           return lo[u] <= a[u] && a[u] <= hi[u] && lo[v] <= a[v] && a[v] <= hi[v] && lo[k] <= to &&
                  from <= hi[k];
         },
-        visit);
+        call);
   }
   return visit_boxes(
-      [&](const Vec3& lo, const Vec3& hi) { return segment_may_meet_box(a, d, lo, hi); }, visit);
+      [&](const Vec3& lo, const Vec3& hi) { return segment_may_meet_box(a, d, lo, hi); }, call);
 }
 
 // Median split of the centroids along their longest extent.
-int TriangleTree::build(int begin, int end, const std::vector<Vec3>& centroids) {
-  const int index = static_cast<int>(nodes_.size());
-  nodes_.emplace_back();
+TriangleTree::Subtree TriangleTree::build(int begin, int end, const std::vector<Vec3>& centroids) {
+  Subtree s;
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   Vec3 clo = lo, chi = hi;
   for (int i = begin; i < end; ++i) {
     for (const Vec3& v : triangles_[id_[i]]) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     clo = clo.cwiseMin(centroids[id_[i]]), chi = chi.cwiseMax(centroids[id_[i]]);
   }
-  nodes_[index].lo = lo;
-  nodes_[index].hi = hi;
+  s.lo = lo;
+  s.hi = hi;
   if (end - begin <= kLeafSize) {
-    nodes_[index].first = begin;
-    nodes_[index].count = end - begin;
-    return index;
+    s.index = begin;
+    s.count = end - begin;
+    return s;
   }
   int axis = 0;
   (chi - clo).maxCoeff(&axis);
   const int mid = begin + (end - begin) / 2;
   std::nth_element(id_.begin() + begin, id_.begin() + mid, id_.begin() + end,
                    [&](int x, int y) { return centroids[x][axis] < centroids[y][axis]; });
-  build(begin, mid, centroids);  // the first child follows its parent
-  const int second = build(mid, end, centroids);
-  nodes_[index].first = second;
-  return index;
+  s.index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  const Subtree first = build(begin, mid, centroids), second = build(mid, end, centroids);
+  nodes_[s.index].child[0] = first;
+  nodes_[s.index].child[1] = second;
+  return s;
 }
 
 TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
@@ -226,36 +218,34 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
     if (d2 < best.squared_distance) best = {Vec3(q.x, q.y, q.z), id_[slot], d2};
   };
   if (start >= 0 && start < static_cast<int>(slot_.size())) test(slot_[start]);
-  // Depth first, the nearer child first; a node no nearer than the best is
-  // skipped. A node's box distance is computed once, when its parent is
-  // visited, and kept beside it on the stack. Each visit pushes at most two
-  // nodes, one level down, and median splits keep the depth below 32: the
-  // stack never holds more than 64.
+  // Depth first, the nearer child first; a subtree no nearer than the best is
+  // skipped. A subtree's box distance is computed once, when its parent is
+  // visited, and kept beside it on the stack (as in visit_boxes, at most 64).
   struct Open {
-    int node;
+    const Subtree* tree;
     double d2;
   };
   std::array<Open, 2 * 32 + 2> stack;
   int size = 0;
-  stack[size++] = {0, box_squared_distance(nodes_[0].lo, nodes_[0].hi, p)};
+  stack[size++] = {&root_, box_squared_distance(root_.lo, root_.hi, p)};
   while (size > 0) {
     const Open open = stack[--size];
     if (!(open.d2 < best.squared_distance)) continue;
-    const Node& n = nodes_[open.node];
-    if (n.count > 0) {
-      for (int i = n.first; i < n.first + n.count; ++i) test(i);
+    const Subtree& t = *open.tree;
+    if (t.count > 0) {
+      for (int i = t.index; i < t.index + t.count; ++i) test(i);
       continue;
     }
-    const int left = open.node + 1, right = n.first;
-    const double dl = box_squared_distance(nodes_[left].lo, nodes_[left].hi, p),
-                 dr = box_squared_distance(nodes_[right].lo, nodes_[right].hi, p);
+    const Subtree &left = nodes_[t.index].child[0], &right = nodes_[t.index].child[1];
+    const double dl = box_squared_distance(left.lo, left.hi, p),
+                 dr = box_squared_distance(right.lo, right.hi, p);
     // Pushed last is searched first.
     if (dl < dr) {
-      if (dr < best.squared_distance) stack[size++] = {right, dr};
-      if (dl < best.squared_distance) stack[size++] = {left, dl};
+      if (dr < best.squared_distance) stack[size++] = {&right, dr};
+      if (dl < best.squared_distance) stack[size++] = {&left, dl};
     } else {
-      if (dl < best.squared_distance) stack[size++] = {left, dl};
-      if (dr < best.squared_distance) stack[size++] = {right, dr};
+      if (dl < best.squared_distance) stack[size++] = {&left, dl};
+      if (dr < best.squared_distance) stack[size++] = {&right, dr};
     }
   }
   return best;

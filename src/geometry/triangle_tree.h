@@ -50,19 +50,27 @@ class TriangleTree {
   bool empty() const { return triangles_.empty(); }
 
  private:
-  struct Node {
-    Vec3 lo, hi;
-    int first = 0;  ///< leaf: its first triangle; inner: its second child (the first follows it)
-    int count = 0;  ///< triangles in a leaf, 0 for an inner node
+  // A subtree: an inner node (count 0) or a leaf's triangles [index, index +
+  // count) in tree order, with its box.
+  struct Subtree {
+    Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
+    int index = 0;
+    int count = 0;
   };
-  int build(int begin, int end, const std::vector<Vec3>& centroids);
-  // The triangles in boxes `meets` accepts (nodes' first), until visit says stop.
-  template <class Meets>
-  bool visit_boxes(const Meets& meets, const SegmentVisit& visit) const;
+  // An inner node holds its two children's boxes: a visit reads one node to
+  // weigh both, where a node holding its own box made it read two, often far
+  // apart in memory.
+  struct Node {
+    Subtree child[2];
+  };
+  Subtree build(int begin, int end, const std::vector<Vec3>& centroids);
+  template <class Meets, class Visit>
+  bool visit_boxes(const Meets& meets, const Visit& visit) const;
   std::vector<std::array<Vec3, 3>> triangles_;  ///< in tree order
   std::vector<int> id_;                         ///< tree order → caller's index
   std::vector<int> slot_;                       ///< caller's index → tree order
   std::vector<Node> nodes_;
+  Subtree root_;
   std::vector<std::array<Vec3, 2>> boxes_;  ///< each triangle's, in tree order
 };
 
