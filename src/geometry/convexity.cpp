@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -125,22 +126,29 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
     const double g = std::cbrt((hi - lo).prod() / std::max(samples, 1));
     if (g > 0) {
       // A point inside the part is the centre of a ball of the part (its
-      // distance to the surface): the next grid points in the last such ball
-      // are inside too, and cannot raise the estimate.
-      Vec3 ball_centre = Vec3::Zero();
-      double ball_radius = 0.0;
+      // distance to the surface): later grid points in such a ball are inside
+      // too, and cannot raise the estimate. The last few balls are kept: the
+      // grid's next line passes through the balls of the line before.
+      constexpr size_t kBalls = 64;
+      std::array<std::pair<Vec3, double>, kBalls> balls;  // centre, squared radius
+      size_t kept = 0;
+      const auto in_a_ball = [&](const Vec3& q) {
+        for (size_t i = 0; i < std::min(kept, kBalls); ++i)
+          if ((q - balls[i].first).squaredNorm() < balls[i].second) return true;
+        return false;
+      };
       for (double x = lo.x() + g / 2; x < hi.x(); x += g)
         for (double y = lo.y() + g / 2; y < hi.y(); y += g)
           for (double z = lo.z() + g / 2; z < hi.z(); z += g) {
             const Vec3 q(x, y, z);
-            if ((q - ball_centre).squaredNorm() < ball_radius * ball_radius) continue;
+            if (in_a_ball(q)) continue;
             bool in = true;
             for (std::size_t i = 0; i < h.f.normals.size() && in; ++i)
               in = h.f.normals[i].dot(q) + h.f.offsets[i] <= 0;
             if (!in) continue;
             const double sd = part.signed_distance(q + centre);  // > 0 inside
             if (sd > 0) {
-              ball_centre = q, ball_radius = sd;
+              balls[kept++ % kBalls] = {q, sd * sd};
               continue;
             }
             if (-sd > c.value && !(on_part && on_part->covers(q + centre))) {

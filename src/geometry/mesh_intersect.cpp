@@ -354,15 +354,17 @@ namespace {
 
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
 
-// Primitive i of a mesh: faces first, then segments. Boxes are closed, so
-// touching boxes are reported.
-std::vector<Box> primitive_boxes(const PreparedMesh::Impl& m) {
+// Primitive i of a mesh: faces first, then segments; only those whose boxes
+// meet `within` (where the two meshes' boxes overlap: a point two primitives
+// share lies in both meshes' boxes). Boxes are closed, so touching boxes are
+// reported.
+std::vector<Box> primitive_boxes(const PreparedMesh::Impl& m, const CGAL::Bbox_3& within) {
   std::vector<Box> boxes;
-  boxes.reserve(m.faces.size() + m.segments.size());
-  for (std::size_t i = 0; i < m.faces.size(); ++i)
-    boxes.emplace_back(m.faces[i].bbox(), static_cast<int>(i));
-  for (std::size_t i = 0; i < m.segments.size(); ++i)
-    boxes.emplace_back(m.segments[i].bbox(), static_cast<int>(m.faces.size() + i));
+  const auto add = [&](const CGAL::Bbox_3& b, std::size_t i) {
+    if (CGAL::do_overlap(b, within)) boxes.emplace_back(b, static_cast<int>(i));
+  };
+  for (std::size_t i = 0; i < m.faces.size(); ++i) add(m.faces[i].bbox(), i);
+  for (std::size_t i = 0; i < m.segments.size(); ++i) add(m.segments[i].bbox(), m.faces.size() + i);
   return boxes;
 }
 
@@ -377,7 +379,11 @@ bool primitives_meet(const PreparedMesh::Impl& a, int i, const PreparedMesh::Imp
 struct Found {};
 
 bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
-  std::vector<Box> ba = primitive_boxes(a), bb = primitive_boxes(b);
+  const CGAL::Bbox_3 both(
+      std::max(a.box.xmin(), b.box.xmin()), std::max(a.box.ymin(), b.box.ymin()),
+      std::max(a.box.zmin(), b.box.zmin()), std::min(a.box.xmax(), b.box.xmax()),
+      std::min(a.box.ymax(), b.box.ymax()), std::min(a.box.zmax(), b.box.zmax()));
+  std::vector<Box> ba = primitive_boxes(a, both), bb = primitive_boxes(b, both);
   try {
     CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(),
                              [&](const Box& x, const Box& y) {
