@@ -34,6 +34,29 @@ TEST(SurfacePolygons, CoverPointsOnTheirPolygonsOnly) {
   EXPECT_FALSE(SurfacePolygons(line, {{0, 3}}, within).covers(Vec3(1, 0, 0)));
 }
 
+TEST(SurfacePolygons, ALongSliverPlacedAskewCoversItsPoints) {
+  // A shaft's side facet (60 by 0.3) along the diagonal far from the origin:
+  // its box spans some 1,700 grid cells, the sliver itself a few dozen. It is
+  // kept, and every point on it is covered; points off it are not.
+  const Vec3 far(31000.5, -7200.25, 410.0), along = Vec3(1, 1, 1).normalized() * 60,
+                                            across = Vec3(1, -1, 0).normalized() * 0.3;
+  Points corners(3, 4);
+  corners.col(0) = far;
+  corners.col(1) = far + along;
+  corners.col(2) = far + along + across;
+  corners.col(3) = far + across;
+  const double within = 3e-3;
+  const SurfacePolygons s(corners, {{0, 4}}, within);
+  const Vec3 normal = along.cross(across).normalized();
+  for (int i = 0; i <= 100; ++i)
+    for (double w : {0.01, 0.5, 0.99}) {
+      const Vec3 x = far + (0.001 + i / 100.0 * 0.998) * along + w * across;
+      EXPECT_TRUE(s.covers(x)) << i << " " << w;
+      EXPECT_FALSE(s.covers(x + within * normal)) << i << " " << w;  // off the plane
+      EXPECT_FALSE(s.covers(x + 1.02 * across)) << i << " " << w;    // beside it
+    }
+}
+
 TEST(SurfacePolygons, SkippedSamplesNeverChangeAnEstimateAboveWithin) {
   const Vec3 far(20000.0, -3000.0, 500.0);
   const std::vector<Mesh> meshes = {

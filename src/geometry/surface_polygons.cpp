@@ -8,9 +8,12 @@ namespace pd {
 
 namespace {
 
-// A polygon's box spanning more cells than this is left out: inserting it
-// would cost more than measuring its points.
+// A polygon meeting more cells than this is left out: inserting it would cost
+// more than measuring its points. Its box is walked cell by cell up to
+// kMaxBoxCells (a long sliver placed askew, as CAD shafts' faces are, has a
+// box of a thousand cells and meets a few dozen).
 constexpr long long kMaxCells = 512;
+constexpr long long kMaxBoxCells = 1 << 15;
 
 }  // namespace
 
@@ -50,11 +53,35 @@ SurfacePolygons::SurfacePolygons(Points corners_in,
       hi = hi.cwiseMax(corners.col(i));
     }
     const Cell a = cell_of(lo - Vec3::Constant(within)), z = cell_of(hi + Vec3::Constant(within));
-    if ((z[0] - a[0] + 1) * (z[1] - a[1] + 1) * (z[2] - a[2] + 1) > kMaxCells) continue;
-    for (long long x = a[0]; x <= z[0]; ++x)
+    if ((z[0] - a[0] + 1) * (z[1] - a[1] + 1) * (z[2] - a[2] + 1) > kMaxBoxCells) continue;
+    std::vector<Cell> cells;
+    for (long long x = a[0]; x <= z[0] && cells.size() <= kMaxCells; ++x)
       for (long long y = a[1]; y <= z[1]; ++y)
-        for (long long w = a[2]; w <= z[2]; ++w) grid_[{x, y, w}].push_back(k);
+        for (long long w = a[2]; w <= z[2]; ++w)
+          if (may_meet(g, {x, y, w})) cells.push_back({x, y, w});
+    if (cells.size() > kMaxCells) continue;
+    for (const Cell& c : cells) grid_[c].push_back(k);
   }
+}
+
+// Whether points within `within` of polygon g may lie in cell c: the cell,
+// grown by `within`, against the polygon's plane and the outer side of each of
+// its edges (separating axes; a few cells too many may pass, none it meets
+// fails). Rounding is covered by a margin of 1e-9 of the cell.
+bool SurfacePolygons::may_meet(const Polygon& g, const Cell& c) const {
+  const Vec3 centre = (Vec3(c[0], c[1], c[2]) + Vec3::Constant(0.5)) * size_;
+  const double half = size_ / 2 + within_, slack = 1e-9 * size_;
+  // How far the grown cell reaches along a unit direction u from its centre.
+  const auto reach = [&](const Vec3& u) { return half * u.cwiseAbs().sum() + slack; };
+  if (std::abs(g.normal.dot(centre) - g.offset) > reach(g.normal)) return false;
+  for (long i = g.first; i < g.last; ++i) {
+    const Vec3 a = corners_.col(i), b = corners_.col(i + 1 < g.last ? i + 1 : g.first);
+    const Vec3 m = g.normal.cross(b - a);  // points into the polygon
+    const double length = m.norm();
+    if (!(length > 0)) continue;
+    if ((m / length).dot(centre - a) < -reach(m / length)) return false;
+  }
+  return true;
 }
 
 SurfacePolygons::Cell SurfacePolygons::cell_of(const Vec3& x) const {

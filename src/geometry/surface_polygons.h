@@ -38,6 +38,7 @@ class SurfacePolygons {
     }
   };
   Cell cell_of(const Vec3& x) const;
+  bool may_meet(const Polygon& g, const Cell& c) const;
   bool inside(const Polygon& g, const Vec3& x) const;
 
   Points corners_;
