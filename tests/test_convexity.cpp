@@ -5,6 +5,7 @@
 
 #include "corpus/cad_shapes.h"
 #include "geometry/convexity.h"
+#include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
 
 using namespace pd;
@@ -171,4 +172,29 @@ TEST(Convexity, EstimateOnPreparedHullIsTheSame) {
   const Points flat = (Points(3, 4) << 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0).finished();
   EXPECT_FALSE(hull_of_points(flat).solid());
   EXPECT_EQ(hull_concavity(hull_of_points(flat), part, 0.01, -1.0, flat).value, 0.0);
+}
+
+TEST(Convexity, TheScreenFromTheHullsPointsIsTheScreenFromEveryCorner) {
+  // The parts stage hands the screen its hull's extreme points; the estimate
+  // (value, witness, closedness) is the one built from every corner, on convex
+  // and nonconvex float32 parts far from the origin, a UV-sphere-like ball
+  // among them (every surface point a hull vertex).
+  const Vec3 far(24000.5, -1800.25, 640.0);
+  std::vector<Vec2> profile;
+  for (int k = 0; k <= 12; ++k)
+    profile.emplace_back(4 * std::sin(M_PI * k / 12), -4 * std::cos(M_PI * k / 12));
+  for (const Mesh& m : {float32(translated(revolution(profile, 24), far)),
+                        float32(translated(cylinder({0, 0}, 3, 0, 40, 64), far)),
+                        float32(translated(plate_with_hole(40, 6, 5, 32), far)),
+                        float32(translated(l_bracket(30, 4, 10), far))}) {
+    for (const double stop : {double(INFINITY), 0.05}) {
+      const ConvexityScreen all = screen_convexity(m, 0.01, stop);
+      const Points extreme = convex_hull(m.vertices).vertices;
+      const ConvexityScreen from_hull = screen_convexity(m, 0.01, stop, &extreme);
+      EXPECT_EQ(from_hull.closed, all.closed);
+      EXPECT_EQ(from_hull.concavity.value, all.concavity.value);
+      EXPECT_EQ(from_hull.concavity.witness, all.concavity.witness);
+      EXPECT_EQ(from_hull.concavity.stopped, all.concavity.stopped);
+    }
+  }
 }

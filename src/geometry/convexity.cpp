@@ -85,13 +85,20 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
     sum_l2 += longest[i] * longest[i];
   }
   const double s = std::sqrt(sum_l2 / (2.0 * std::max(samples, 1)));
+  // A hull vertex is a corner of every facet around it (six on a ball's hull,
+  // where every facet is a single cell): measured once, the others cannot
+  // raise the estimate past its own first measure.
+  std::vector<char> corner_seen(static_cast<std::size_t>(p.cols()), 0);
   for (std::size_t i = 0; i < h.f.triangles.size(); ++i) {
     const auto& t = h.f.triangles[i];
     const int k = std::max(1, static_cast<int>(std::ceil(longest[i] / s)));
     const Vec3 a = p.col(t[0]), ab = p.col(t[1]) - a, ac = p.col(t[2]) - a;
     for (int u = 0; u <= k; ++u)
       for (int v = 0; u + v <= k; ++v) {
-        consider(a + (double(u) / k) * ab + (double(v) / k) * ac);
+        const int corner = u == 0 && v == 0 ? t[0] : u == k ? t[1] : v == k ? t[2] : -1;
+        if (corner >= 0 && corner_seen[corner]++) continue;
+        consider(corner >= 0 ? Vec3(p.col(corner))
+                             : a + (double(u) / k) * ab + (double(v) / k) * ac);
         if (c.stopped) return finish();
       }
     // Any point of a lattice cell is within its longest edge / √3 of a corner.
@@ -99,10 +106,19 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
   }
 
   // Surface points projected onto their nearest facet (from inside the hull).
+  // A surface point that is a hull vertex projects onto itself, which the
+  // lattices measured as a facet's corner (on a convex part, every one).
+  std::vector<std::array<double, 3>> hull_vertices;
+  for (std::size_t i = 0; i < corner_seen.size(); ++i)
+    if (corner_seen[i]) hull_vertices.push_back({p(0, long(i)), p(1, long(i)), p(2, long(i))});
+  std::sort(hull_vertices.begin(), hull_vertices.end());
   const Vec3 lo = p.rowwise().minCoeff(), hi = p.rowwise().maxCoeff();
   for (long i = 0; i < surface.cols(); ++i) {
     const Vec3 y = surface.col(i) - centre;
     if ((y.array() < lo.array()).any() || (y.array() > hi.array()).any()) continue;
+    if (std::binary_search(hull_vertices.begin(), hull_vertices.end(),
+                           std::array<double, 3>{y.x(), y.y(), y.z()}))
+      continue;
     std::size_t near = 0;
     double best = -INFINITY;
     for (std::size_t f = 0; f < h.f.normals.size(); ++f) {
@@ -280,11 +296,13 @@ Points distinct_columns(const Points& p) {
 
 }  // namespace
 
-ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above) {
+ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
+                                 const Points* hull_points) {
   ConvexityScreen r;
   const PreparedMesh part(m);
   r.closed = part.closed();
-  const HullOfPoints h = hull_of_points(m.vertices);  // the estimate's too
+  const HullOfPoints h =
+      hull_of_points(hull_points ? *hull_points : m.vertices);  // the estimate's too
   const double hull_volume = h.solid() ? h.volume : 0.0;
   const double missing = r.closed ? hull_volume - mesh_volume(m) : -1.0;
   // A coarse screen first, without the part's polygons (building them costs

@@ -103,12 +103,15 @@ struct Convexity {
 /// What the parts stage needs of a mesh: whether it is closed, and its
 /// concavity (as hull_concavity, with the void radius `concavity_tol`),
 /// estimated only until it exceeds `stop_above` (then a lower bound: the
-/// part is nonconvex at every tolerance up to `stop_above`).
+/// part is nonconvex at every tolerance up to `stop_above`). `hull_points`,
+/// when given, are the extreme points of m's vertices (the parts stage has
+/// them already): the hull is built from them, not from every corner again.
 struct ConvexityScreen {
   bool closed = false;
   Concavity concavity;
 };
-ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above);
+ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
+                                 const Points* hull_points = nullptr);
 
 /// Measures m once. A convex (within concavity_tol) single-shell mesh is its
 /// own piece. Open meshes: the concavity is against the surface, volume 0.

@@ -112,11 +112,11 @@ Mat4 placement(const PartSpec& spec) {
 
 // The file's nonconvexity, from the cache when it holds this file's bytes at
 // this tolerance, else measured (and stored, best effort).
-StoredConvexity convexity_of(const Mesh& m, const std::string& hash, double tol, double stop_above,
-                             const std::string& cache_dir) {
+StoredConvexity convexity_of(const Mesh& m, const Points& hull_points, const std::string& hash,
+                             double tol, double stop_above, const std::string& cache_dir) {
   const std::string key = convexity_key(hash, tol, stop_above);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
-  const ConvexityScreen c = screen_convexity(m, tol, stop_above);
+  const ConvexityScreen c = screen_convexity(m, tol, stop_above, &hull_points);
   const StoredConvexity s{c.concavity.value, c.closed};
   write_cached_convexity(cache_dir, key, s);
   return s;
@@ -219,8 +219,9 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
       // Measured once, in file units; each instance scales the value by its own
       // stretch. Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
-      const StoredConvexity c = convexity_of(*f.mesh, f.hash, concavity_tol / f.max_stretch,
-                                             concavity_tol / f.min_stretch, cache.dir);
+      const StoredConvexity c =
+          convexity_of(*f.mesh, f.reduced[0], f.hash, concavity_tol / f.max_stretch,
+                       concavity_tol / f.min_stretch, cache.dir);
       f.concavity = c.concavity;
       f.closed = c.closed;
     }
