@@ -137,7 +137,7 @@ TEST(RayParity, OneRayTellsEachSoupItsSide) {
     for (double y : c)
       for (double h : z) {
         const Vec3 p(x, y, h);
-        ray_parity_sides(tree, label, lo, hi, p, sides);
+        ray_parity_sides(tree, label, lo, hi, p, sides.data(), sides.size());
         int inside = 0;
         for (size_t i = 0; i < bodies.size(); ++i) {
           EXPECT_EQ(sides[i], own[i].side(p)) << x << " " << y << " " << h << " soup " << i;

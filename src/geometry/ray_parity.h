@@ -24,12 +24,12 @@ enum class RaySide { kOutside, kOnSurface, kInside };
 RaySide ray_parity_side(const TriangleTree& tree, const Vec3& lo, const Vec3& hi, const Vec3& p);
 
 /// p's side of each of several closed soups held in one tree (triangle i
-/// belongs to soup label[i], 0 <= label[i] < sides.size(); their corners lie
-/// in [lo, hi]), written to `sides`: one ray decides them all, where a test per
-/// soup casts one each (the shells of a multi-body part). Each side is the one
-/// ray_parity_side gives for that soup's tree alone.
+/// belongs to soup label[i], 0 <= label[i] < soups; their corners lie in
+/// [lo, hi]), written to sides[0 … soups − 1]: one ray decides them all, where
+/// a test per soup casts one each (the shells of a multi-body part). Each side
+/// is the one ray_parity_side gives for that soup's tree alone.
 void ray_parity_sides(const TriangleTree& tree, const std::vector<int>& label, const Vec3& lo,
-                      const Vec3& hi, const Vec3& p, std::vector<RaySide>& sides);
+                      const Vec3& hi, const Vec3& p, RaySide* sides, size_t soups);
 
 /// p's side counted on the one ray from p along `direction` (nonzero), or
 /// nothing when that ray meets an edge, a vertex or lies in a triangle's plane

@@ -215,12 +215,28 @@ DistanceBounds SolidDistance::at(const Vec3& p, int* near_face, bool upper) cons
   return r;
 }
 
+namespace {
+
+// Each shell's side of p, in `sides` (the stack's for a few shells).
+template <class Use>
+auto with_shell_sides(const TriangleTree& tree, const std::vector<int>& label, const Vec3& lo,
+                      const Vec3& hi, const Vec3& p, size_t shells, const Use& use) {
+  std::array<RaySide, 16> few;
+  std::vector<RaySide> many(shells > few.size() ? shells : 0);
+  RaySide* sides = shells > few.size() ? many.data() : few.data();
+  ray_parity_sides(tree, label, lo, hi, p, sides, shells);
+  return use(sides);
+}
+
+}  // namespace
+
 bool SolidDistance::inside_some_shell(const Vec3& p) const {
-  std::vector<RaySide> sides(shells_.size());
-  ray_parity_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, sides);
-  for (size_t i = 0; i < sides.size(); ++i)
-    if (shells_[i].closed() && sides[i] == RaySide::kInside) return true;
-  return false;
+  return with_shell_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, shells_.size(),
+                          [&](const RaySide* sides) {
+                            for (size_t i = 0; i < shells_.size(); ++i)
+                              if (shells_[i].closed() && sides[i] == RaySide::kInside) return true;
+                            return false;
+                          });
 }
 
 bool SolidDistance::inside_union(const Vec3& p, int face, int side) const {
@@ -238,11 +254,13 @@ bool SolidDistance::inside_union(const Vec3& p, int face, int side) const {
 }
 
 bool SolidDistance::outside_every_shell(const Vec3& p) const {
-  std::vector<RaySide> sides(shells_.size());
-  ray_parity_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, sides);
-  for (size_t i = 0; i < sides.size(); ++i)
-    if (!shells_[i].closed() || sides[i] != RaySide::kOutside) return false;
-  return true;
+  return with_shell_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, shells_.size(),
+                          [&](const RaySide* sides) {
+                            for (size_t i = 0; i < shells_.size(); ++i)
+                              if (!shells_[i].closed() || sides[i] != RaySide::kOutside)
+                                return false;
+                            return true;
+                          });
 }
 
 SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long max_samples,
