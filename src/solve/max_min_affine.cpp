@@ -48,7 +48,8 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
   // (this solve runs once per cell and model choice, the thickness's inner loop).
   std::vector<double> T(static_cast<size_t>(rows + 1) * cols, 0.0);
   const auto at = [&](int i, int j) -> double& { return T[static_cast<size_t>(i) * cols + j]; };
-  std::vector<int> basis(rows);
+  std::vector<int> basis(rows), nonzero;
+  nonzero.reserve(static_cast<size_t>(cols));
   for (int k = 0; k < m; ++k) {
     for (int d = 0; d < 3; ++d) at(k, d) = -f[k].slope[d];
     at(k, 3) = 1.0;
@@ -78,12 +79,18 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
     if (leave < 0) break;  // unbounded: cannot happen (the box bounds y, each row τ)
     double* pivot = &at(leave, 0);
     const double p = pivot[enter];
-    for (int j = 0; j < cols; ++j) pivot[j] /= p;
+    // The pivot row is mostly zeros (slack columns): the other rows change in
+    // its nonzero columns only, the same arithmetic on far fewer entries.
+    nonzero.clear();
+    for (int j = 0; j < cols; ++j) {
+      pivot[j] /= p;
+      if (pivot[j] != 0.0) nonzero.push_back(j);
+    }
     for (int i = 0; i <= rows; ++i) {
       double* row = &at(i, 0);
       const double factor = row[enter];
       if (i == leave || factor == 0.0) continue;
-      for (int j = 0; j < cols; ++j) row[j] -= factor * pivot[j];
+      for (const int j : nonzero) row[j] -= factor * pivot[j];
     }
     basis[leave] = enter;
   }
