@@ -37,6 +37,31 @@ TEST(MaxMinAffine, EqualsTheExactOptimumOnRandomProblems) {
   }
 }
 
+// The plane models of a pin seated in its bore: up to 24 functions, the
+// facets' planes of two coaxial polygons (the pin's inside distance and the
+// bore's), degenerate as CAD's are (parallel and opposed planes, ties).
+TEST(MaxMinAffine, EqualsTheExactOptimumOnAPinInItsBore) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int facets = 4 + trial % 9;  // per surface: 8 to 24 functions
+    const double pin = 5.0, bore = 5.0 + 0.01 * (trial % 4) - 0.005;
+    std::vector<Affine> f;
+    for (int k = 0; k < facets; ++k) {
+      const double a = 2 * M_PI * (k + 0.5 * (trial % 2)) / facets;
+      const Vec3 n(std::cos(a), std::sin(a), 0);
+      f.push_back({pin, -n});   // inside the pin: pin − n·x
+      f.push_back({-bore, n});  // inside the bore's part: n·x − bore
+    }
+    const Vec3 c = 5 * Vec3(std::cos(u(rng) * M_PI), std::sin(u(rng) * M_PI), u(rng));
+    const Vec3 e = Vec3(0.3, 0.3, 2) * (0.5 + 0.5 * std::abs(u(rng)));
+    const double exact = max_min_affine_reference(f, c - e, c + e);
+    const double bound = max_min_affine(f, c - e, c + e);
+    EXPECT_GE(bound, exact - 1e-12) << "trial " << trial;
+    EXPECT_LE(bound, exact + 1e-9 * (1 + std::abs(exact))) << "trial " << trial;
+  }
+}
+
 TEST(MaxMinAffine, TwoOpposedPlanesGiveHalfTheirGapWhateverTheBox) {
   // s1 = x (inside above x = 0), s2 = 0.3 − x: min ≤ 0.15 everywhere.
   const std::vector<Affine> f{{0.0, Vec3(1, 0, 0)}, {0.3, Vec3(-1, 0, 0)}};

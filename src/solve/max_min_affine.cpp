@@ -1,6 +1,9 @@
 #include "solve/max_min_affine.h"
 
 #include <Eigen/Core>
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -37,66 +40,71 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
   const int m = static_cast<int>(f.size());
   if (m == 0) return std::numeric_limits<double>::infinity();
   if (m == 1) return dual_value(f, Eigen::VectorXd::Ones(1), lo, hi);
-  // Primal: x = lo + y, 0 ≤ y ≤ hi − lo, t = τ − M, maximise τ ≥ 0 subject to
-  // τ − g_k·y ≤ f_k(lo) + M. M makes every right-hand side ≥ 0, so y = 0, τ = 0
-  // is a feasible basis and one phase of the simplex suffices.
+  // The dual, solved by the revised simplex: with y = x − lo in [0, w] and
+  // a_k = f_k(lo), minimise Σ λ_k a_k + Σ ν_d w_d over λ, ν, s ≥ 0 with
+  // Σ λ_k = 1 and ν_d − Σ λ_k g_kd − s_d = 0 (d = 1, 2, 3): four rows, so a
+  // basis is 4 × 4 and an iteration costs O(m), where the primal tableau of
+  // m + 3 rows cost O(m²). Columns: λ_0 … λ_{m−1}, ν_0 … ν_2, s_0 … s_2.
   const Vec3 w = hi - lo;
-  double shift = 0.0;
-  for (const Affine& a : f) shift = std::max(shift, -(a.value + a.slope.dot(lo)));
-  const int rows = m + 3, vars = 4, cols = vars + rows + 1;  // + slacks + rhs
-  // Row-major and flat: each pivot is row operations over contiguous memory
-  // (this solve runs once per cell and model choice, the thickness's inner loop).
-  std::vector<double> T(static_cast<size_t>(rows + 1) * cols, 0.0);
-  const auto at = [&](int i, int j) -> double& { return T[static_cast<size_t>(i) * cols + j]; };
-  std::vector<int> basis(rows), nonzero;
-  nonzero.reserve(static_cast<size_t>(cols));
+  const int n = m + 6;
+  const auto column = [&](int j) -> Eigen::Vector4d {
+    if (j < m) return {1.0, -f[j].slope.x(), -f[j].slope.y(), -f[j].slope.z()};
+    Eigen::Vector4d c = Eigen::Vector4d::Zero();
+    c[1 + (j - m) % 3] = j < m + 3 ? 1.0 : -1.0;
+    return c;
+  };
+  std::vector<double> cost(n, 0.0);
+  double scale = 1.0;
   for (int k = 0; k < m; ++k) {
-    for (int d = 0; d < 3; ++d) at(k, d) = -f[k].slope[d];
-    at(k, 3) = 1.0;
-    at(k, vars + k) = 1.0;
-    at(k, cols - 1) = f[k].value + f[k].slope.dot(lo) + shift;
-    basis[k] = vars + k;
+    cost[k] = f[k].value + f[k].slope.dot(lo);
+    scale = std::max({scale, std::abs(cost[k]), f[k].slope.cwiseAbs().maxCoeff()});
   }
-  for (int d = 0; d < 3; ++d) {
-    at(m + d, d) = 1.0;
-    at(m + d, vars + m + d) = 1.0;
-    at(m + d, cols - 1) = w[d];
-    basis[m + d] = vars + m + d;
+  for (int d = 0; d < 3; ++d) cost[m + d] = w[d], scale = std::max(scale, std::abs(w[d]));
+  const double eps = 1e-12 * scale;
+  // A feasible start without a first phase: all weight on the function with
+  // the least maximum over the box (min_max_affine's choice), each ν_d or s_d
+  // taking up its slope's part.
+  int start = 0;
+  double least = std::numeric_limits<double>::infinity();
+  const Vec3 centre = 0.5 * (lo + hi), half = 0.5 * w;
+  for (int k = 0; k < m; ++k) {
+    const double top = f[k].value + f[k].slope.dot(centre) + half.dot(f[k].slope.cwiseAbs());
+    if (top < least) least = top, start = k;
   }
-  at(rows, 3) = -1.0;  // objective row: maximise τ
-  for (int iter = 0; iter < 50 * (rows + vars); ++iter) {
+  std::array<int, 4> basis{start, 0, 0, 0};
+  for (int d = 0; d < 3; ++d) basis[1 + d] = f[start].slope[d] >= 0 ? m + d : m + 3 + d;
+  const Eigen::Vector4d b(1.0, 0.0, 0.0, 0.0);
+  Eigen::Matrix4d B;
+  Eigen::Vector4d x = Eigen::Vector4d::Zero();
+  std::vector<char> in_basis(n, 0);
+  for (int iter = 0; iter < 50 * n; ++iter) {
+    for (int i = 0; i < 4; ++i) B.col(i) = column(basis[i]);
+    const Eigen::PartialPivLU<Eigen::Matrix4d> lu(B);
+    x = lu.solve(b);
+    Eigen::Vector4d c_b;
+    for (int i = 0; i < 4; ++i) c_b[i] = cost[basis[i]];
+    const Eigen::Vector4d pi = lu.transpose().solve(c_b);
+    std::fill(in_basis.begin(), in_basis.end(), 0);
+    for (int i : basis) in_basis[i] = 1;
     int enter = -1;  // Bland's rule: the first improving column, so no cycling
-    for (int j = 0; j < cols - 1 && enter < 0; ++j)
-      if (at(rows, j) < -1e-12) enter = j;
-    if (enter < 0) break;
+    for (int j = 0; j < n && enter < 0; ++j)
+      if (!in_basis[j] && cost[j] - pi.dot(column(j)) < -eps) enter = j;
+    if (enter < 0) break;  // optimal
+    const Eigen::Vector4d dir = lu.solve(column(enter));
     int leave = -1;
     double best = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < rows; ++i)
-      if (at(i, enter) > 1e-12) {
-        const double ratio = at(i, cols - 1) / at(i, enter);
-        if (ratio < best || (ratio == best && basis[i] < basis[leave])) best = ratio, leave = i;
+    for (int i = 0; i < 4; ++i)
+      if (dir[i] > eps) {
+        const double ratio = std::max(0.0, x[i]) / dir[i];
+        if (ratio < best || (ratio == best && leave >= 0 && basis[i] < basis[leave]))
+          best = ratio, leave = i;
       }
-    if (leave < 0) break;  // unbounded: cannot happen (the box bounds y, each row τ)
-    double* pivot = &at(leave, 0);
-    const double p = pivot[enter];
-    // The pivot row is mostly zeros (slack columns): the other rows change in
-    // its nonzero columns only, the same arithmetic on far fewer entries.
-    nonzero.clear();
-    for (int j = 0; j < cols; ++j) {
-      pivot[j] /= p;
-      if (pivot[j] != 0.0) nonzero.push_back(j);
-    }
-    for (int i = 0; i <= rows; ++i) {
-      double* row = &at(i, 0);
-      const double factor = row[enter];
-      if (i == leave || factor == 0.0) continue;
-      for (const int j : nonzero) row[j] -= factor * pivot[j];
-    }
+    if (leave < 0) break;  // unbounded: cannot happen (the objective is bounded below)
     basis[leave] = enter;
   }
-  // The duals of the m rows are the objective row's entries under their slacks.
-  Eigen::VectorXd lambda(m);
-  for (int k = 0; k < m; ++k) lambda[k] = std::max(0.0, at(rows, vars + k));
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
+  for (int i = 0; i < 4; ++i)
+    if (basis[i] < m) lambda[basis[i]] = std::max(0.0, x[i]);
   const double sum = lambda.sum();
   if (!(sum > 0) || !std::isfinite(sum))
     lambda.setConstant(1.0 / m);
