@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <utility>
 
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
@@ -96,7 +97,7 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
     for (int u = 0; u <= k; ++u)
       for (int v = 0; u + v <= k; ++v) {
         const int corner = u == 0 && v == 0 ? t[0] : u == k ? t[1] : v == k ? t[2] : -1;
-        if (corner >= 0 && corner_seen[corner]++) continue;
+        if (corner >= 0 && std::exchange(corner_seen[corner], char{1})) continue;
         consider(corner >= 0 ? Vec3(p.col(corner))
                              : a + (double(u) / k) * ab + (double(v) / k) * ac);
         if (c.stopped) return finish();
