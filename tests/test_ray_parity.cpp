@@ -42,6 +42,13 @@ RaySide box_side(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   return RaySide::kOutside;
 }
 
+// Where p lies for hollow_box(lo, hi, wall): the box less its open cavity.
+RaySide hollow_box_side(const Vec3& p, const Vec3& lo, const Vec3& hi, double wall) {
+  const RaySide inner = box_side(p, lo + Vec3::Constant(wall), hi - Vec3::Constant(wall));
+  if (inner == RaySide::kInside) return RaySide::kOutside;  // in the void
+  return inner == RaySide::kOnSurface ? inner : box_side(p, lo, hi);
+}
+
 TEST(RayParity, AHollowBoxOnAGridAlignedWithItsCorners) {
   const Vec3 lo(0, 0, 0), hi(4, 4, 4);
   const double wall = 1;
@@ -54,12 +61,7 @@ TEST(RayParity, AHollowBoxOnAGridAlignedWithItsCorners) {
     for (double y : c)
       for (double z : c) {
         const Vec3 p(x, y, z);
-        const RaySide outer = box_side(p, lo, hi),
-                      inner = box_side(p, lo + Vec3::Constant(wall), hi - Vec3::Constant(wall));
-        RaySide want = outer;
-        if (inner == RaySide::kOnSurface) want = RaySide::kOnSurface;
-        if (inner == RaySide::kInside) want = RaySide::kOutside;  // in the void
-        EXPECT_EQ(soup.side(p), want) << x << " " << y << " " << z;
+        EXPECT_EQ(soup.side(p), hollow_box_side(p, lo, hi, wall)) << x << " " << y << " " << z;
         ++checked;
       }
   EXPECT_EQ(checked, 729);
@@ -112,40 +114,44 @@ TEST(RayParity, AFloat32CylinderFarFromTheOrigin) {
   }
 }
 
-// Several soups in one tree: each side is the one its own tree gives. A bolt
-// exported as two bodies face to face (a head on a shank, sharing the plane
-// z = 10) and a hollow block beside the shank, on points aligned with their
-// corners.
+// Several soups in one tree: each side is that soup's alone, by comparisons.
+// A bolt exported as two bodies face to face (a head on a shank, sharing the
+// plane z = 10) and a hollow block beside the shank, on points aligned with
+// their corners.
 TEST(RayParity, OneRayTellsEachSoupItsSide) {
-  const std::vector<Mesh> bodies{shapes::box(Vec3(-1, -1, 0), Vec3(1, 1, 10)),
-                                 shapes::box(Vec3(-2, -2, 10), Vec3(2, 2, 12)),
-                                 shapes::hollow_box(Vec3(-3, -3, 3), Vec3(-1.5, 3, 7), 0.5)};
+  const Vec3 block_lo(-3, -3, 3), block_hi(-1.5, 3, 7);
+  const double wall = 0.5;
+  const std::vector<std::pair<Vec3, Vec3>> boxes{{Vec3(-1, -1, 0), Vec3(1, 1, 10)},
+                                                 {Vec3(-2, -2, 10), Vec3(2, 2, 12)}};
+  const std::vector<Mesh> bodies{shapes::box(boxes[0].first, boxes[0].second),
+                                 shapes::box(boxes[1].first, boxes[1].second),
+                                 shapes::hollow_box(block_lo, block_hi, wall)};
   Triangles3 all;
   std::vector<int> label;
-  std::vector<Soup> own;
-  for (size_t i = 0; i < bodies.size(); ++i) {
+  for (size_t i = 0; i < bodies.size(); ++i)
     for (const auto& t : triangles_of(bodies[i])) all.push_back(t), label.push_back(int(i));
-    own.emplace_back(bodies[i]);
-  }
   const TriangleTree tree(all);
   const Vec3 lo(-3, -3, 0), hi(3, 3, 12);
   const std::vector<double> c{-3.5, -3, -2.5, -2, -1, 0, 1, 2, 3},
       z{-1, 0, 3, 3.5, 5, 6.5, 7, 10, 11, 12, 13};
   std::vector<RaySide> sides(bodies.size());
-  int inside_two = 0;
+  int inside = 0, on_surface = 0;
   for (double x : c)
     for (double y : c)
       for (double h : z) {
         const Vec3 p(x, y, h);
         ray_parity_sides(tree, label, lo, hi, p, sides.data(), sides.size());
-        int inside = 0;
+        const RaySide want[3] = {box_side(p, boxes[0].first, boxes[0].second),
+                                 box_side(p, boxes[1].first, boxes[1].second),
+                                 hollow_box_side(p, block_lo, block_hi, wall)};
         for (size_t i = 0; i < bodies.size(); ++i) {
-          EXPECT_EQ(sides[i], own[i].side(p)) << x << " " << y << " " << h << " soup " << i;
-          inside += sides[i] == RaySide::kInside;
+          EXPECT_EQ(sides[i], want[i]) << x << " " << y << " " << h << " soup " << i;
+          inside += want[i] == RaySide::kInside;
+          on_surface += want[i] == RaySide::kOnSurface;
         }
-        inside_two += inside >= 2;
       }
-  EXPECT_EQ(inside_two, 0);  // the bodies' interiors are disjoint
+  EXPECT_GT(inside, 10);
+  EXPECT_GT(on_surface, 50);
 }
 
 // One given ray: oblique through a face's diagonal (the edge between its two

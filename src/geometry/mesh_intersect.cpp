@@ -42,22 +42,14 @@ struct PreparedMesh::Impl {
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
   CGAL::Bbox_3 box;
-  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // the box again, for the ray tests
   TriangleTree search;    // over faces: nearest points, box listings and ray tests
   bool parity = false;    // closed and has faces: points can be located
   bool oriented = false;  // closed, each edge as often u→v as v→u, outward (volume > 0)
 
   // Meaningful on closed meshes only (parity).
-  CGAL::Bounded_side side(const Point3& p) const {
-    switch (ray_parity_side(search, lo, hi, Vec3(p.x(), p.y(), p.z()))) {
-      case RaySide::kInside:
-        return CGAL::ON_BOUNDED_SIDE;
-      case RaySide::kOnSurface:
-        return CGAL::ON_BOUNDARY;
-      case RaySide::kOutside:
-        break;
-    }
-    return CGAL::ON_UNBOUNDED_SIDE;
+  RaySide side(const Point3& p) const {
+    return ray_parity_side(search, Vec3(box.xmin(), box.ymin(), box.zmin()),
+                           Vec3(box.xmax(), box.ymax(), box.zmax()), Vec3(p.x(), p.y(), p.z()));
   }
 
   // Closest point of the surface to p (faces and degenerate segments).
@@ -176,8 +168,6 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     if (find_root(parent, v) == v) m.shell_vertex.push_back(v);
 
   m.box = CGAL::bbox_3(m.points.begin(), m.points.end());
-  m.lo = Vec3(m.box.xmin(), m.box.ymin(), m.box.zmin());
-  m.hi = Vec3(m.box.xmax(), m.box.ymax(), m.box.zmax());
   if (!m.faces.empty()) {
     std::vector<std::array<Vec3, 3>> corners(m.faces.size());
     for (size_t f = 0; f < m.faces.size(); ++f)
@@ -270,15 +260,15 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
   const double d2 = CGAL::squared_distance(p, q);
   const int side = nearest_face_side(m, v, q, face, d2);
   if (side != 0) return side > 0 ? std::sqrt(d2) : inside_here();
-  return m.side(p) == CGAL::ON_BOUNDED_SIDE ? inside_here() : distance(v);
+  return m.side(p) == RaySide::kInside ? inside_here() : distance(v);
 }
 
 bool PreparedMesh::inside(const Vec3& v) const {
-  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_BOUNDED_SIDE;
+  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == RaySide::kInside;
 }
 
 bool PreparedMesh::outside(const Vec3& v) const {
-  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_UNBOUNDED_SIDE;
+  return impl_->parity && impl_->side(Point3(v.x(), v.y(), v.z())) == RaySide::kOutside;
 }
 
 bool PreparedMesh::oriented() const {
@@ -294,17 +284,19 @@ double PreparedMesh::signed_distance(const Vec3& v, Vec3* nearest, Vec3* face_no
   int side = 0;
   const double d = nearest_on_surface(v, nearest, face_normal, near_face, &side);
   if (!impl_->parity || d == 0) return -d;
-  if (side == 0) side = impl_->side(Point3(v.x(), v.y(), v.z())) == CGAL::ON_BOUNDED_SIDE ? -1 : 1;
+  // The face's side is the solid's only when every face points outward.
+  if (!impl_->oriented || side == 0)
+    side = impl_->side(Point3(v.x(), v.y(), v.z())) == RaySide::kInside ? -1 : 1;
   return side < 0 ? d : -d;
 }
 
 double PreparedMesh::unsigned_distance(const Vec3& v, Vec3* nearest, Vec3* face_normal,
                                        int* near_face, int* side_of_face) const {
-  return nearest_on_surface(v, nearest, face_normal, near_face, side_of_face, true);
+  return nearest_on_surface(v, nearest, face_normal, near_face, side_of_face);
 }
 
 double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face_normal,
-                                        int* near_face, int* side, bool of_face) const {
+                                        int* near_face, int* side) const {
   const Impl& m = *impl_;
   if (side) *side = 0;
   const Point3 p(v.x(), v.y(), v.z());
@@ -317,8 +309,7 @@ double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face
     const TriIter face = m.faces.cbegin() + found.face;
     q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);
-    if (side && of_face) *side = face_side(m, v, q, face, d2);
-    if (side && !of_face && m.parity) *side = nearest_face_side(m, v, q, face, d2);
+    if (side) *side = face_side(m, v, q, face, d2);
     const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
     normal = Vec3(n.x(), n.y(), n.z()).normalized();
   }
@@ -333,6 +324,13 @@ double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face
   if (face_normal) *face_normal = normal;
   if (nearest) *nearest = Vec3(q.x(), q.y(), q.z());
   return std::sqrt(d2);
+}
+
+void PreparedMesh::shell_sides(const Vec3& v, const std::vector<int>& face_shell, RaySide* sides,
+                               size_t shells) const {
+  const CGAL::Bbox_3& b = impl_->box;
+  ray_parity_sides(impl_->search, face_shell, Vec3(b.xmin(), b.ymin(), b.zmin()),
+                   Vec3(b.xmax(), b.ymax(), b.zmax()), v, sides, shells);
 }
 
 void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
@@ -400,7 +398,7 @@ bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
 bool shell_inside(const PreparedMesh::Impl& inner, const PreparedMesh::Impl& outer) {
   if (!outer.parity) return false;
   for (int v : inner.shell_vertex)
-    if (outer.side(inner.points[v]) != CGAL::ON_UNBOUNDED_SIDE) return true;
+    if (outer.side(inner.points[v]) != RaySide::kOutside) return true;
   return false;
 }
 
@@ -412,7 +410,7 @@ void deepest_in(const PreparedMesh::Impl& inner, const PreparedMesh::Impl& outer
     const int v = inner.merged[col];
     if (v < 0) continue;
     const Point3& p = inner.points[v];
-    if (outer.side(p) != CGAL::ON_BOUNDED_SIDE) continue;
+    if (outer.side(p) != RaySide::kInside) continue;
     const Point3 q = outer.closest(p);
     const double d = std::sqrt(CGAL::squared_distance(p, q));
     if (!(d > best.depth)) continue;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/mesh.h"
+#include "geometry/ray_parity.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -55,6 +56,11 @@ class PreparedMesh {
   /// orientation: p lies on that side of every closed shell the face is of.
   double unsigned_distance(const Vec3& p, Vec3* nearest, Vec3* face_normal,
                            int* near_face = nullptr, int* side_of_face = nullptr) const;
+  /// p's side of each of several closed shells made of this mesh's faces (face
+  /// f is of shell face_shell[f], 0 <= face_shell[f] < shells), written to
+  /// sides[0 … shells − 1]: one ray for them all (ray_parity_sides).
+  void shell_sides(const Vec3& p, const std::vector<int>& face_shell, RaySide* sides,
+                   size_t shells) const;
   /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to
   /// `out` in increasing order; past `limit` of them, limit + 1 in no order.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
@@ -96,10 +102,9 @@ class PreparedMesh {
 
  private:
   // The distance and nearest point of signed_distance; with `side`, also the
-  // nearest face's verdict (+1 outside, -1 inside, 0 when it cannot say), or
-  // with `of_face` the side of the face itself (unsigned_distance's).
+  // side of the nearest face p lies on (unsigned_distance's side_of_face).
   double nearest_on_surface(const Vec3& p, Vec3* nearest, Vec3* face_normal, int* near_face,
-                            int* side, bool of_face = false) const;
+                            int* side) const;
   std::unique_ptr<Impl> impl_;
 };
 

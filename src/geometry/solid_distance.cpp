@@ -160,29 +160,24 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   closed_ = std::all_of(prepared.begin(), prepared.end(),
                         [](const PreparedMesh& s) { return s.closed(); });
   shells_ = std::move(prepared);
-  std::vector<std::array<Vec3, 3>> faces;
-  Eigen::AlignedBox3d all;
   // Shells share no vertex position (shells_of), so a face's first corner
   // names its shell.
   std::vector<std::pair<std::array<double, 3>, int>> shell_at;
   shell_box_.resize(shells_.size());
   for (size_t i = 0; i < shells_.size(); ++i)
     for (int f = 0; f < shells_[i].faces(); ++f) {
-      faces.push_back(shells_[i].face(f));
-      shell_of_face_.push_back(static_cast<int>(i));
-      for (const Vec3& v : faces.back()) all.extend(v), shell_box_[i].extend(v);
-      const Vec3& v = faces.back()[0];
-      shell_at.push_back({{v.x(), v.y(), v.z()}, static_cast<int>(i)});
+      const std::array<Vec3, 3> t = shells_[i].face(f);
+      for (const Vec3& v : t) shell_box_[i].extend(v);
+      shell_at.push_back({{t[0].x(), t[0].y(), t[0].z()}, static_cast<int>(i)});
     }
-  shell_faces_ = TriangleTree(faces);
-  shells_lo_ = all.min();
-  shells_hi_ = all.max();
   std::sort(shell_at.begin(), shell_at.end());
   for (int f = 0; f < whole_.faces(); ++f) {
     const Vec3 v = whole_.face(f)[0];
     const std::array<double, 3> key{v.x(), v.y(), v.z()};
     const auto it = std::lower_bound(shell_at.begin(), shell_at.end(), std::pair{key, -1});
-    shell_of_whole_face_.push_back(it != shell_at.end() && it->first == key ? it->second : -1);
+    if (it == shell_at.end() || it->first != key)  // the same triangles, welded alike
+      throw std::logic_error("a face of the whole mesh is in none of its shells");
+    shell_of_whole_face_.push_back(it->second);
   }
   note_ = closed_
               ? std::to_string(shells_.size()) + " shells whose surfaces meet: taken as their union"
@@ -219,19 +214,19 @@ namespace {
 
 // Each shell's side of p, in `sides` (the stack's for a few shells).
 template <class Use>
-auto with_shell_sides(const TriangleTree& tree, const std::vector<int>& label, const Vec3& lo,
-                      const Vec3& hi, const Vec3& p, size_t shells, const Use& use) {
+auto with_shell_sides(const PreparedMesh& whole, const std::vector<int>& face_shell, const Vec3& p,
+                      size_t shells, const Use& use) {
   std::array<RaySide, 16> few;
   std::vector<RaySide> many(shells > few.size() ? shells : 0);
   RaySide* sides = shells > few.size() ? many.data() : few.data();
-  ray_parity_sides(tree, label, lo, hi, p, sides, shells);
+  whole.shell_sides(p, face_shell, sides, shells);
   return use(sides);
 }
 
 }  // namespace
 
 bool SolidDistance::inside_some_shell(const Vec3& p) const {
-  return with_shell_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, shells_.size(),
+  return with_shell_sides(whole_, shell_of_whole_face_, p, shells_.size(),
                           [&](const RaySide* sides) {
                             for (size_t i = 0; i < shells_.size(); ++i)
                               if (shells_[i].closed() && sides[i] == RaySide::kInside) return true;
@@ -254,7 +249,7 @@ bool SolidDistance::inside_union(const Vec3& p, int face, int side) const {
 }
 
 bool SolidDistance::outside_every_shell(const Vec3& p) const {
-  return with_shell_sides(shell_faces_, shell_of_face_, shells_lo_, shells_hi_, p, shells_.size(),
+  return with_shell_sides(whole_, shell_of_whole_face_, p, shells_.size(),
                           [&](const RaySide* sides) {
                             for (size_t i = 0; i < shells_.size(); ++i)
                               if (!shells_[i].closed() || sides[i] != RaySide::kOutside)

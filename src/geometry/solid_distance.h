@@ -12,7 +12,6 @@
 
 #include "geometry/mesh.h"
 #include "geometry/mesh_intersect.h"
-#include "geometry/triangle_tree.h"
 #include "geometry/types.h"
 #include "tolerances.h"
 
@@ -158,13 +157,10 @@ class SolidDistance {
 
   PreparedMesh whole_;
   std::vector<PreparedMesh> shells_;  ///< union mode only: one per shell
-  // Union mode: the shells' faces in one tree, each labelled with its shell,
-  // and their box.
-  TriangleTree shell_faces_;
-  std::vector<int> shell_of_face_;
-  Vec3 shells_lo_ = Vec3::Zero(), shells_hi_ = Vec3::Zero();
+  // Union mode: the shell each face of whole_ is of (whole_'s faces are the
+  // shells' faces, so its tree serves their ray tests), and each shell's box.
+  std::vector<int> shell_of_whole_face_;
   std::vector<Eigen::AlignedBox3d> shell_box_;
-  std::vector<int> shell_of_whole_face_;  ///< the shell each face of whole_ is of
   bool closed_ = false, exact_ = true, oriented_ = false;
   std::string note_;
   Eigen::AlignedBox3d box_;
