@@ -1,12 +1,12 @@
-// face_axes: a rotated block's axes are its edges, a washer's first axis is its
-// normal, and the result is always a rotation.
+// The face axes (PreparedMesh::face_axes): a rotated block's axes are its
+// edges, a washer's first axis is its normal, and the result is always a rotation.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <random>
 
 #include "corpus/cad_shapes.h"
-#include "geometry/face_axes.h"
+#include "geometry/mesh_intersect.h"
 #include "random_rotation.h"
 
 namespace pd {
@@ -30,7 +30,7 @@ TEST(FaceAxes, ARotatedBlocksAxesAreItsEdges) {
   for (int trial = 0; trial < 20; ++trial) {
     const Eigen::Matrix3d turn = random_rotation(rng);
     const Mesh block = rotated(shapes::box({0, 0, 0}, {30, 20, 10}), turn, Vec3(21000, -4000, 900));
-    const Eigen::Matrix3d r = face_axes(PreparedMesh(block));
+    const Eigen::Matrix3d r = PreparedMesh(block).face_axes();
     expect_rotation(r);
     // The largest faces (30 × 20) first, then the 30 × 10 ones.
     EXPECT_NEAR(std::abs(r.col(0).dot(turn.col(2))), 1.0, 1e-9) << "trial " << trial;
@@ -44,12 +44,12 @@ TEST(FaceAxes, AWashersFirstAxisIsItsNormalAndAPinsAxisIsOneOfThem) {
   const Eigen::Matrix3d turn = random_rotation(rng);
   const Mesh washer =
       rotated(shapes::revolution({{5, 0}, {8, 0}, {8, 1.5}, {5, 1.5}}, 64), turn, Vec3::Zero());
-  EXPECT_NEAR(std::abs(face_axes(PreparedMesh(washer)).col(0).dot(turn.col(2))), 1.0, 1e-9);
+  EXPECT_NEAR(std::abs(PreparedMesh(washer).face_axes().col(0).dot(turn.col(2))), 1.0, 1e-9);
   // A pin: its end caps or its facets come first, and either way its axis is
   // one of the three (its facets run along the boxes' sides).
   const Mesh pin =
       rotated(shapes::revolution({{0, 0}, {3, 0}, {3, 40}, {0, 40}}, 64), turn, Vec3::Zero());
-  const Eigen::Matrix3d r = face_axes(PreparedMesh(pin));
+  const Eigen::Matrix3d r = PreparedMesh(pin).face_axes();
   expect_rotation(r);
   EXPECT_NEAR((r.transpose() * turn.col(2)).cwiseAbs().maxCoeff(), 1.0, 1e-9);
 }
@@ -63,7 +63,7 @@ TEST(FaceAxes, IsARotationForAnyTriangleSoup) {
     m.triangles.resize(3, 10);
     for (long k = 0; k < 30; ++k) m.vertices.col(k) = Vec3(u(rng), u(rng), u(rng));
     for (long t = 0; t < 10; ++t) m.triangles.col(t) = Eigen::Vector3i(3 * t, 3 * t + 1, 3 * t + 2);
-    expect_rotation(face_axes(PreparedMesh(m)));
+    expect_rotation(PreparedMesh(m).face_axes());
   }
 }
 

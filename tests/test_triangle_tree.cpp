@@ -1,8 +1,9 @@
 // The triangle tree against a scan of every triangle: nearest points on random
 // triangle soups (slivers, far from the origin) and a CAD-like cylinder, with
-// and without a starting face, and the triangles whose boxes meet a box.
+// and without a starting face, and the triangles that meet a box.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <random>
 
@@ -70,7 +71,28 @@ TEST(TriangleTree, FindsTheFacetOfACylinderNearAPointOnIt) {
   }
 }
 
-TEST(TriangleTree, ListsEveryTriangleWhoseBoxMeetsABoxInOrder) {
+// Whether triangle t meets the closed box [lo, hi], by separating axes (the
+// box's three, the triangle's normal, and the nine edge crossings).
+bool triangle_meets_box(const std::array<Vec3, 3>& t, const Vec3& lo, const Vec3& hi) {
+  const Vec3 c = (lo + hi) / 2, e = (hi - lo) / 2;
+  const std::array<Vec3, 3> v{t[0] - c, t[1] - c, t[2] - c};
+  const std::array<Vec3, 3> edge{v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+  std::vector<Vec3> axes{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), edge[0].cross(edge[1])};
+  for (const Vec3& g : edge)
+    for (int k = 0; k < 3; ++k) axes.push_back(g.cross(Vec3::Unit(k)));
+  for (const Vec3& u : axes) {
+    const double r = e.dot(u.cwiseAbs());
+    const double lo_t = std::min({v[0].dot(u), v[1].dot(u), v[2].dot(u)}),
+                 hi_t = std::max({v[0].dot(u), v[1].dot(u), v[2].dot(u)});
+    if (lo_t > r || hi_t < -r) return false;
+  }
+  return true;
+}
+
+// Every triangle that meets the box is listed, in order, and none whose box
+// does not meet it; a soup of random slivers (whose widest face sets an
+// oblique frame) and the same soup turned, far from the origin.
+TEST(TriangleTree, ListsEveryTriangleThatMeetsABoxInOrder) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
   Triangles3 t;
@@ -79,22 +101,39 @@ TEST(TriangleTree, ListsEveryTriangleWhoseBoxMeetsABoxInOrder) {
     t.push_back({a, a + 3 * Vec3(u(rng), u(rng), u(rng)), a + Vec3(u(rng), u(rng), u(rng))});
   }
   t.push_back({Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(3, 1, 0)});  // touches the box below at x = 2
-  const TriangleTree tree(t);
-  for (int k = 0; k < 300; ++k) {
-    Vec3 lo = 10 * Vec3(u(rng), u(rng), u(rng)),
-         hi = lo + 4 * Vec3(u(rng), u(rng), u(rng)).cwiseAbs();
-    if (k == 0) lo = Vec3(0, 0, -1), hi = Vec3(2, 1, 1);
-    std::vector<int> want, got{-7};  // appended after what is there
-    for (size_t i = 0; i < t.size(); ++i) {
-      const Vec3 a = t[i][0].cwiseMin(t[i][1]).cwiseMin(t[i][2]),
-                 b = t[i][0].cwiseMax(t[i][1]).cwiseMax(t[i][2]);
-      if ((a.array() <= hi.array()).all() && (lo.array() <= b.array()).all())
-        want.push_back(static_cast<int>(i));
+  int checked_touch = 0;
+  for (const Vec3& offset : {Vec3(0, 0, 0), Vec3(3.1e4, -2.2e4, 7.5e3)}) {
+    Triangles3 moved = t;
+    for (auto& tri : moved)
+      for (Vec3& v : tri) v += offset;
+    const TriangleTree tree(moved);
+    EXPECT_TRUE(tree.rotated());  // the widest random face is oblique
+    for (int k = 0; k < 300; ++k) {
+      Vec3 lo = 10 * Vec3(u(rng), u(rng), u(rng)),
+           hi = lo + 4 * Vec3(u(rng), u(rng), u(rng)).cwiseAbs();
+      if (k == 0) lo = Vec3(0, 0, -1), hi = Vec3(2, 1, 1);
+      lo += offset, hi += offset;
+      std::vector<int> got{-7};  // appended after what is there
+      tree.in_box(lo, hi, got);
+      ASSERT_EQ(got.front(), -7);
+      got.erase(got.begin());
+      EXPECT_TRUE(std::is_sorted(got.begin(), got.end()));
+      for (size_t i = 0; i < moved.size(); ++i) {
+        const auto& m = moved[i];
+        const Vec3 a = m[0].cwiseMin(m[1]).cwiseMin(m[2]), b = m[0].cwiseMax(m[1]).cwiseMax(m[2]);
+        const bool listed = std::binary_search(got.begin(), got.end(), static_cast<int>(i));
+        const bool box_meets = (a.array() <= hi.array()).all() && (lo.array() <= b.array()).all();
+        if (!box_meets) {
+          EXPECT_FALSE(listed) << "box " << k << " triangle " << i;
+        }
+        if (triangle_meets_box(m, lo, hi)) {
+          EXPECT_TRUE(listed) << "box " << k << " triangle " << i;
+        }
+        if (k == 0 && i + 1 == moved.size() && offset.isZero()) checked_touch += listed;
+      }
     }
-    want.insert(want.begin(), -7);
-    tree.in_box(lo, hi, got);
-    EXPECT_EQ(got, want) << "box " << k;
   }
+  EXPECT_EQ(checked_touch, 1);
 }
 
 // A segment through a point inside a triangle must reach that triangle,
@@ -109,28 +148,67 @@ TEST(TriangleTree, ASegmentVisitsEveryTriangleItPierces) {
     const Vec3 a = o + 10 * Vec3(u(rng), u(rng), u(rng));
     t.push_back({a, a + 2 * Vec3(u(rng), u(rng), u(rng)), a + Vec3(u(rng), u(rng), u(rng))});
   }
-  const TriangleTree tree(t);
-  for (int k = 0; k < 600; ++k) {
-    const int i = static_cast<int>(rng() % t.size());
-    const double b1 = w(rng) / 2, b2 = w(rng) / 2;
-    const Vec3 x = t[i][0] + b1 * (t[i][1] - t[i][0]) + b2 * (t[i][2] - t[i][0]);
-    Vec3 d = Vec3(u(rng), u(rng), u(rng)).normalized();
-    if (k % 2) d = Vec3::Unit(k % 3);  // along an axis
-    bool seen = false;
+  // As it is, the widest face sets an oblique frame; with a wide box of the
+  // world's axes added, the boxes are the world's and axis segments are met
+  // by comparisons.
+  for (const bool square : {false, true}) {
+    if (square) {
+      const Mesh b = shapes::box(o + Vec3(-60, -60, 40), o + Vec3(60, 60, 80));
+      for (long f = 0; f < b.triangles.cols(); ++f)
+        t.push_back({b.vertices.col(b.triangles(0, f)), b.vertices.col(b.triangles(1, f)),
+                     b.vertices.col(b.triangles(2, f))});
+    }
+    const TriangleTree tree(t);
+    EXPECT_EQ(tree.rotated(), !square);
+    for (int k = 0; k < 600; ++k) {
+      const int i = static_cast<int>(rng() % 600);
+      const double b1 = w(rng) / 2, b2 = w(rng) / 2;
+      const Vec3 x = t[i][0] + b1 * (t[i][1] - t[i][0]) + b2 * (t[i][2] - t[i][0]);
+      Vec3 d = Vec3(u(rng), u(rng), u(rng)).normalized();
+      if (k % 2) d = Vec3::Unit(k % 3);  // along an axis
+      bool seen = false;
+      int visits = 0;
+      tree.along_segment(x - 30 * d, x + 3 * w(rng) * d, [&](int id, const std::array<Vec3, 3>& c) {
+        seen = seen || id == i;
+        EXPECT_EQ(c, t[id]);
+        ++visits;
+        return false;
+      });
+      EXPECT_TRUE(seen) << k;
+      EXPECT_LT(visits, 600) << k;  // the tree prunes
+    }
     int visits = 0;
-    tree.along_segment(x - 30 * d, x + 3 * w(rng) * d, [&](int id, const std::array<Vec3, 3>& c) {
-      seen = seen || id == i;
-      EXPECT_EQ(c, t[id]);
-      ++visits;
-      return false;
-    });
-    EXPECT_TRUE(seen) << k;
-    EXPECT_LT(visits, 600) << k;  // the tree prunes
+    EXPECT_TRUE(tree.along_segment(o - Vec3::Constant(20), o + Vec3::Constant(20),
+                                   [&](int, const std::array<Vec3, 3>&) { return ++visits == 3; }));
+    EXPECT_EQ(visits, 3);
   }
-  int visits = 0;
-  EXPECT_TRUE(tree.along_segment(o - Vec3::Constant(20), o + Vec3::Constant(20),
-                                 [&](int, const std::array<Vec3, 3>&) { return ++visits == 3; }));
-  EXPECT_EQ(visits, 3);
+}
+
+// A drilled board, its faces long slivers as CAD exporters write them, turned
+// askew far from the origin: the tree takes the board's own axes, and its
+// nearest points are a scan's.
+TEST(TriangleTree, TakesTheFrameOfAPartPlacedAskew) {
+  const Mesh plate = shapes::drilled_board(3, 1, 12.0, 1.6, 2.0, 48);
+  const Eigen::Matrix3d r =
+      (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(-0.4, Vec3::UnitX()))
+          .toRotationMatrix();
+  const Vec3 far(3.6e4, 4.3e3, -2.7e4);
+  Triangles3 flat, askew;
+  for (long f = 0; f < plate.triangles.cols(); ++f) {
+    std::array<Vec3, 3> a, b;
+    for (int k = 0; k < 3; ++k) {
+      a[k] = plate.vertices.col(plate.triangles(k, f));
+      b[k] = r * a[k] + far;
+    }
+    flat.push_back(a), askew.push_back(b);
+  }
+  EXPECT_FALSE(TriangleTree(flat).rotated());
+  const TriangleTree tree(askew);
+  ASSERT_TRUE(tree.rotated());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> x(-2, 38), y(-2, 14), z(-1, 3);
+  for (int k = 0; k < 2000; ++k)
+    expect_nearest(tree, askew, r * Vec3(x(rng), y(rng), z(rng)) + far, k % 3 ? -1 : 0);
 }
 
 TEST(TriangleTree, StopsListingPastTheLimit) {

@@ -1,5 +1,6 @@
 #include "geometry/face_axes.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,11 +9,10 @@
 
 namespace pd {
 
-Eigen::Matrix3d face_axes(const PreparedMesh& mesh) {
+Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles) {
   // Area per rounded normal (a map, so ties break the same way on every run).
   std::map<std::array<long, 3>, std::pair<Vec3, double>> groups;
-  for (int f = 0; f < mesh.faces(); ++f) {
-    const auto t = mesh.face(f);
+  for (const auto& t : triangles) {
     const Vec3 c = (t[1] - t[0]).cross(t[2] - t[0]);
     const double area = 0.5 * c.norm();
     if (!(area > 0)) continue;

@@ -8,16 +8,18 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
+#include <array>
+#include <vector>
 
-#include "geometry/mesh_intersect.h"
+#include "geometry/types.h"
 
 namespace pd {
 
 /// A rotation (orthonormal columns, determinant +1). Faces are grouped by
 /// their normal rounded to about 0.06°; the second axis is the largest group
 /// within 12° of square to the first, else any direction square to it. The
-/// identity when the mesh has no face of positive area.
-Eigen::Matrix3d face_axes(const PreparedMesh& mesh);
+/// identity when no triangle has a positive area. A part's are kept by its
+/// TriangleTree (PreparedMesh::face_axes), whose boxes are taken in them.
+Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles);
 
 }  // namespace pd

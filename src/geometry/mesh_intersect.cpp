@@ -348,6 +348,10 @@ int PreparedMesh::faces() const {
   return static_cast<int>(impl_->faces.size());
 }
 
+Eigen::Matrix3d PreparedMesh::face_axes() const {
+  return impl_->search.axes();
+}
+
 namespace {
 
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;

@@ -61,13 +61,16 @@ class PreparedMesh {
   /// sides[0 … shells − 1]: one ray for them all (ray_parity_sides).
   void shell_sides(const Vec3& p, const std::vector<int>& face_shell, RaySide* sides,
                    size_t shells) const;
-  /// The (non-degenerate) faces whose boxes meet the box [lo, hi], appended to
-  /// `out` in increasing order; past `limit` of them, limit + 1 in no order.
+  /// Every (non-degenerate) face that meets the box [lo, hi], and perhaps some
+  /// others whose boxes meet it (TriangleTree::in_box), appended to `out` in
+  /// increasing order; past `limit` of them, limit + 1 in no order.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
                     size_t limit = std::numeric_limits<size_t>::max()) const;
   /// Corners of face i (0 <= i < faces()), in the mesh's order.
   std::array<Vec3, 3> face(int i) const;
   int faces() const;
+  /// The faces' axes (geometry/face_axes.h); the identity without faces.
+  Eigen::Matrix3d face_axes() const;
   /// Distance from p to the surface (the nearest triangle), scene units.
   double distance(const Vec3& p) const;
   /// The point of the surface nearest to p.

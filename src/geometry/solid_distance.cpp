@@ -11,7 +11,6 @@
 #include <stdexcept>
 
 #include "geometry/convexity.h"
-#include "geometry/face_axes.h"
 #include "geometry/ray_parity.h"
 #include "geometry/same_position.h"
 #include "geometry/triangle_tree.h"
@@ -135,7 +134,7 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) box_.extend(Vec3(mesh.vertices.col(mesh.triangles(k, t))));
   noise_ = coordinate_noise(mesh.vertices);
-  axes_ = face_axes(whole_);
+  axes_ = whole_.face_axes();
   for (int f = 0; f < whole_.faces(); ++f)
     for (const Vec3& v : whole_.face(f)) box_in_axes_.extend(Vec3(axes_.transpose() * v));
   hair_ = 1e-9 * std::max(box_.diagonal().norm(), box_.max().cwiseAbs().maxCoeff());

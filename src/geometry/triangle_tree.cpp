@@ -1,7 +1,12 @@
 #include "geometry/triangle_tree.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
+
+#include "geometry/face_axes.h"
 
 namespace pd {
 
@@ -64,10 +69,11 @@ constexpr int kLeafSize = 4;
 
 // Scalar loops rather than Eigen expressions: these run at every node of every
 // query, and the sanitizer builds (-O1) do not flatten the expression templates.
-double box_squared_distance(const Vec3& lo, const Vec3& hi, const Vec3& p) {
+// The box is widened by `pad` on every side.
+double box_squared_distance(const Vec3& lo, const Vec3& hi, const Vec3& p, double pad) {
   double d2 = 0.0;
   for (int k = 0; k < 3; ++k) {
-    const double below = lo[k] - p[k], above = p[k] - hi[k];
+    const double below = lo[k] - pad - p[k], above = p[k] - hi[k] - pad;
     const double d = below > 0 ? below : above > 0 ? above : 0.0;
     d2 += d * d;
   }
@@ -80,25 +86,49 @@ bool boxes_meet(const Vec3& lo, const Vec3& hi, const Vec3& a, const Vec3& b) {
   return true;
 }
 
-// Whether the segment a + t·d, t in [0, 1], may meet the box [lo, hi]: the
-// slab test, with the parameter interval padded so that rounding never drops
-// a box the segment meets. An axis the segment does not move along compares
-// its coordinate exactly (the axis-aligned rays of the inside tests).
-bool segment_may_meet_box(const Vec3& a, const Vec3& d, const Vec3& lo, const Vec3& hi) {
-  constexpr double kPad = 1e-9;  // in t: far above the division's rounding
-  double t0 = -kPad, t1 = 1 + kPad;
-  for (int k = 0; k < 3; ++k) {
-    if (d[k] == 0) {
-      if (a[k] < lo[k] || a[k] > hi[k]) return false;
-      continue;
-    }
-    double enter = (lo[k] - a[k]) / d[k], leave = (hi[k] - a[k]) / d[k];
-    if (enter > leave) std::swap(enter, leave);
-    t0 = std::max(t0, enter - kPad);
-    t1 = std::min(t1, leave + kPad);
-    if (t0 > t1) return false;
+// Whether the segment a + t·d, t in [0, 1], may meet a box widened by `pad`
+// on every side: the slab test, with the parameter interval padded so that
+// rounding (of the reciprocals, taken once per segment) never drops a box the
+// segment meets. An axis the segment does not move along compares its
+// coordinate exactly (the axis-aligned rays of the inside tests).
+class SegmentSlabs {
+ public:
+  SegmentSlabs(const Vec3& a, const Vec3& d, double pad) : a_(a), pad_(pad) {
+    for (int k = 0; k < 3; ++k) inv_[k] = d[k] == 0 ? 0.0 : 1.0 / d[k];
   }
-  return true;
+  bool meet(const Vec3& lo, const Vec3& hi) const {
+    constexpr double kPad = 1e-9;  // in t: far above the reciprocal's rounding
+    double t0 = -kPad, t1 = 1 + kPad;
+    for (int k = 0; k < 3; ++k) {
+      const double below = lo[k] - pad_ - a_[k], above = hi[k] + pad_ - a_[k];
+      if (inv_[k] == 0) {
+        if (below > 0 || above < 0) return false;
+        continue;
+      }
+      const double enter = (inv_[k] > 0 ? below : above) * inv_[k],
+                   leave = (inv_[k] > 0 ? above : below) * inv_[k];
+      t0 = std::max(t0, enter - kPad);
+      t1 = std::min(t1, leave + kPad);
+      if (t0 > t1) return false;
+    }
+    return true;
+  }
+
+ private:
+  Vec3 a_;
+  Vec3 inv_;  ///< 1/d per axis, 0 where d is
+  double pad_;
+};
+
+// Whether the axes are the world's, in some order and sense: then the boxes
+// are the world's, so an unrotated part is searched exactly as before and
+// its axis rays are met by comparisons.
+bool worlds_axes(const Eigen::Matrix3d& axes) {
+  return ((axes.cwiseAbs().array() > 1 - 1e-9).colwise().any()).all();
+}
+
+std::array<Vec3, 2> box_of(const std::array<Vec3, 3>& t) {
+  return {t[0].cwiseMin(t[1]).cwiseMin(t[2]), t[0].cwiseMax(t[1]).cwiseMax(t[2])};
 }
 
 }  // namespace
@@ -107,18 +137,35 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
     : triangles_(triangles), id_(triangles.size()), slot_(triangles.size()) {
   if (triangles.empty()) return;
   std::iota(id_.begin(), id_.end(), 0);
+  axes_ = face_axes(triangles);
+  rotated_ = !worlds_axes(axes_);
+  if (rotated_) frame_ = axes_.transpose();
+  for (const auto& t : triangles)
+    for (const Vec3& v : t) extent_ = std::max(extent_, v.cwiseAbs().maxCoeff());
+  std::vector<std::array<Vec3, 3>> framed(triangles);
+  if (rotated_)
+    for (auto& t : framed)
+      for (Vec3& v : t) v = frame_ * v;
   std::vector<Vec3> centroids(triangles.size());
   for (size_t i = 0; i < triangles.size(); ++i)
-    centroids[i] = (triangles[i][0] + triangles[i][1] + triangles[i][2]) / 3;
+    centroids[i] = (framed[i][0] + framed[i][1] + framed[i][2]) / 3;
   nodes_.reserve(triangles.size() / kLeafSize + 2);
-  root_ = build(0, static_cast<int>(triangles.size()), centroids);
+  root_ = build(0, static_cast<int>(triangles.size()), framed, centroids);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
   boxes_.resize(triangles_.size());
-  for (size_t i = 0; i < triangles_.size(); ++i) {
-    const auto& t = triangles_[i];
-    boxes_[i] = {t[0].cwiseMin(t[1]).cwiseMin(t[2]), t[0].cwiseMax(t[1]).cwiseMax(t[2])};
+  for (size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = box_of(framed[id_[i]]);
+  if (rotated_) {
+    world_boxes_.resize(triangles_.size());
+    for (size_t i = 0; i < triangles_.size(); ++i) world_boxes_[i] = box_of(triangles_[i]);
   }
+}
+
+// A point's frame coordinates are within a few roundings of its coordinates'
+// size of the true ones (the frame is orthonormal to rounding), as are the
+// boxes' corners: this bounds both, with room to spare.
+double TriangleTree::pad(double reach) const {
+  return rotated_ ? 32 * std::numeric_limits<double>::epsilon() * (extent_ + reach) : 0.0;
 }
 
 // Depth first, the first child first; a subtree is entered when `meets`
@@ -149,18 +196,43 @@ bool TriangleTree::visit_boxes(const Meets& meets, const Visit& visit) const {
 void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
                           size_t limit) const {
   const size_t before = out.size();
-  const bool past_limit =
-      visit_boxes([&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); },
-                  [&](int slot) {
-                    out.push_back(id_[slot]);
-                    return out.size() - before > limit;
-                  });
+  const auto add = [&](int slot) {
+    out.push_back(id_[slot]);
+    return out.size() - before > limit;
+  };
+  bool past_limit;
+  if (!rotated_) {
+    past_limit =
+        visit_boxes([&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); }, add);
+  } else {
+    // The query box's box in the frame holds every point of it, so every
+    // triangle that meets it; the world boxes then drop some that cannot.
+    Vec3 flo = Vec3::Constant(INFINITY), fhi = Vec3::Constant(-INFINITY);
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 c =
+          frame_ * Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+      flo = flo.cwiseMin(c), fhi = fhi.cwiseMax(c);
+    }
+    const double w = pad(std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()));
+    flo.array() -= w, fhi.array() += w;
+    past_limit = visit_boxes(
+        [&](const Vec3& a, const Vec3& b) { return boxes_meet(flo, fhi, a, b); },
+        [&](int slot) {
+          return boxes_meet(lo, hi, world_boxes_[slot][0], world_boxes_[slot][1]) && add(slot);
+        });
+  }
   if (!past_limit) std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
 }
 
 bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const {
-  const Vec3 d = b - a;
   const auto call = [&](int slot) { return visit(id_[slot], triangles_[slot]); };
+  if (rotated_) {  // the segment in the frame, the boxes widened for its rounding
+    const Vec3 fa = frame_ * a;
+    const SegmentSlabs slabs(fa, frame_ * b - fa,
+                             pad(std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff())));
+    return visit_boxes([&](const Vec3& lo, const Vec3& hi) { return slabs.meet(lo, hi); }, call);
+  }
+  const Vec3 d = b - a;
   // Along an axis (the inside tests' rays), boxes are met by comparisons.
   const int moving = (d.x() != 0) + (d.y() != 0) + (d.z() != 0);
   if (moving == 1) {
@@ -173,17 +245,19 @@ bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisi
         },
         call);
   }
-  return visit_boxes(
-      [&](const Vec3& lo, const Vec3& hi) { return segment_may_meet_box(a, d, lo, hi); }, call);
+  const SegmentSlabs slabs(a, d, 0.0);
+  return visit_boxes([&](const Vec3& lo, const Vec3& hi) { return slabs.meet(lo, hi); }, call);
 }
 
-// Median split of the centroids along their longest extent.
-TriangleTree::Subtree TriangleTree::build(int begin, int end, const std::vector<Vec3>& centroids) {
+// Median split of the centroids along their longest extent, in the frame.
+TriangleTree::Subtree TriangleTree::build(int begin, int end,
+                                          const std::vector<std::array<Vec3, 3>>& framed,
+                                          const std::vector<Vec3>& centroids) {
   Subtree s;
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   Vec3 clo = lo, chi = hi;
   for (int i = begin; i < end; ++i) {
-    for (const Vec3& v : triangles_[id_[i]]) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    for (const Vec3& v : framed[id_[i]]) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     clo = clo.cwiseMin(centroids[id_[i]]), chi = chi.cwiseMax(centroids[id_[i]]);
   }
   s.lo = lo;
@@ -200,7 +274,8 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end, const std::vector<
                    [&](int x, int y) { return centroids[x][axis] < centroids[y][axis]; });
   s.index = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
-  const Subtree first = build(begin, mid, centroids), second = build(mid, end, centroids);
+  const Subtree first = build(begin, mid, framed, centroids),
+                second = build(mid, end, framed, centroids);
   nodes_[s.index].child[0] = first;
   nodes_[s.index].child[1] = second;
   return s;
@@ -210,6 +285,8 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
   Nearest best;
   if (triangles_.empty()) return best;
   const P3 query = p3(p);
+  const Vec3 f = to_frame(p);  // for the boxes
+  const double w = pad(p.cwiseAbs().maxCoeff());
   const auto test = [&](int slot) {
     const auto& t = triangles_[slot];
     const P3 q = closest(query, p3(t[0]), p3(t[1]), p3(t[2]));
@@ -227,7 +304,7 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
   };
   std::array<Open, 2 * 32 + 2> stack;
   int size = 0;
-  stack[size++] = {&root_, box_squared_distance(root_.lo, root_.hi, p)};
+  stack[size++] = {&root_, box_squared_distance(root_.lo, root_.hi, f, w)};
   while (size > 0) {
     const Open open = stack[--size];
     if (!(open.d2 < best.squared_distance)) continue;
@@ -237,8 +314,8 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
       continue;
     }
     const Subtree &left = nodes_[t.index].child[0], &right = nodes_[t.index].child[1];
-    const double dl = box_squared_distance(left.lo, left.hi, p),
-                 dr = box_squared_distance(right.lo, right.hi, p);
+    const double dl = box_squared_distance(left.lo, left.hi, f, w),
+                 dr = box_squared_distance(right.lo, right.hi, f, w);
     // Pushed last is searched first.
     if (dl < dr) {
       if (dr < best.squared_distance) stack[size++] = {&right, dr};

@@ -35,8 +35,9 @@ class TriangleTree {
   /// The nearest point of every triangle. `start`, when ≥ 0, is a face tried
   /// first (a nearby query's answer): the same result, found sooner.
   Nearest nearest(const Vec3& p, int start = -1) const;
-  /// The triangles whose boxes meet the box [lo, hi] (closed), appended to
-  /// `out` in increasing index order. Past `limit` of them the search stops
+  /// Every triangle that meets the box [lo, hi] (closed), and perhaps some
+  /// others whose boxes meet it (none whose box does not), appended to `out`
+  /// in increasing index order. Past `limit` of them the search stops
   /// with limit + 1 appended, in no order (a caller that gives up beyond a
   /// count need not list them all).
   void in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
@@ -48,10 +49,14 @@ class TriangleTree {
   using SegmentVisit = std::function<bool(int, const std::array<Vec3, 3>&)>;
   bool along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const;
   bool empty() const { return triangles_.empty(); }
+  /// The triangles' face axes (geometry/face_axes.h), columns.
+  const Eigen::Matrix3d& axes() const { return axes_; }
+  /// Whether the boxes are taken in those axes: they are not the world's.
+  bool rotated() const { return rotated_; }
 
  private:
   // A subtree: an inner node (count 0) or a leaf's triangles [index, index +
-  // count) in tree order, with its box.
+  // count) in tree order, with its box (in the frame).
   struct Subtree {
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
     int index = 0;
@@ -63,7 +68,8 @@ class TriangleTree {
   struct Node {
     Subtree child[2];
   };
-  Subtree build(int begin, int end, const std::vector<Vec3>& centroids);
+  Subtree build(int begin, int end, const std::vector<std::array<Vec3, 3>>& framed,
+                const std::vector<Vec3>& centroids);
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
   std::vector<std::array<Vec3, 3>> triangles_;  ///< in tree order
@@ -71,7 +77,18 @@ class TriangleTree {
   std::vector<int> slot_;                       ///< caller's index → tree order
   std::vector<Node> nodes_;
   Subtree root_;
-  std::vector<std::array<Vec3, 2>> boxes_;  ///< each triangle's, in tree order
+  std::vector<std::array<Vec3, 2>> boxes_;  ///< each triangle's in the frame, in tree order
+  /// Each triangle's world box, in tree order (rotated trees only: in_box's answer).
+  std::vector<std::array<Vec3, 2>> world_boxes_;
+  Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
+  /// Takes world coordinates to the boxes': the axes' transpose, else the identity.
+  Eigen::Matrix3d frame_ = Eigen::Matrix3d::Identity();
+  bool rotated_ = false;
+  double extent_ = 0.0;  ///< the largest absolute world coordinate of a corner
+  Vec3 to_frame(const Vec3& p) const { return rotated_ ? Vec3(frame_ * p) : p; }
+  /// How far rounding may move a point or a box taken into the frame, for a
+  /// query about points with coordinates up to `reach`: boxes are widened by it.
+  double pad(double reach) const;
 };
 
 }  // namespace pd
