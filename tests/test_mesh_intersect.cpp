@@ -7,6 +7,7 @@
 
 #include "corpus/cad_shapes.h"
 #include "geometry/mesh_intersect.h"
+#include "random_rotation.h"
 #include "solve/exact.h"
 
 using namespace pd;
@@ -69,6 +70,29 @@ TEST(MeshIntersect, BoltInHoleClearanceExactFitInterference) {
       EXPECT_EQ(deepest_vertex_depth(clear.plate, clear.bolt).depth, 0.0);
       EXPECT_EQ(deepest_vertex_depth(exact.plate, exact.bolt).depth, 0.0);
     }
+  }
+}
+
+// Turned askew and placed far away, as assemblies place parts: the surfaces'
+// pairing then runs in the smaller part's face axes, and must still find a
+// press fit's crossing and a pin pushed 0.01 into the plate, and nothing for a
+// clearance fit or a pin held 0.01 above it.
+TEST(MeshIntersect, SurfacesOfPartsPlacedAskewMeetAsTheyWouldUnturned) {
+  std::mt19937 rng(29);
+  const auto turned = [](Mesh m, const Eigen::Matrix3d& r) {
+    for (Eigen::Index k = 0; k < m.vertices.cols(); ++k)
+      m.vertices.col(k) = r * m.vertices.col(k) + kFar;
+    return float32(m);
+  };
+  for (int draw = 0; draw < 20; ++draw) {
+    SCOPED_TRACE(draw);
+    const Eigen::Matrix3d r = pd_test::random_rotation(rng);
+    const Mesh plate = turned(plate_with_hole(40, 6, 5.0, 64), r);
+    const PreparedMesh p(plate);
+    EXPECT_FALSE(surfaces_meet(p, PreparedMesh(turned(cylinder({0, 0}, 4.95, -10, 16, 64), r))));
+    EXPECT_TRUE(surfaces_meet(p, PreparedMesh(turned(cylinder({0, 0}, 5.05, -10, 16, 64), r))));
+    EXPECT_FALSE(surfaces_meet(p, PreparedMesh(turned(cylinder({12, 9}, 2, 6.01, 20, 32), r))));
+    EXPECT_TRUE(surfaces_meet(p, PreparedMesh(turned(cylinder({12, 9}, 2, 5.99, 20, 32), r))));
   }
 }
 

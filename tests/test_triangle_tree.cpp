@@ -211,6 +211,44 @@ TEST(TriangleTree, TakesTheFrameOfAPartPlacedAskew) {
     expect_nearest(tree, askew, r * Vec3(x(rng), y(rng), z(rng)) + far, k % 3 ? -1 : 0);
 }
 
+// A turned box lists every triangle that meets it: boxes in the tree's own
+// axes (the region a part's frame holds) and in random ones, about an askew
+// drilled board far from the origin.
+TEST(TriangleTree, ListsEveryTriangleThatMeetsATurnedBox) {
+  const Mesh board = shapes::drilled_board(3, 2, 10.0, 1.6, 3.0, 32);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.9, Vec3(2, -1, 3).normalized()).toRotationMatrix();
+  const Vec3 far(-2.4e4, 3.3e4, 9.1e3);
+  Triangles3 t;
+  for (long f = 0; f < board.triangles.cols(); ++f) {
+    std::array<Vec3, 3> c;
+    for (int k = 0; k < 3; ++k) c[k] = r * board.vertices.col(board.triangles(k, f)) + far;
+    t.push_back(c);
+  }
+  const TriangleTree tree(t);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> x(-2, 32), y(-2, 22), z(-1, 3), size(0.05, 4);
+  for (int k = 0; k < 400; ++k) {
+    const Eigen::Matrix3d turn =
+        k % 2 ? tree.axes()
+              : Eigen::Matrix3d(
+                    Eigen::AngleAxisd(6.3 * size(rng), Vec3(x(rng), y(rng), z(rng)).normalized()));
+    const Vec3 origin = r * Vec3(x(rng), y(rng), z(rng)) + far;
+    const Vec3 lo = -Vec3(size(rng), size(rng), size(rng)),
+               hi = Vec3(size(rng), size(rng), size(rng));
+    std::vector<int> got;
+    tree.in_turned_box(turn, origin, lo, hi, got);
+    EXPECT_TRUE(std::is_sorted(got.begin(), got.end()));
+    for (size_t i = 0; i < t.size(); ++i) {
+      std::array<Vec3, 3> local;  // the triangle in the box's frame
+      for (int c = 0; c < 3; ++c) local[c] = turn.transpose() * (t[i][c] - origin);
+      if (triangle_meets_box(local, lo, hi)) {
+        EXPECT_TRUE(std::binary_search(got.begin(), got.end(), static_cast<int>(i)))
+            << "box " << k << " triangle " << i;
+      }
+    }
+  }
+}
+
 TEST(TriangleTree, StopsListingPastTheLimit) {
   Triangles3 t;
   for (int i = 0; i < 100; ++i) t.push_back({Vec3(i, 0, 0), Vec3(i + 1, 0, 0), Vec3(i, 1, 0)});

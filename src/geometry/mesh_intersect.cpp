@@ -338,6 +338,11 @@ void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>
   impl_->search.in_box(lo, hi, out, limit);
 }
 
+void PreparedMesh::faces_in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo,
+                                       const Vec3& hi, std::vector<int>& out, size_t limit) const {
+  impl_->search.in_turned_box(R, origin, lo, hi, out, limit);
+}
+
 std::array<Vec3, 3> PreparedMesh::face(int i) const {
   const Triangle3& t = impl_->faces[i];
   return {Vec3(t[0].x(), t[0].y(), t[0].z()), Vec3(t[1].x(), t[1].y(), t[1].z()),
@@ -356,18 +361,43 @@ namespace {
 
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
 
-// Primitive i of a mesh: faces first, then segments; only those whose boxes
-// meet `within` (where the two meshes' boxes overlap: a point two primitives
-// share lies in both meshes' boxes). Boxes are closed, so touching boxes are
-// reported.
-std::vector<Box> primitive_boxes(const PreparedMesh::Impl& m, const CGAL::Bbox_3& within) {
+// The boxes of a mesh's primitives in a frame (rows of F: its axes), each
+// widened by `pad` for the rounding of taking corners there: primitive i is
+// faces first, then segments.
+std::vector<Box> primitive_boxes(const PreparedMesh::Impl& m, const Eigen::Matrix3d& F,
+                                 double pad) {
   std::vector<Box> boxes;
-  const auto add = [&](const CGAL::Bbox_3& b, std::size_t i) {
-    if (CGAL::do_overlap(b, within)) boxes.emplace_back(b, static_cast<int>(i));
+  boxes.reserve(m.faces.size() + m.segments.size());
+  const auto corner = [&](const Point3& p) { return Vec3(F * Vec3(p.x(), p.y(), p.z())); };
+  const auto add = [&](Vec3 lo, Vec3 hi, std::size_t i) {
+    lo.array() -= pad, hi.array() += pad;
+    boxes.emplace_back(CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()),
+                       static_cast<int>(i));
   };
-  for (std::size_t i = 0; i < m.faces.size(); ++i) add(m.faces[i].bbox(), i);
-  for (std::size_t i = 0; i < m.segments.size(); ++i) add(m.segments[i].bbox(), m.faces.size() + i);
+  for (std::size_t i = 0; i < m.faces.size(); ++i) {
+    const Vec3 a = corner(m.faces[i][0]), b = corner(m.faces[i][1]), c = corner(m.faces[i][2]);
+    add(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c), i);
+  }
+  for (std::size_t i = 0; i < m.segments.size(); ++i) {
+    const Vec3 a = corner(m.segments[i].source()), b = corner(m.segments[i].target());
+    add(a.cwiseMin(b), a.cwiseMax(b), m.faces.size() + i);
+  }
   return boxes;
+}
+
+// Only the boxes that meet `within` (where the two meshes' boxes overlap: a
+// point two primitives share lies in both meshes' boxes). Boxes are closed,
+// so touching boxes are kept.
+void keep_within(std::vector<Box>& boxes, const CGAL::Bbox_3& within) {
+  boxes.erase(std::remove_if(boxes.begin(), boxes.end(),
+                             [&](const Box& b) { return !CGAL::do_overlap(b.bbox(), within); }),
+              boxes.end());
+}
+
+CGAL::Bbox_3 box_of(const std::vector<Box>& boxes) {
+  CGAL::Bbox_3 all;
+  for (const Box& b : boxes) all += b.bbox();
+  return all;
 }
 
 bool primitives_meet(const PreparedMesh::Impl& a, int i, const PreparedMesh::Impl& b, int j) {
@@ -380,12 +410,29 @@ bool primitives_meet(const PreparedMesh::Impl& a, int i, const PreparedMesh::Imp
 
 struct Found {};
 
+// The primitives' boxes are taken in the face axes of the mesh with fewer
+// faces (TriangleTree's, the world's when it is not turned): world boxes of a
+// part placed askew are fat in every direction and met several times as
+// many of the other part's. Only the pairing uses them; every pair is then
+// tested exactly on the primitives as they are.
 bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
-  const CGAL::Bbox_3 both(
-      std::max(a.box.xmin(), b.box.xmin()), std::max(a.box.ymin(), b.box.ymin()),
-      std::max(a.box.zmin(), b.box.zmin()), std::min(a.box.xmax(), b.box.xmax()),
-      std::min(a.box.ymax(), b.box.ymax()), std::min(a.box.zmax(), b.box.zmax()));
-  std::vector<Box> ba = primitive_boxes(a, both), bb = primitive_boxes(b, both);
+  const TriangleTree& small = a.faces.size() <= b.faces.size() ? a.search : b.search;
+  const Eigen::Matrix3d F =
+      small.rotated() ? Eigen::Matrix3d(small.axes().transpose()) : Eigen::Matrix3d::Identity();
+  // Rounding of the corners taken into the frame (none in the world's).
+  const double reach =
+      std::max({std::abs(a.box.xmin()), std::abs(a.box.xmax()), std::abs(a.box.ymin()),
+                std::abs(a.box.ymax()), std::abs(a.box.zmin()), std::abs(a.box.zmax()),
+                std::abs(b.box.xmin()), std::abs(b.box.xmax()), std::abs(b.box.ymin()),
+                std::abs(b.box.ymax()), std::abs(b.box.zmin()), std::abs(b.box.zmax())});
+  const double pad = small.rotated() ? 32 * std::numeric_limits<double>::epsilon() * reach : 0.0;
+  std::vector<Box> ba = primitive_boxes(a, F, pad), bb = primitive_boxes(b, F, pad);
+  const CGAL::Bbox_3 ea = box_of(ba), eb = box_of(bb);
+  const CGAL::Bbox_3 both(std::max(ea.xmin(), eb.xmin()), std::max(ea.ymin(), eb.ymin()),
+                          std::max(ea.zmin(), eb.zmin()), std::min(ea.xmax(), eb.xmax()),
+                          std::min(ea.ymax(), eb.ymax()), std::min(ea.zmax(), eb.zmax()));
+  keep_within(ba, both);
+  keep_within(bb, both);
   try {
     CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(),
                              [&](const Box& x, const Box& y) {

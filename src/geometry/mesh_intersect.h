@@ -66,6 +66,11 @@ class PreparedMesh {
   /// increasing order; past `limit` of them, limit + 1 in no order.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
                     size_t limit = std::numeric_limits<size_t>::max()) const;
+  /// ... the box {origin + R·y : lo <= y <= hi} (R a rotation), as faces_in_box
+  /// lists them (TriangleTree::in_turned_box).
+  void faces_in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo,
+                           const Vec3& hi, std::vector<int>& out,
+                           size_t limit = std::numeric_limits<size_t>::max()) const;
   /// Corners of face i (0 <= i < faces()), in the mesh's order.
   std::array<Vec3, 3> face(int i) const;
   int faces() const;

@@ -747,12 +747,18 @@ void add_wedges(const std::vector<PlaneGroup>& groups, const std::vector<const P
   }
 }
 
+// The faces of `mesh` that may meet the region's box widened by its margin
+// (and by the frame's rounding): all that a plane model about it looks at.
+void faces_near(const PreparedMesh& mesh, const Region& rg, std::vector<int>& out,
+                size_t limit = std::numeric_limits<size_t>::max()) {
+  mesh.faces_in_turned_box(rg.frame->R, rg.frame->origin, rg.lo(), rg.hi(), out, limit);
+}
+
 // The plane model of one oriented closed mesh about a region;
 // `outside(p)`: p (in the region's coordinates) strictly outside the solid.
-// The faces meeting `wbox` (world coordinates, holding the region) count.
 template <class Outside>
-LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg,
-                        const Eigen::AlignedBox3d& wbox, bool witness, const Outside& outside) {
+LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg, bool witness,
+                        const Outside& outside) {
   LocalPlanes out;
   out.margin = rg.margin;
   // Needles (collinear triangles, segments in PreparedMesh) are not checked:
@@ -764,7 +770,7 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg
   // become the bound's slack, so the certificate holds exactly.
   const double cap = noise + rg.pad;
   std::vector<int> near;
-  mesh.faces_in_box(wbox.min(), wbox.max(), near, tol::kLocalPlanesMaxFaces);
+  faces_near(mesh, rg, near, tol::kLocalPlanesMaxFaces);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
   auto groups = groups_near(mesh, near, rg, cap);
   if (!groups) return out;
@@ -784,45 +790,43 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg
   return out;
 }
 
-// A framed box and its margin, and the world box that holds it.
-Region box_region(const FramedBox& box, double margin, Eigen::AlignedBox3d& wbox) {
+// A framed box and its margin.
+Region box_region(const FramedBox& box, double margin) {
   Region rg;
   rg.frame = &box.frame;
   rg.c = 0.5 * (box.lo + box.hi);
   rg.e = 0.5 * (box.hi - box.lo);
   rg.r = rg.e.norm();
   rg.margin = margin;
-  wbox.setEmpty();
+  Eigen::AlignedBox3d wbox;  // the world box that holds it
   const Vec3 lo = box.lo.array() - margin, hi = box.hi.array() + margin;
   for (int k = 0; k < 8; ++k)
     wbox.extend(box.frame.world(
         Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z())));
   // Taking a face into the frame rounds it by up to pad; the faces are
-  // gathered that much wider and every slack grows by it.
+  // gathered that much wider (Region::lo, hi) and every slack grows by it.
   rg.pad = 16 * std::numeric_limits<double>::epsilon() *
            (wbox.max().cwiseAbs().maxCoeff() + wbox.min().cwiseAbs().maxCoeff() +
             box.frame.origin.cwiseAbs().maxCoeff());
-  wbox.min().array() -= 2 * rg.pad;
-  wbox.max().array() += 2 * rg.pad;
   return rg;
 }
 
-// A union of shells about a region (world box wbox, centre c_world): where one
-// shell alone has faces there and the centre lies outside every other shell,
-// the union is that shell there. Elsewhere every shell's faces count, and each
+// A union of shells about a region (centre c_world): where one shell alone
+// has faces there and the centre lies outside every other shell, the union is
+// that shell there. Elsewhere every shell's faces count, and each
 // plane, hole and wedge must show a point of its outer side that is outside
 // every shell (exact ray tests): just outside one shell's face may be inside
 // another.
 template <class Outside>
 LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const PreparedMesh& whole,
-                         double noise, const Region& rg, const Eigen::AlignedBox3d& wbox,
-                         const Vec3& c_world, const Outside& outside_all) {
+                         double noise, const Region& rg, const Vec3& c_world,
+                         const Outside& outside_all) {
   int alone = -1;
   bool several = false;
   std::vector<int> near;
   for (size_t i = 0; i < shells.size() && !several; ++i) {
     near.clear();
-    shells[i].faces_in_box(wbox.min(), wbox.max(), near);
+    faces_near(shells[i], rg, near);
     if (near.empty()) continue;
     several = alone >= 0;
     alone = static_cast<int>(i);
@@ -836,22 +840,21 @@ LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const Prepared
     bool others_outside = true;
     for (size_t i = 0; i < shells.size() && others_outside; ++i)
       others_outside = static_cast<int>(i) == alone || shells[i].outside(c_world);
-    if (others_outside) return planes_near(shells[alone], noise, rg, wbox, false, outside_all);
+    if (others_outside) return planes_near(shells[alone], noise, rg, false, outside_all);
   }
-  return planes_near(whole, noise, rg, wbox, true, outside_all);
+  return planes_near(whole, noise, rg, true, outside_all);
 }
 
 }  // namespace
 
 LocalPlanes SolidDistance::local_planes(const FramedBox& box, double margin) const {
-  Eigen::AlignedBox3d wbox;
-  const Region rg = box_region(box, margin, wbox);
+  const Region rg = box_region(box, margin);
   if (exact_) {
     const auto outside = [&](const Vec3& y) { return whole_.outside(box.frame.world(y)); };
-    return planes_near(whole_, noise_, rg, wbox, false, outside);
+    return planes_near(whole_, noise_, rg, false, outside);
   }
   const auto outside_all = [&](const Vec3& y) { return outside_every_shell(box.frame.world(y)); };
-  return union_planes(shells_, whole_, noise_, rg, wbox, box.frame.world(rg.c), outside_all);
+  return union_planes(shells_, whole_, noise_, rg, box.frame.world(rg.c), outside_all);
 }
 
 }  // namespace pd

@@ -193,35 +193,54 @@ bool TriangleTree::visit_boxes(const Meets& meets, const Visit& visit) const {
   return false;
 }
 
+template <class Keep>
+void TriangleTree::list_in_frame_box(const Vec3& lo, const Vec3& hi, const Keep& keep,
+                                     std::vector<int>& out, size_t limit) const {
+  const size_t before = out.size();
+  const bool past_limit =
+      visit_boxes([&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); },
+                  [&](int slot) {
+                    if (!keep(slot)) return false;
+                    out.push_back(id_[slot]);
+                    return out.size() - before > limit;
+                  });
+  if (!past_limit) std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
+}
+
 void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
                           size_t limit) const {
-  const size_t before = out.size();
-  const auto add = [&](int slot) {
-    out.push_back(id_[slot]);
-    return out.size() - before > limit;
-  };
-  bool past_limit;
-  if (!rotated_) {
-    past_limit =
-        visit_boxes([&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); }, add);
-  } else {
-    // The query box's box in the frame holds every point of it, so every
-    // triangle that meets it; the world boxes then drop some that cannot.
-    Vec3 flo = Vec3::Constant(INFINITY), fhi = Vec3::Constant(-INFINITY);
-    for (int k = 0; k < 8; ++k) {
-      const Vec3 c =
-          frame_ * Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-      flo = flo.cwiseMin(c), fhi = fhi.cwiseMax(c);
-    }
-    const double w = pad(std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()));
-    flo.array() -= w, fhi.array() += w;
-    past_limit = visit_boxes(
-        [&](const Vec3& a, const Vec3& b) { return boxes_meet(flo, fhi, a, b); },
-        [&](int slot) {
-          return boxes_meet(lo, hi, world_boxes_[slot][0], world_boxes_[slot][1]) && add(slot);
-        });
+  if (!rotated_)
+    return list_in_frame_box(
+        lo, hi, [](int) { return true; }, out, limit);
+  // The query box's box in the frame holds every point of it, so every
+  // triangle that meets it; the world boxes then drop some that cannot.
+  Vec3 flo = Vec3::Constant(INFINITY), fhi = Vec3::Constant(-INFINITY);
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c =
+        frame_ * Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+    flo = flo.cwiseMin(c), fhi = fhi.cwiseMax(c);
   }
-  if (!past_limit) std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
+  const double w = pad(std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()));
+  flo.array() -= w, fhi.array() += w;
+  list_in_frame_box(
+      flo, fhi,
+      [&](int slot) { return boxes_meet(lo, hi, world_boxes_[slot][0], world_boxes_[slot][1]); },
+      out, limit);
+}
+
+void TriangleTree::in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo,
+                                 const Vec3& hi, std::vector<int>& out, size_t limit) const {
+  // The turned box's box in the tree's frame: its centre taken there, its
+  // half-extents spread by |frame·R|; widened by the rounding of both (the
+  // centre's, from origin and R, even when the frame is the world's).
+  const Vec3 c = to_frame(origin + R * (0.5 * (lo + hi)));
+  const Vec3 e = (frame_ * R).cwiseAbs() * (0.5 * (hi - lo));
+  const double w = 32 * std::numeric_limits<double>::epsilon() *
+                   (extent_ + origin.cwiseAbs().maxCoeff() + lo.cwiseAbs().maxCoeff() +
+                    hi.cwiseAbs().maxCoeff());
+  const Vec3 reach = e.array() + w;
+  list_in_frame_box(
+      c - reach, c + reach, [](int) { return true; }, out, limit);
 }
 
 bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const {

@@ -42,6 +42,12 @@ class TriangleTree {
   /// count need not list them all).
   void in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
               size_t limit = std::numeric_limits<size_t>::max()) const;
+  /// Every triangle that meets the turned box {origin + R·y : lo <= y <= hi}
+  /// (R a rotation), and perhaps some others near it, as in_box lists them.
+  /// Tight when R is the tree's axes: the region a part's own frame holds.
+  void in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo, const Vec3& hi,
+                     std::vector<int>& out,
+                     size_t limit = std::numeric_limits<size_t>::max()) const;
   /// Calls visit(index, corners) for the triangles whose boxes may meet the
   /// segment [a, b], in no order, until a call returns true; returns whether
   /// one did. The box test is padded (a few more triangles may come, none that
@@ -72,6 +78,11 @@ class TriangleTree {
                 const std::vector<Vec3>& centroids);
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
+  // The triangles whose boxes (the tree's) meet [lo, hi] of the tree's frame,
+  // listed as in_box lists them, those `keep` refuses aside.
+  template <class Keep>
+  void list_in_frame_box(const Vec3& lo, const Vec3& hi, const Keep& keep, std::vector<int>& out,
+                         size_t limit) const;
   std::vector<std::array<Vec3, 3>> triangles_;  ///< in tree order
   std::vector<int> id_;                         ///< tree order → caller's index
   std::vector<int> slot_;                       ///< caller's index → tree order
