@@ -196,19 +196,42 @@ TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {
 
 TEST(SurfaceDepth, NeverBelowTheDeepestVertexWhateverTheBudget) {
   namespace sh = shapes;
+  // A cube on its corner, that corner 0.3 into a block: only the corner is deep.
+  Mesh corner = sh::box(Vec3(-2, -2, -2), Vec3(2, 2, 2));
+  const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(std::atan(std::sqrt(0.5)), Vec3::UnitX()) *
+                                Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()))
+                                   .toRotationMatrix();
+  for (Eigen::Index k = 0; k < corner.vertices.cols(); ++k)
+    corner.vertices.col(k) = tilt * corner.vertices.col(k);
+  const double low = corner.vertices.row(2).minCoeff();
+  for (Eigen::Index k = 0; k < corner.vertices.cols(); ++k)
+    corner.vertices.col(k) += Vec3(10, 10, 10 - 0.3 - low);
   const std::pair<Mesh, Mesh> cases[] = {
       {sh::box(Vec3(5, 5, 7), Vec3(15, 5.05, 13)), sh::box(Vec3(0, 0, 0), Vec3(20, 20, 10))},
+      {corner, sh::box(Vec3(0, 0, 0), Vec3(20, 20, 10))},
       {sh::cylinder({0, 0}, 5.3, -4, 10, 32), sh::plate_with_hole(40, 6, 5, 32)},
       {sh::box(Vec3(3, 3, 3), Vec3(20, 12, 9.5)),
        sh::hollow_box(Vec3(0, 0, 0), Vec3(30, 20, 10), 1.5)}};
-  for (const auto& [a, b] : cases) {
-    const SolidDistance sa(a), sb(b);
-    const MeshDepthBound vertex = deepest_vertex_depth(sa.mesh(), sb.mesh());
-    ASSERT_GT(vertex.depth, 0.0);
-    for (long budget : {0L, 100L, 20000L}) {
-      const double surface = std::max(surface_depth(sa.mesh(), sb, budget).depth,
-                                      surface_depth(sb.mesh(), sa, budget).depth);
-      EXPECT_GE(surface, vertex.depth - 1e-12) << budget;
+  // As given, and turned askew far from the origin (the samples are then
+  // kept to the other part's box in its own axes).
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(1.1, Vec3(-2, 1, 4).normalized()).toRotationMatrix();
+  const auto turned = [&](Mesh m) {
+    for (Eigen::Index k = 0; k < m.vertices.cols(); ++k)
+      m.vertices.col(k) = turn * m.vertices.col(k) + Vec3(2.7e4, -1.9e4, 6.1e3);
+    return m;
+  };
+  for (const bool askew : {false, true}) {
+    for (const auto& [a0, b0] : cases) {
+      const Mesh a = askew ? turned(a0) : a0, b = askew ? turned(b0) : b0;
+      const SolidDistance sa(a), sb(b);
+      const MeshDepthBound vertex = deepest_vertex_depth(sa.mesh(), sb.mesh());
+      ASSERT_GT(vertex.depth, 0.0);
+      for (long budget : {0L, 100L, 20000L}) {
+        const double surface = std::max(surface_depth(sa.mesh(), sb, budget).depth,
+                                        surface_depth(sb.mesh(), sa, budget).depth);
+        EXPECT_GE(surface, vertex.depth - 1e-9) << budget << (askew ? " askew" : "");
+      }
     }
   }
   // A rod through a wall whose corners all lie outside it: only the samples

@@ -261,9 +261,21 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
                            double only_above) {
   SurfaceDepth best;
   if (!b.closed()) return best;
+  // b's box in its own face axes (y = Rᵀx): a point outside it is outside b,
+  // and can be the deepest of nothing. Taken there, a part placed askew is
+  // not the fat world box about it, which held much of the other part.
+  const Eigen::Matrix3d& R = b.axes();
+  Eigen::AlignedBox3d box = b.box_in_axes();
+  {  // widened by the rounding of taking points into the axes
+    const double pad = 32 * std::numeric_limits<double>::epsilon() *
+                       (b.box().min().cwiseAbs().maxCoeff() + b.box().max().cwiseAbs().maxCoeff());
+    box.min().array() -= pad;
+    box.max().array() += pad;
+  }
+  const auto local = [&](const Vec3& p) { return Vec3(R.transpose() * p); };
+  const auto in_box = [&](const Vec3& p) { return box.contains(local(p)); };
   std::vector<int> faces;
-  const Eigen::AlignedBox3d& box = b.box();
-  a.faces_in_box(box.min(), box.max(), faces);
+  a.faces_in_turned_box(R, Vec3::Zero(), box.min(), box.max(), faces);
   int near_face = -1;  // the samples come in runs close together
   const auto sample = [&](const Vec3& p) {
     const DistanceBounds d = b.at(p, &near_face, false);  // the lower bound is all it needs
@@ -279,7 +291,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   std::set<std::array<double, 3>> corners;
   for (int f : faces)
     for (const Vec3& p : a.face(f))
-      if (box.contains(p) && corners.insert({p.x(), p.y(), p.z()}).second) sample(p);
+      if (in_box(p) && corners.insert({p.x(), p.y(), p.z()}).second) sample(p);
   // Faces are split until a piece is within a quarter of b's thinnest extent
   // (a rod through a large wall face is sampled across its section); pieces
   // outside b's box are dropped, so the work follows the overlap. A piece is
@@ -308,14 +320,14 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   // exceeds its value at the centroid by more than the farthest corner's
   // distance. Outside b's box, the centroid's value is a bound, not a sample.
   const auto add = [&](const std::array<Vec3, 3>& t, int level) {
-    Eigen::AlignedBox3d tb(t[0]);
-    tb.extend(t[1]).extend(t[2]);
+    Eigen::AlignedBox3d tb(local(t[0]));
+    tb.extend(local(t[1])).extend(local(t[2]));
     if (!tb.intersects(box)) return;
-    const Vec3 centroid = (t[0] + t[1] + t[2]) / 3;
+    const Vec3 centroid = (t[0] + t[1] + t[2]) / 3, c = local(centroid);
     // Outside b's box, sd is at most minus the distance to it: a bound as
     // good as a sample's for ordering and pruning, and free.
-    double value = -std::sqrt(box.squaredExteriorDistance(centroid));
-    if (box.contains(centroid)) ++samples, value = sample(centroid);
+    double value = -std::sqrt(box.squaredExteriorDistance(c));
+    if (box.contains(c)) ++samples, value = sample(centroid);
     const double farthest =
         std::max({(t[0] - centroid).norm(), (t[1] - centroid).norm(), (t[2] - centroid).norm()});
     open.push({t, value, value + farthest, level});
@@ -335,7 +347,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
     if (length[k] <= spacing || piece.level >= 48) continue;
     const Vec3 &p = t[k], &q = t[(k + 1) % 3], &o = t[(k + 2) % 3];
     const Vec3 m = 0.5 * (p + q);
-    if (box.contains(m)) ++samples, sample(m);
+    if (in_box(m)) ++samples, sample(m);
     add({p, m, o}, piece.level + 1);
     add({m, q, o}, piece.level + 1);
   }
