@@ -67,6 +67,9 @@ namespace {
 // about as much as a box's.
 constexpr int kLeafSize = 4;
 
+// The deepest a path of the tree goes (the queries' stacks are sized by it).
+constexpr int kMaxDepth = 64;
+
 // Scalar loops rather than Eigen expressions: these run at every node of every
 // query, and the sanitizer builds (-O1) do not flatten the expression templates.
 // The box is widened by `pad` on every side.
@@ -150,7 +153,7 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
   for (size_t i = 0; i < triangles.size(); ++i)
     centroids[i] = (framed[i][0] + framed[i][1] + framed[i][2]) / 3;
   nodes_.reserve(triangles.size() / kLeafSize + 2);
-  root_ = build(0, static_cast<int>(triangles.size()), framed, centroids);
+  root_ = build(0, static_cast<int>(triangles.size()), framed, centroids, 0);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
   boxes_.resize(triangles_.size());
@@ -171,12 +174,12 @@ double TriangleTree::pad(double reach) const {
 // Depth first, the first child first; a subtree is entered when `meets`
 // accepts its box, a leaf's triangle when it accepts the triangle's box. Stops
 // when `visit` returns true, and says so. Each visit pushes at most two
-// subtrees, one level down, and median splits keep the depth below 32: the
-// stack never holds more than 64.
+// subtrees, one level down, and the build keeps the depth below kMaxDepth:
+// the stack never holds more than twice that.
 template <class Meets, class Visit>
 bool TriangleTree::visit_boxes(const Meets& meets, const Visit& visit) const {
   if (triangles_.empty() || !meets(root_.lo, root_.hi)) return false;
-  std::array<const Subtree*, 2 * 32 + 2> stack;
+  std::array<const Subtree*, 2 * kMaxDepth + 2> stack;
   int size = 0;
   stack[size++] = &root_;
   while (size > 0) {
@@ -268,10 +271,31 @@ bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisi
   return visit_boxes([&](const Vec3& lo, const Vec3& hi) { return slabs.meet(lo, hi); }, call);
 }
 
-// Median split of the centroids along their longest extent, in the frame.
+namespace {
+
+// Half the surface of a box: what a random query's chance of entering it
+// grows with (the surface area heuristic).
+double half_area(const Vec3& lo, const Vec3& hi) {
+  const Vec3 d = (hi - lo).cwiseMax(0.0);
+  return d.x() * d.y() + d.y() * d.z() + d.z() * d.x();
+}
+
+// How deep splits by the surface area heuristic go; below, median splits
+// keep every path short: 24 levels here and 35 median ones hold 2^37
+// triangles, within the queries' stacks (kMaxDepth).
+constexpr int kSahDepth = 24;
+constexpr int kSahBins = 12;
+
+}  // namespace
+
+// The centroids split along their longest extent, in the frame: where the
+// surface area heuristic (binned) finds a split, there, else at the median.
+// CAD tessellations are full of long slivers whose boxes overlap; a median
+// split cuts through a fan of them, while the heuristic keeps them apart
+// from the compact triangles beside them.
 TriangleTree::Subtree TriangleTree::build(int begin, int end,
                                           const std::vector<std::array<Vec3, 3>>& framed,
-                                          const std::vector<Vec3>& centroids) {
+                                          const std::vector<Vec3>& centroids, int depth) {
   Subtree s;
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   Vec3 clo = lo, chi = hi;
@@ -287,14 +311,54 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end,
     return s;
   }
   int axis = 0;
-  (chi - clo).maxCoeff(&axis);
-  const int mid = begin + (end - begin) / 2;
-  std::nth_element(id_.begin() + begin, id_.begin() + mid, id_.begin() + end,
-                   [&](int x, int y) { return centroids[x][axis] < centroids[y][axis]; });
+  const double extent = (chi - clo).maxCoeff(&axis);
+  int mid = -1;
+  if (depth < kSahDepth && extent > 0) {
+    const auto bin = [&](int t) {
+      return std::min(kSahBins - 1,
+                      static_cast<int>((centroids[t][axis] - clo[axis]) / extent * kSahBins));
+    };
+    std::array<int, kSahBins> count{};
+    std::array<Vec3, kSahBins> blo, bhi;
+    blo.fill(Vec3::Constant(INFINITY));
+    bhi.fill(Vec3::Constant(-INFINITY));
+    for (int i = begin; i < end; ++i) {
+      const int b = bin(id_[i]);
+      ++count[b];
+      for (const Vec3& v : framed[id_[i]]) blo[b] = blo[b].cwiseMin(v), bhi[b] = bhi[b].cwiseMax(v);
+    }
+    // The right side's area and count after each bin, then the best cut.
+    std::array<double, kSahBins> right_area{};
+    std::array<int, kSahBins> right_count{};
+    Vec3 rlo = Vec3::Constant(INFINITY), rhi = Vec3::Constant(-INFINITY);
+    int n = 0;
+    for (int b = kSahBins - 1; b > 0; --b) {
+      rlo = rlo.cwiseMin(blo[b]), rhi = rhi.cwiseMax(bhi[b]), n += count[b];
+      right_area[b] = half_area(rlo, rhi), right_count[b] = n;
+    }
+    Vec3 llo = Vec3::Constant(INFINITY), lhi = Vec3::Constant(-INFINITY);
+    double best = INFINITY;
+    int cut = -1, left = 0;
+    for (int b = 0; b + 1 < kSahBins; ++b) {
+      llo = llo.cwiseMin(blo[b]), lhi = lhi.cwiseMax(bhi[b]), left += count[b];
+      if (left == 0 || right_count[b + 1] == 0) continue;
+      const double cost = half_area(llo, lhi) * left + right_area[b + 1] * right_count[b + 1];
+      if (cost < best) best = cost, cut = b;
+    }
+    if (cut >= 0)
+      mid = static_cast<int>(std::partition(id_.begin() + begin, id_.begin() + end,
+                                            [&](int t) { return bin(t) <= cut; }) -
+                             id_.begin());
+  }
+  if (mid <= begin || mid >= end) {
+    mid = begin + (end - begin) / 2;
+    std::nth_element(id_.begin() + begin, id_.begin() + mid, id_.begin() + end,
+                     [&](int x, int y) { return centroids[x][axis] < centroids[y][axis]; });
+  }
   s.index = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
-  const Subtree first = build(begin, mid, framed, centroids),
-                second = build(mid, end, framed, centroids);
+  const Subtree first = build(begin, mid, framed, centroids, depth + 1),
+                second = build(mid, end, framed, centroids, depth + 1);
   nodes_[s.index].child[0] = first;
   nodes_[s.index].child[1] = second;
   return s;
@@ -316,12 +380,12 @@ TriangleTree::Nearest TriangleTree::nearest(const Vec3& p, int start) const {
   if (start >= 0 && start < static_cast<int>(slot_.size())) test(slot_[start]);
   // Depth first, the nearer child first; a subtree no nearer than the best is
   // skipped. A subtree's box distance is computed once, when its parent is
-  // visited, and kept beside it on the stack (as in visit_boxes, at most 64).
+  // visited, and kept beside it on the stack (as in visit_boxes, sized by kMaxDepth).
   struct Open {
     const Subtree* tree;
     double d2;
   };
-  std::array<Open, 2 * 32 + 2> stack;
+  std::array<Open, 2 * kMaxDepth + 2> stack;
   int size = 0;
   stack[size++] = {&root_, box_squared_distance(root_.lo, root_.hi, f, w)};
   while (size > 0) {

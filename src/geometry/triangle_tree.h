@@ -75,7 +75,7 @@ class TriangleTree {
     Subtree child[2];
   };
   Subtree build(int begin, int end, const std::vector<std::array<Vec3, 3>>& framed,
-                const std::vector<Vec3>& centroids);
+                const std::vector<Vec3>& centroids, int depth);
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
   // The triangles whose boxes (the tree's) meet [lo, hi] of the tree's frame,
