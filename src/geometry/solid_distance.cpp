@@ -166,9 +166,13 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   for (size_t i = 0; i < shells_.size(); ++i)
     for (int f = 0; f < shells_[i].faces(); ++f) {
       const std::array<Vec3, 3> t = shells_[i].face(f);
-      for (const Vec3& v : t) shell_box_[i].extend(v);
+      for (const Vec3& v : t) shell_box_[i].extend(Vec3(axes_.transpose() * v));
       shell_at.push_back({{t[0].x(), t[0].y(), t[0].z()}, static_cast<int>(i)});
     }
+  // Widened by the rounding of taking points into the axes.
+  const double pad = 32 * std::numeric_limits<double>::epsilon() *
+                     (box_.min().cwiseAbs().maxCoeff() + box_.max().cwiseAbs().maxCoeff());
+  for (Eigen::AlignedBox3d& b : shell_box_) b.min().array() -= pad, b.max().array() += pad;
   std::sort(shell_at.begin(), shell_at.end());
   for (int f = 0; f < whole_.faces(); ++f) {
     const Vec3 v = whole_.face(f)[0];
@@ -240,8 +244,9 @@ bool SolidDistance::inside_union(const Vec3& p, int face, int side) const {
     // Outside shell s: inside the union only inside another, so not when no
     // other shell's box holds p.
     bool other = false;
+    const Vec3 y = axes_.transpose() * p;
     for (size_t i = 0; i < shells_.size() && !other; ++i)
-      other = static_cast<int>(i) != s && shell_box_[i].contains(p);
+      other = static_cast<int>(i) != s && shell_box_[i].contains(y);
     if (!other) return false;
   }
   return inside_some_shell(p);

@@ -158,7 +158,7 @@ class SolidDistance {
   PreparedMesh whole_;
   std::vector<PreparedMesh> shells_;  ///< union mode only: one per shell
   // Union mode: the shell each face of whole_ is of (whole_'s faces are the
-  // shells' faces, so its tree serves their ray tests), and each shell's box.
+  // shells' faces, so its tree serves their ray tests), and each shell's box in axes_.
   std::vector<int> shell_of_whole_face_;
   std::vector<Eigen::AlignedBox3d> shell_box_;
   bool closed_ = false, exact_ = true, oriented_ = false;
