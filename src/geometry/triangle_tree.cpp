@@ -150,14 +150,17 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
     for (auto& t : framed)
       for (Vec3& v : t) v = frame_ * v;
   std::vector<Vec3> centroids(triangles.size());
-  for (size_t i = 0; i < triangles.size(); ++i)
+  std::vector<std::array<Vec3, 2>> framed_boxes(triangles.size());
+  for (size_t i = 0; i < triangles.size(); ++i) {
     centroids[i] = (framed[i][0] + framed[i][1] + framed[i][2]) / 3;
+    framed_boxes[i] = box_of(framed[i]);
+  }
   nodes_.reserve(triangles.size() / kLeafSize + 2);
-  root_ = build(0, static_cast<int>(triangles.size()), framed, centroids, 0);
+  root_ = build(0, static_cast<int>(triangles.size()), framed_boxes, centroids, 0);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
   boxes_.resize(triangles_.size());
-  for (size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = box_of(framed[id_[i]]);
+  for (size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = framed_boxes[id_[i]];
   if (rotated_) {
     world_boxes_.resize(triangles_.size());
     for (size_t i = 0; i < triangles_.size(); ++i) world_boxes_[i] = box_of(triangles_[i]);
@@ -294,13 +297,13 @@ constexpr int kSahBins = 12;
 // split cuts through a fan of them, while the heuristic keeps them apart
 // from the compact triangles beside them.
 TriangleTree::Subtree TriangleTree::build(int begin, int end,
-                                          const std::vector<std::array<Vec3, 3>>& framed,
+                                          const std::vector<std::array<Vec3, 2>>& boxes,
                                           const std::vector<Vec3>& centroids, int depth) {
   Subtree s;
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   Vec3 clo = lo, chi = hi;
   for (int i = begin; i < end; ++i) {
-    for (const Vec3& v : framed[id_[i]]) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    lo = lo.cwiseMin(boxes[id_[i]][0]), hi = hi.cwiseMax(boxes[id_[i]][1]);
     clo = clo.cwiseMin(centroids[id_[i]]), chi = chi.cwiseMax(centroids[id_[i]]);
   }
   s.lo = lo;
@@ -325,7 +328,7 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end,
     for (int i = begin; i < end; ++i) {
       const int b = bin(id_[i]);
       ++count[b];
-      for (const Vec3& v : framed[id_[i]]) blo[b] = blo[b].cwiseMin(v), bhi[b] = bhi[b].cwiseMax(v);
+      blo[b] = blo[b].cwiseMin(boxes[id_[i]][0]), bhi[b] = bhi[b].cwiseMax(boxes[id_[i]][1]);
     }
     // The right side's area and count after each bin, then the best cut.
     std::array<double, kSahBins> right_area{};
@@ -357,8 +360,8 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end,
   }
   s.index = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
-  const Subtree first = build(begin, mid, framed, centroids, depth + 1),
-                second = build(mid, end, framed, centroids, depth + 1);
+  const Subtree first = build(begin, mid, boxes, centroids, depth + 1),
+                second = build(mid, end, boxes, centroids, depth + 1);
   nodes_[s.index].child[0] = first;
   nodes_[s.index].child[1] = second;
   return s;

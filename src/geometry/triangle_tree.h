@@ -74,7 +74,7 @@ class TriangleTree {
   struct Node {
     Subtree child[2];
   };
-  Subtree build(int begin, int end, const std::vector<std::array<Vec3, 3>>& framed,
+  Subtree build(int begin, int end, const std::vector<std::array<Vec3, 2>>& boxes,
                 const std::vector<Vec3>& centroids, int depth);
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
