@@ -45,44 +45,60 @@ struct Probe {
 // hole plane that can be the largest somewhere in the cell (sd ≤ kappa ·
 // (max_k s_k + slack), so φ ≤ kappa · (s_k + slack) for some k). No
 // alternative at all: no point of the cell is in the solid.
-std::vector<std::vector<Affine>> alternatives(const LocalPlanes& m, const Vec3& lo,
-                                              const Vec3& hi) {
-  std::vector<Affine> base;
-  for (const FacePlane& q : m.supporting) base.push_back({q.offset + m.slack, -q.normal});
+// Every alternative is the supporting planes and one plane of each hole and
+// wedge, so they are kept flat: `per` functions each, one after another.
+struct Alternatives {
+  std::vector<Affine> base;   ///< the supporting planes: every alternative's
+  std::vector<Affine> extra;  ///< alternative k's own: [k·per, (k + 1)·per)
+  size_t per = 0, count = 1;
+  void append(size_t k, std::vector<Affine>& f) const {
+    f.insert(f.end(), base.begin(), base.end());
+    const auto first = extra.begin() + static_cast<std::ptrdiff_t>(k * per);
+    f.insert(f.end(), first, first + static_cast<std::ptrdiff_t>(per));
+  }
+};
+
+Alternatives alternatives(const LocalPlanes& m, const Vec3& lo, const Vec3& hi) {
+  Alternatives out;
+  for (const FacePlane& q : m.supporting) out.base.push_back({q.offset + m.slack, -q.normal});
   const Vec3 c = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
   // sd ≤ kappa · (s_q + slack) for the plane q that is the largest; one that
   // is negative throughout the cell is never the largest > 0.
   const auto can_lead = [&](const FacePlane& q, double slack) {
     return q.at(c) + half.dot(q.normal.cwiseAbs()) + slack >= 0;
   };
+  // Each hole and each wedge holds on its own: every alternative so far meets
+  // one of the planes that can lead.
+  std::vector<Affine> next, leading;
+  const auto meet = [&]() {
+    next.clear();
+    for (size_t k = 0; k < out.count; ++k)
+      for (const Affine& g : leading) {
+        const auto first = out.extra.begin() + static_cast<std::ptrdiff_t>(k * out.per);
+        next.insert(next.end(), first, first + static_cast<std::ptrdiff_t>(out.per));
+        next.push_back(g);
+      }
+    out.extra.swap(next);
+    out.count *= leading.size();
+    ++out.per;
+  };
   const auto bound = [](const FacePlane& q, double kappa, double slack) {
     return Affine{kappa * (q.offset + slack), -kappa * q.normal};
   };
-  std::vector<std::vector<Affine>> alts{base}, next;
-  // Each hole and each wedge holds on its own: every alternative so far meets
-  // one plane of each.
   for (const LocalPlanes::Hole& h : m.holes) {
-    next.clear();
-    for (const auto& alt : alts)
-      for (const FacePlane& q : h.planes) {
-        if (!can_lead(q, h.slack)) continue;
-        next.push_back(alt);
-        next.back().push_back(bound(q, h.kappa, h.slack));
-      }
-    alts.swap(next);
-    if (alts.size() > static_cast<size_t>(tol::kLocalPlanesMaxChoices)) return alts;
+    leading.clear();
+    for (const FacePlane& q : h.planes)
+      if (can_lead(q, h.slack)) leading.push_back(bound(q, h.kappa, h.slack));
+    meet();
+    if (out.count > static_cast<size_t>(tol::kLocalPlanesMaxChoices)) return out;
   }
   for (const LocalPlanes::Wedge& w : m.wedges) {
-    next.clear();
-    for (const auto& alt : alts)
-      for (const FacePlane* q : {&w.p, &w.q}) {
-        if (!can_lead(*q, w.slack)) continue;
-        next.push_back(alt);
-        next.back().push_back(bound(*q, w.kappa, w.slack));
-      }
-    alts.swap(next);
+    leading.clear();
+    for (const FacePlane* q : {&w.p, &w.q})
+      if (can_lead(*q, w.slack)) leading.push_back(bound(*q, w.kappa, w.slack));
+    meet();
   }
-  return alts;
+  return out;
 }
 
 class Search {
@@ -169,16 +185,16 @@ class Search {
     upper = std::min(upper, limit);
     const auto alts_a = alternatives(la, cell.lo, cell.hi),
                alts_b = alternatives(lb, cell.lo, cell.hi);
-    if (alts_a.empty() || alts_b.empty()) return -INFINITY;  // outside a part throughout
-    if (alts_a.size() * alts_b.size() > static_cast<size_t>(tol::kLocalPlanesMaxChoices))
+    if (alts_a.count == 0 || alts_b.count == 0) return -INFINITY;  // outside a part throughout
+    if (alts_a.count * alts_b.count > static_cast<size_t>(tol::kLocalPlanesMaxChoices))
       return original;
     double model = -INFINITY;
     std::vector<Affine> f;
-    for (const auto& x : alts_a)
-      for (const auto& y : alts_b) {
+    for (size_t x = 0; x < alts_a.count; ++x)
+      for (size_t y = 0; y < alts_b.count; ++y) {
         f = common;
-        f.insert(f.end(), x.begin(), x.end());
-        f.insert(f.end(), y.begin(), y.end());
+        alts_a.append(x, f);
+        alts_b.append(y, f);
         // A choice whose cheap bound is no higher than the largest so far
         // cannot raise it: its small LP is not solved.
         if (min_max_affine(f, cell.lo, cell.hi) <= model) continue;
