@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 
 namespace pd::tol {
 
@@ -259,6 +260,14 @@ inline constexpr long kSurfaceDepthSamples = 2000;
 /// of the budget; on the CAD assemblies it took a fifth of a refined pair's
 /// time at 2000 (docs/performance.md).
 inline constexpr long kSurfaceDepthGuardSamples = 500;
+
+/// Numerical care, not accuracy: how far taking a point or a box corner into
+/// an orthonormal frame (a part's face axes) may move it, per unit of its
+/// largest coordinate, with room to spare (a few roundings of a 3 × 3 product
+/// and of the frame's own orthonormality). The searches that prune in a part's
+/// own axes widen every box by it (docs/numerics.md, "Frames for searching");
+/// their answers are computed on the coordinates as given.
+inline constexpr double kFrameRounding = 32 * std::numeric_limits<double>::epsilon();
 /// Local plane models (geometry/solid_distance.h). Effort, not accuracy: at
 /// most this many faces near a cell, hole planes (the nearest supporting planes
 /// kept: each bounds on its own), and LPs per cell (one per choice of each

@@ -425,7 +425,7 @@ bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
                 std::abs(a.box.ymax()), std::abs(a.box.zmin()), std::abs(a.box.zmax()),
                 std::abs(b.box.xmin()), std::abs(b.box.xmax()), std::abs(b.box.ymin()),
                 std::abs(b.box.ymax()), std::abs(b.box.zmin()), std::abs(b.box.zmax())});
-  const double pad = small.rotated() ? 32 * std::numeric_limits<double>::epsilon() * reach : 0.0;
+  const double pad = small.rotated() ? tol::kFrameRounding * reach : 0.0;
   std::vector<Box> ba = primitive_boxes(a, F, pad), bb = primitive_boxes(b, F, pad);
   const CGAL::Bbox_3 ea = box_of(ba), eb = box_of(bb);
   const CGAL::Bbox_3 both(std::max(ea.xmin(), eb.xmin()), std::max(ea.ymin(), eb.ymin()),

@@ -170,8 +170,8 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
       shell_at.push_back({{t[0].x(), t[0].y(), t[0].z()}, static_cast<int>(i)});
     }
   // Widened by the rounding of taking points into the axes.
-  const double pad = 32 * std::numeric_limits<double>::epsilon() *
-                     (box_.min().cwiseAbs().maxCoeff() + box_.max().cwiseAbs().maxCoeff());
+  const double pad =
+      tol::kFrameRounding * (box_.min().cwiseAbs().maxCoeff() + box_.max().cwiseAbs().maxCoeff());
   for (Eigen::AlignedBox3d& b : shell_box_) b.min().array() -= pad, b.max().array() += pad;
   std::sort(shell_at.begin(), shell_at.end());
   for (int f = 0; f < whole_.faces(); ++f) {
@@ -272,7 +272,7 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   const Eigen::Matrix3d& R = b.axes();
   Eigen::AlignedBox3d box = b.box_in_axes();
   {  // widened by the rounding of taking points into the axes
-    const double pad = 32 * std::numeric_limits<double>::epsilon() *
+    const double pad = tol::kFrameRounding *
                        (b.box().min().cwiseAbs().maxCoeff() + b.box().max().cwiseAbs().maxCoeff());
     box.min().array() -= pad;
     box.max().array() += pad;

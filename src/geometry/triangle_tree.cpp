@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "geometry/face_axes.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -171,7 +172,7 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
 // size of the true ones (the frame is orthonormal to rounding), as are the
 // boxes' corners: this bounds both, with room to spare.
 double TriangleTree::pad(double reach) const {
-  return rotated_ ? 32 * std::numeric_limits<double>::epsilon() * (extent_ + reach) : 0.0;
+  return rotated_ ? tol::kFrameRounding * (extent_ + reach) : 0.0;
 }
 
 // Depth first, the first child first; a subtree is entered when `meets`
@@ -241,9 +242,8 @@ void TriangleTree::in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, c
   // centre's, from origin and R, even when the frame is the world's).
   const Vec3 c = to_frame(origin + R * (0.5 * (lo + hi)));
   const Vec3 e = (frame_ * R).cwiseAbs() * (0.5 * (hi - lo));
-  const double w = 32 * std::numeric_limits<double>::epsilon() *
-                   (extent_ + origin.cwiseAbs().maxCoeff() + lo.cwiseAbs().maxCoeff() +
-                    hi.cwiseAbs().maxCoeff());
+  const double w = tol::kFrameRounding * (extent_ + origin.cwiseAbs().maxCoeff() +
+                                          lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff());
   const Vec3 reach = e.array() + w;
   list_in_frame_box(
       c - reach, c + reach, [](int) { return true; }, out, limit);
