@@ -333,11 +333,6 @@ void PreparedMesh::shell_sides(const Vec3& v, const std::vector<int>& face_shell
                    Vec3(b.xmax(), b.ymax(), b.zmax()), v, sides, shells);
 }
 
-void PreparedMesh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
-                                size_t limit) const {
-  impl_->search.in_box(lo, hi, out, limit);
-}
-
 void PreparedMesh::faces_in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo,
                                        const Vec3& hi, std::vector<int>& out, size_t limit) const {
   impl_->search.in_turned_box(R, origin, lo, hi, out, limit);
@@ -420,11 +415,11 @@ bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
   const Eigen::Matrix3d F =
       small.rotated() ? Eigen::Matrix3d(small.axes().transpose()) : Eigen::Matrix3d::Identity();
   // Rounding of the corners taken into the frame (none in the world's).
-  const double reach =
-      std::max({std::abs(a.box.xmin()), std::abs(a.box.xmax()), std::abs(a.box.ymin()),
-                std::abs(a.box.ymax()), std::abs(a.box.zmin()), std::abs(a.box.zmax()),
-                std::abs(b.box.xmin()), std::abs(b.box.xmax()), std::abs(b.box.ymin()),
-                std::abs(b.box.ymax()), std::abs(b.box.zmin()), std::abs(b.box.zmax())});
+  const auto reach_of = [](const CGAL::Bbox_3& x) {
+    return std::max(Vec3(x.xmin(), x.ymin(), x.zmin()).cwiseAbs().maxCoeff(),
+                    Vec3(x.xmax(), x.ymax(), x.zmax()).cwiseAbs().maxCoeff());
+  };
+  const double reach = std::max(reach_of(a.box), reach_of(b.box));
   const double pad = small.rotated() ? tol::kFrameRounding * reach : 0.0;
   std::vector<Box> ba = primitive_boxes(a, F, pad), bb = primitive_boxes(b, F, pad);
   const CGAL::Bbox_3 ea = box_of(ba), eb = box_of(bb);

@@ -61,13 +61,10 @@ class PreparedMesh {
   /// sides[0 … shells − 1]: one ray for them all (ray_parity_sides).
   void shell_sides(const Vec3& p, const std::vector<int>& face_shell, RaySide* sides,
                    size_t shells) const;
-  /// Every (non-degenerate) face that meets the box [lo, hi], and perhaps some
-  /// others whose boxes meet it (TriangleTree::in_box), appended to `out` in
-  /// increasing order; past `limit` of them, limit + 1 in no order.
-  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
-                    size_t limit = std::numeric_limits<size_t>::max()) const;
-  /// ... the box {origin + R·y : lo <= y <= hi} (R a rotation), as faces_in_box
-  /// lists them (TriangleTree::in_turned_box).
+  /// Every (non-degenerate) face that meets the box {origin + R·y : lo <= y <=
+  /// hi} (R a rotation), and perhaps some others near it, appended to `out` in
+  /// increasing order; past `limit` of them, limit + 1 in no order
+  /// (TriangleTree::in_turned_box).
   void faces_in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo,
                            const Vec3& hi, std::vector<int>& out,
                            size_t limit = std::numeric_limits<size_t>::max()) const;

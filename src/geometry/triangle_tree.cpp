@@ -162,10 +162,6 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
   boxes_.resize(triangles_.size());
   for (size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = framed_boxes[id_[i]];
-  if (rotated_) {
-    world_boxes_.resize(triangles_.size());
-    for (size_t i = 0; i < triangles_.size(); ++i) world_boxes_[i] = box_of(triangles_[i]);
-  }
 }
 
 // A point's frame coordinates are within a few roundings of its coordinates'
@@ -200,39 +196,16 @@ bool TriangleTree::visit_boxes(const Meets& meets, const Visit& visit) const {
   return false;
 }
 
-template <class Keep>
-void TriangleTree::list_in_frame_box(const Vec3& lo, const Vec3& hi, const Keep& keep,
-                                     std::vector<int>& out, size_t limit) const {
+void TriangleTree::list_in_frame_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
+                                     size_t limit) const {
   const size_t before = out.size();
   const bool past_limit =
       visit_boxes([&](const Vec3& a, const Vec3& b) { return boxes_meet(lo, hi, a, b); },
                   [&](int slot) {
-                    if (!keep(slot)) return false;
                     out.push_back(id_[slot]);
                     return out.size() - before > limit;
                   });
   if (!past_limit) std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
-}
-
-void TriangleTree::in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
-                          size_t limit) const {
-  if (!rotated_)
-    return list_in_frame_box(
-        lo, hi, [](int) { return true; }, out, limit);
-  // The query box's box in the frame holds every point of it, so every
-  // triangle that meets it; the world boxes then drop some that cannot.
-  Vec3 flo = Vec3::Constant(INFINITY), fhi = Vec3::Constant(-INFINITY);
-  for (int k = 0; k < 8; ++k) {
-    const Vec3 c =
-        frame_ * Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-    flo = flo.cwiseMin(c), fhi = fhi.cwiseMax(c);
-  }
-  const double w = pad(std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()));
-  flo.array() -= w, fhi.array() += w;
-  list_in_frame_box(
-      flo, fhi,
-      [&](int slot) { return boxes_meet(lo, hi, world_boxes_[slot][0], world_boxes_[slot][1]); },
-      out, limit);
 }
 
 void TriangleTree::in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo,
@@ -245,8 +218,7 @@ void TriangleTree::in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, c
   const double w = tol::kFrameRounding * (extent_ + origin.cwiseAbs().maxCoeff() +
                                           lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff());
   const Vec3 reach = e.array() + w;
-  list_in_frame_box(
-      c - reach, c + reach, [](int) { return true; }, out, limit);
+  list_in_frame_box(c - reach, c + reach, out, limit);
 }
 
 bool TriangleTree::along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const {

@@ -35,16 +35,13 @@ class TriangleTree {
   /// The nearest point of every triangle. `start`, when ≥ 0, is a face tried
   /// first (a nearby query's answer): the same result, found sooner.
   Nearest nearest(const Vec3& p, int start = -1) const;
-  /// Every triangle that meets the box [lo, hi] (closed), and perhaps some
-  /// others whose boxes meet it (none whose box does not), appended to `out`
-  /// in increasing index order. Past `limit` of them the search stops
-  /// with limit + 1 appended, in no order (a caller that gives up beyond a
-  /// count need not list them all).
-  void in_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out,
-              size_t limit = std::numeric_limits<size_t>::max()) const;
   /// Every triangle that meets the turned box {origin + R·y : lo <= y <= hi}
-  /// (R a rotation), and perhaps some others near it, as in_box lists them.
-  /// Tight when R is the tree's axes: the region a part's own frame holds.
+  /// (R a rotation; closed), and perhaps some others near it, appended to
+  /// `out` in increasing index order. Past `limit` of them the search stops
+  /// with limit + 1 appended, in no order (a caller that gives up beyond a
+  /// count need not list them all). Tight when R is the tree's axes (the
+  /// region a part's own frame holds), or the world's for a tree that is not
+  /// turned: then exactly those whose boxes meet the box widened by rounding.
   void in_turned_box(const Eigen::Matrix3d& R, const Vec3& origin, const Vec3& lo, const Vec3& hi,
                      std::vector<int>& out,
                      size_t limit = std::numeric_limits<size_t>::max()) const;
@@ -79,18 +76,14 @@ class TriangleTree {
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
   // The triangles whose boxes (the tree's) meet [lo, hi] of the tree's frame,
-  // listed as in_box lists them, those `keep` refuses aside.
-  template <class Keep>
-  void list_in_frame_box(const Vec3& lo, const Vec3& hi, const Keep& keep, std::vector<int>& out,
-                         size_t limit) const;
+  // listed as in_turned_box lists them.
+  void list_in_frame_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out, size_t limit) const;
   std::vector<std::array<Vec3, 3>> triangles_;  ///< in tree order
   std::vector<int> id_;                         ///< tree order → caller's index
   std::vector<int> slot_;                       ///< caller's index → tree order
   std::vector<Node> nodes_;
   Subtree root_;
   std::vector<std::array<Vec3, 2>> boxes_;  ///< each triangle's in the frame, in tree order
-  /// Each triangle's world box, in tree order (rotated trees only: in_box's answer).
-  std::vector<std::array<Vec3, 2>> world_boxes_;
   Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
   /// Takes world coordinates to the boxes': the axes' transpose, else the identity.
   Eigen::Matrix3d frame_ = Eigen::Matrix3d::Identity();
