@@ -6,11 +6,15 @@
 #include <cstdio>
 #include <fstream>
 
+#include "corpus/cad_shapes.h"
 #include "geometry/hull.h"
+#include "geometry/mesh_intersect.h"
+#include "geometry/solid_distance.h"
 #include "scene/mesh_loader.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "scene/setup_warnings.h"
+#include "stl_file.h"
 
 using namespace pd;
 
@@ -111,4 +115,82 @@ TEST(Parts, OneMeshFileUnderManyTransforms) {
     }
   }
   std::remove(obj.c_str());
+}
+
+TEST(Parts, ASoleInstancePlacedWithoutStretchKeepsTheDistancesItWasMeasuredOn) {
+  // Two shapes, each written to four files: one placed once, turned and moved
+  // far away (rigid); one in inches, turned (a similarity); one under two
+  // placements; one stretched along x. Only the first two are measured on
+  // their placed meshes, whose distances the part keeps for the refinement.
+  // - An L-bracket (legs 10 long, 2 thick): its hull's slanted face is 4 from
+  //   the part at its middle, (a - t) / 2. Nonconvex at tolerance 0.1 (its
+  //   concavity tolerance is 0.025): the estimate stops above it, never above 4.
+  // - A square block with a 0.0005 notch in one side: convex within 0.025 (in
+  //   inches too), never measured above the notch's depth (samples this near
+  //   its faces count as on them: screen_convexity).
+  const std::vector<std::pair<std::string, Mesh>> shapes_made = {
+      {"l", shapes::l_bracket(10, 2, 1)},
+      {"notch", shapes::prism({{0, 0}, {10, 0}, {10, 10}, {5, 9.9995}, {0, 10}}, 0, 1)}};
+  const std::string dir = testing::TempDir() + "kept_" + std::to_string(getpid()) + "_";
+  const std::string turn = "0.36,0.48,-0.8,%, -0.8,0.6,0,%, 0.48,0.64,0.6,%, 0,0,0,1";
+  const auto placed = [&](const char* x, const char* y, const char* z) {
+    std::string t = turn;
+    for (const char* v : {x, y, z}) t.replace(t.find('%'), 1, v);
+    return "[" + t + "]";
+  };
+  std::vector<std::string> files;
+  std::string parts;
+  for (const auto& [shape, mesh] : shapes_made) {
+    for (const char* name : {"sole", "inches", "twice", "stretched"}) {
+      files.push_back(dir + shape + "_" + name + ".stl");
+      pd::test::write_binary_stl(files.back(), mesh);
+    }
+    const auto part = [&](const std::string& id, const std::string& file, const std::string& rest) {
+      parts += R"({"id": ")" + shape + "_" + id + R"(", "mesh": ")" + file + "\", " + rest + "},";
+    };
+    const size_t f = files.size() - 4;
+    part("sole", files[f], R"("transform": )" + placed("20000.5", "-15000.25", "9000"));
+    part("inches", files[f + 1], R"("units": "in", "transform": )" + placed("0", "0", "0"));
+    part("twice_a", files[f + 2], R"("transform": )" + placed("100", "0", "0"));
+    part("twice_b", files[f + 2], R"("transform": )" + placed("0", "100", "0"));
+    part("stretched", files[f + 3], R"("transform": [2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1])");
+  }
+  parts.pop_back();
+  const SceneSpec s =
+      parse_scene_json(R"({"tolerance": 0.1, "parts": [)" + parts + "]}", "s.json", "");
+  for (int threads : {1, 3}) {
+    const auto built = build_parts(s, threads);
+    ASSERT_EQ(built.size(), 10u);
+    for (const Part& p : built) {
+      ASSERT_FALSE(p.error) << *p.error;
+      ASSERT_TRUE(p.surface) << p.id;
+      const bool l = p.id[0] == 'l';
+      EXPECT_EQ(p.convex, !l) << p.id;
+      const bool kept =
+          p.id.find("sole") != std::string::npos || p.id.find("inches") != std::string::npos;
+      EXPECT_EQ(bool(p.surface->solid), kept) << p.id;
+      if (p.id.find("stretched") != std::string::npos) continue;  // lengths not scaled alike
+      const double scale = p.id.find("inches") != std::string::npos ? 25.4 : 1.0;
+      if (l) {
+        EXPECT_GT(p.surface->concavity, 0.025) << p.id;
+        EXPECT_LE(p.surface->concavity, 4 * scale * (1 + 1e-12)) << p.id;
+      } else {  // float32 holds 9.9995 to about 5e-7
+        EXPECT_GE(p.surface->concavity, 0.0) << p.id;
+        EXPECT_LE(p.surface->concavity, (0.0005 + 1e-6) * scale) << p.id;
+      }
+      if (!kept) continue;
+      // The distances are those of the placed mesh the refinement would build.
+      const Points placed = apply_placement(p.surface->file_mesh->vertices, p.surface->placement);
+      if (p.surface->mesh) {
+        EXPECT_EQ(p.surface->mesh->vertices, placed) << p.id;
+      }
+      EXPECT_EQ(p.surface->solid->mesh().faces(), p.surface->file_mesh->triangles.cols()) << p.id;
+      Eigen::AlignedBox3d box;
+      for (long v = 0; v < placed.cols(); ++v) box.extend(Vec3(placed.col(v)));
+      EXPECT_EQ(p.surface->solid->box().min(), box.min()) << p.id;
+      EXPECT_EQ(p.surface->solid->box().max(), box.max()) << p.id;
+      EXPECT_GT(box.min().cwiseAbs().maxCoeff(), scale == 1.0 ? 8000 : 0) << p.id;
+    }
+  }
+  for (const std::string& f : files) std::remove(f.c_str());
 }

@@ -11,6 +11,7 @@
 #include "box_points.h"
 #include "corpus/cad_shapes.h"
 #include "geometry/hull.h"
+#include "geometry/solid_distance.h"
 #include "inline_part.h"
 
 using namespace pd;
@@ -273,4 +274,32 @@ TEST(Refine, BlocksInAnLBracketsNotchAreDecidedWhereTheyMeet) {
   EXPECT_EQ(results[3].depth, convex.depth);
   EXPECT_EQ(results[3].depth_source, "hull");
   EXPECT_FALSE(results[3].hull_depth);
+}
+
+TEST(Refine, MeasuresWithThePartsStagesDistancesThenLetsThemGo) {
+  // The parts stage hands over the distances it measured the convexity on
+  // (PartSurface::solid). Handed distances of the bracket moved 100 away, the
+  // refinement must find the block clear of it (its own mesh would put the
+  // block 0.3 into the leg); afterwards no part holds them.
+  std::vector<Part> parts = {
+      mesh_part("bracket", shapes::l_bracket(40, 5, 20), false),
+      mesh_part("deep", shapes::box(Vec3(4.7, 5, 2), Vec3(25, 25, 18)), true)};
+  auto moved = std::make_shared<const SolidDistance>(
+      shapes::translated(shapes::l_bracket(40, 5, 20), Vec3(100, 0, 0)));
+  const std::weak_ptr<const SolidDistance> handed = moved;
+  parts[0].surface->solid = std::move(moved);
+  const std::vector<std::pair<int, int>> pairs = {{0, 1}};
+  RunOptions options;
+  options.tolerance = 0.1;
+  options.quiet = true;
+  const std::function<PairChecks(int, int)> checks = [](int, int) { return PairChecks{}; };
+  IpoptLocalSolver ipopt;
+  std::vector<PairResult> results = {
+      solve_part_pair(0, parts[0], 1, parts[1], SolverSettings{}, 0.1, ipopt, checks(0, 1))};
+  ASSERT_EQ(results[0].status, Status::kInterference);
+  refine_nonconvex_pairs(parts, pairs, results, options, checks);
+  EXPECT_EQ(results[0].status, Status::kSeparated);
+  EXPECT_EQ(results[0].depth_source, "mesh-test");
+  EXPECT_FALSE(parts[0].surface->solid);
+  EXPECT_TRUE(handed.expired());
 }

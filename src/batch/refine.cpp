@@ -153,16 +153,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-Points placed(const Points& p, const Mat4& m) {
-  return (m.topLeftCorner<3, 3>() * p).colwise() + Vec3(m.topRightCorner<3, 1>());
-}
-
 // The surface a mesh test sees: the part's own, else (inline or convex parts
 // without one kept) the triangulated hull of each of its pieces.
 Mesh surface_mesh(const Part& p) {
   if (p.surface && p.surface->mesh) return *p.surface->mesh;
   if (p.surface && p.surface->file_mesh)
-    return {placed(p.surface->file_mesh->vertices, p.surface->placement),
+    return {apply_placement(p.surface->file_mesh->vertices, p.surface->placement),
             p.surface->file_mesh->triangles};
   Mesh m;
   std::vector<Vec3> v;
@@ -264,7 +260,8 @@ void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
     d.complete = f.result.complete;
     d.note = f.result.note;
     for (const Points& piece : f.result.pieces)
-      if (piece.cols() > 0) d.pieces.push_back(convex_hull(placed(piece, p.surface->placement)));
+      if (piece.cols() > 0)
+        d.pieces.push_back(convex_hull(apply_placement(piece, p.surface->placement)));
     if (d.pieces.empty()) {
       d.pieces = p.pieces;
       d.complete = false;
@@ -352,6 +349,12 @@ std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& part
   return out;
 }
 
+// The parts stage's distances (PartSurface::solid), once taken or not needed.
+void release_solids(std::vector<Part>& parts) {
+  for (Part& p : parts)
+    if (p.surface) p.surface->solid.reset();
+}
+
 // The steps of refine_nonconvex_pairs over its flagged pairs, each a method;
 // the state one step hands to the next is the members below.
 class Refinement {
@@ -383,10 +386,14 @@ class Refinement {
       if (used[p]) used_list.push_back(static_cast<int>(p));
     parallel_for(used_list.size(), options_.jobs, [&](size_t n) {
       try {  // once per part, shared by its pairs and threads
-        solids_[used_list[n]] = std::make_unique<SolidDistance>(surface_mesh(parts_[used_list[n]]));
+        const Part& part = parts_[used_list[n]];
+        solids_[used_list[n]] = part.surface && part.surface->solid
+                                    ? part.surface->solid
+                                    : std::make_shared<const SolidDistance>(surface_mesh(part));
       } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
       }
     });
+    release_solids(parts_);  // the used ones are in solids_ now
     const auto mesh_of = [&](int p) { return solids_[p] ? &solids_[p]->mesh() : nullptr; };
     verdicts_.resize(flagged_.size());
     Progress progress(flagged_.size(), options_.quiet, "mesh tests");
@@ -506,7 +513,7 @@ class Refinement {
   std::vector<size_t> flagged_;  ///< indices into pairs_ of the pairs to refine
   std::vector<std::string> keys_;
   std::vector<std::pair<size_t, StoredRefinement>> hits_;
-  std::vector<std::unique_ptr<SolidDistance>> solids_;  ///< per part, steps 1–2
+  std::vector<std::shared_ptr<const SolidDistance>> solids_;  ///< per part, steps 1–2
   // Per flagged pair (index n into flagged_):
   std::vector<MeshVerdict> verdicts_;
   std::vector<size_t> solve_;  ///< the pairs whose pieces decide
@@ -521,7 +528,7 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks) {
   Refinement refinement(parts, pairs, results, options, checks);
-  if (refinement.empty()) return;
+  if (refinement.empty()) return release_solids(parts);
   refinement.take_from_cache();
   refinement.test_meshes();
   refinement.measure_thicknesses();

@@ -299,8 +299,12 @@ Points distinct_columns(const Points& p) {
 
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
                                  const Points* hull_points) {
+  return screen_convexity(m, PreparedMesh(m), concavity_tol, stop_above, hull_points);
+}
+
+ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double concavity_tol,
+                                 double stop_above, const Points* hull_points) {
   ConvexityScreen r;
-  const PreparedMesh part(m);
   r.closed = part.closed();
   const HullOfPoints h =
       hull_of_points(hull_points ? *hull_points : m.vertices);  // the estimate's too

@@ -112,6 +112,10 @@ struct ConvexityScreen {
 };
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
                                  const Points* hull_points = nullptr);
+/// The same with m's prepared mesh given (a caller that keeps one for later
+/// queries builds it once).
+ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double concavity_tol,
+                                 double stop_above, const Points* hull_points = nullptr);
 
 /// Measures m once. A convex (within concavity_tol) single-shell mesh is its
 /// own piece. Open meshes: the concavity is against the surface, volume 0.

@@ -138,7 +138,9 @@ SolidDistance::SolidDistance(const Mesh& mesh) : whole_(mesh) {
   for (int f = 0; f < whole_.faces(); ++f)
     for (const Vec3& v : whole_.face(f)) box_in_axes_.extend(Vec3(axes_.transpose() * v));
   hair_ = 1e-9 * std::max(box_.diagonal().norm(), box_.max().cwiseAbs().maxCoeff());
-  std::vector<Mesh> shells = shells_of(mesh);
+  // One shell (the prepared mesh counts them as shells_of groups them): the
+  // whole mesh's even-odd solid, with no regrouping to do.
+  std::vector<Mesh> shells = whole_.shells() > 1 ? shells_of(mesh) : std::vector<Mesh>{};
   if (shells.empty()) {
     if (!closed_) note_ = "open mesh: no inside";
     return;

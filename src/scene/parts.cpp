@@ -2,6 +2,7 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -13,6 +14,7 @@
 #include "file_hash.h"
 #include "geometry/convexity.h"
 #include "geometry/coordinate_resolution.h"
+#include "geometry/solid_distance.h"
 #include "hash.h"
 #include "parallel_for.h"
 #include "scene/convexity_cache.h"
@@ -23,6 +25,10 @@
 #include "tolerances.h"
 
 namespace pd {
+
+Points apply_placement(const Points& p, const Mat4& placement) {
+  return (placement.topLeftCorner<3, 3>() * p).colwise() + Vec3(placement.topRightCorner<3, 1>());
+}
 
 long Part::hull_vertex_count() const {
   long n = 0;
@@ -72,6 +78,11 @@ struct MeshFile {
   double concavity = 0.0;  ///< file units
   bool closed = false;
   double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
+  int instances = 0;                                 ///< distinct placements of it
+  // The only instance's placed mesh and its distances, when the convexity was
+  // measured on them and the kept budget held them (PartSurface::solid).
+  std::shared_ptr<const Mesh> placed;
+  std::shared_ptr<const SolidDistance> solid;
   // Under tolerance auto: the sag (file units; from the hull cache entry when
   // it holds one), and the concavity tolerance it gives the file (scene units).
   std::optional<TessellationSag> sag;
@@ -110,13 +121,50 @@ Mat4 placement(const PartSpec& spec) {
   return m;
 }
 
+// Whether a placement stretches every length alike (units and a rotation):
+// distances measured on the placed mesh are then the file's, times the stretch.
+bool similarity(const Mat4& placement) {
+  const Vec3 s =
+      Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues();
+  return s(0) - s(2) <= 1e-12 * s(0);
+}
+
+// Triangles whose placed distances the parts stage may keep for the
+// refinement, over the whole scene (tol::kKeptSolidTriangles).
+using KeptBudget = std::atomic<long>;
+
 // The file's nonconvexity, from the cache when it holds this file's bytes at
-// this tolerance, else measured (and stored, best effort).
-StoredConvexity convexity_of(const Mesh& m, const Points& hull_points, const std::string& hash,
-                             double tol, double stop_above, const std::string& cache_dir) {
-  const std::string key = convexity_key(hash, tol, stop_above);
+// this tolerance, else measured (and stored, best effort). A file with one
+// instance placed without stretch is measured on its placed mesh, whose
+// distances the refinement needs too: they are kept in `f` while `budget`
+// lasts (which decides only what is kept, never what is measured).
+StoredConvexity convexity_of(const PartSpec& spec, MeshFile& f, double concavity_tol,
+                             const std::string& cache_dir, KeptBudget& budget) {
+  const double tol = concavity_tol / f.max_stretch, stop_above = concavity_tol / f.min_stretch;
+  const std::string key = convexity_key(f.hash, tol, stop_above);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
-  const ConvexityScreen c = screen_convexity(m, tol, stop_above, &hull_points);
+  const Mesh& m = *f.mesh;
+  ConvexityScreen c;
+  const Mat4 to_scene = placement(spec);
+  if (f.instances == 1 && similarity(to_scene)) {
+    auto placed = std::make_shared<Mesh>();
+    placed->vertices = apply_placement(m.vertices, to_scene);
+    placed->triangles = m.triangles;
+    const Points hull_points = apply_placement(f.reduced[0], to_scene);
+    const long n = m.triangles.cols();
+    if (budget.fetch_sub(n) >= n) {
+      auto solid = std::make_shared<const SolidDistance>(*placed);
+      c = screen_convexity(*placed, solid->mesh(), concavity_tol, concavity_tol, &hull_points);
+      f.placed = std::move(placed);
+      f.solid = std::move(solid);
+    } else {
+      budget.fetch_add(n);
+      c = screen_convexity(*placed, concavity_tol, concavity_tol, &hull_points);
+    }
+    c.concavity.value /= f.max_stretch;  // file units, as the cache keeps it
+  } else {
+    c = screen_convexity(m, tol, stop_above, &f.reduced[0]);
+  }
   const StoredConvexity s{c.concavity.value, c.closed};
   write_cached_convexity(cache_dir, key, s);
   return s;
@@ -189,7 +237,7 @@ double auto_concavity_tol(const MeshFile& f, const AutoTolerance& a) {
 }
 
 void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache,
-          const AutoTolerance* auto_tol) {
+          const AutoTolerance* auto_tol, KeptBudget& budget) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
@@ -219,15 +267,15 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
       // Measured once, in file units; each instance scales the value by its own
       // stretch. Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
-      const StoredConvexity c =
-          convexity_of(*f.mesh, f.reduced[0], f.hash, concavity_tol / f.max_stretch,
-                       concavity_tol / f.min_stretch, cache.dir);
+      const StoredConvexity c = convexity_of(spec, f, concavity_tol, cache.dir, budget);
       f.concavity = c.concavity;
       f.closed = c.closed;
     }
   } catch (const std::exception& e) {
     f.reduced.clear();
     f.mesh.reset();
+    f.placed.reset();
+    f.solid.reset();
     f.error = load_error(spec, e);
   }
   f.read = {};
@@ -242,11 +290,16 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
   s.concavity = f.concavity * s.stretch;
   s.concavity_tol = f.concavity_tol;
   s.closed = f.closed;
+  s.solid = f.solid;                                   // of the placed mesh below, when kept
   if (!convex || spec.pieces == Pieces::kDecompose) {  // only what a refinement can use
-    Mesh placed;
-    placed.vertices = place_points(f.mesh->vertices, spec);
-    placed.triangles = f.mesh->triangles;
-    s.mesh = std::make_shared<const Mesh>(std::move(placed));
+    if (f.placed) {
+      s.mesh = f.placed;
+    } else {
+      Mesh placed;
+      placed.vertices = apply_placement(f.mesh->vertices, s.placement);
+      placed.triangles = f.mesh->triangles;
+      s.mesh = std::make_shared<const Mesh>(std::move(placed));
+    }
   }
   return s;
 }
@@ -266,7 +319,7 @@ Hull inline_hull(const PartSpec& spec, const PartsCache& cache) {
 
 /// One part from its spec; `file` is its mesh file, shared with other instances.
 Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, const PartsCache& cache,
-                const AutoTolerance* auto_tol) {
+                const AutoTolerance* auto_tol, KeptBudget& budget) {
   Part part;
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
@@ -277,7 +330,7 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
   }
   if (file) {
     std::call_once(file->loaded, [&] {
-      load(spec, *file, concavity_tol, cache, auto_tol);
+      load(spec, *file, concavity_tol, cache, auto_tol, budget);
     });  // the first instance reduces it
     if (file->error) {
       part.error = file->error;
@@ -415,6 +468,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       const double s = stretch(placement(*unique[u]));
       f.min_stretch = std::min(f.min_stretch, s);
       f.max_stretch = std::max(f.max_stretch, s);
+      ++f.instances;
     }
   if (!requests.empty()) {
     std::vector<LoadedMeshes> read =
@@ -436,9 +490,10 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       read[r] = {};
     }
   }
+  KeptBudget budget{tol::kKeptSolidTriangles};
   parallel_for(unique.size(), threads, [&](size_t u) {
     built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr,
-                          concavity_tol, cache, auto_tol);
+                          concavity_tol, cache, auto_tol, budget);
     if (on_built) on_built(users[u]);
   });
 

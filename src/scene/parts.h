@@ -18,6 +18,8 @@
 
 namespace pd {
 
+class SolidDistance;
+
 /// A mesh part's surface, kept for the nonconvex refinement (pieces auto and
 /// decompose): the file's mesh in its own coordinates (shared by its instances),
 /// where it is placed, and its nonconvexity measured once per file.
@@ -30,7 +32,17 @@ struct PartSurface {
   double concavity_tol = 0.0;  ///< what it was measured against (scene units; per file under auto)
   bool closed = false;         ///< the file's mesh bounds a solid
   std::shared_ptr<const Mesh> mesh;  ///< placed (scene units), when nonconvex
+  /// The distances of the placed file mesh (apply_placement), when the parts
+  /// stage built them to measure the convexity (a file's only instance,
+  /// placed without stretch; within tol::kKeptSolidTriangles in all): the
+  /// refinement takes them over.
+  std::shared_ptr<const SolidDistance> solid;
 };
+
+/// File points in scene units under a surface's placement: the one
+/// arithmetic every placed surface uses (the parts stage's and the
+/// refinement's), so they agree to the bit.
+Points apply_placement(const Points& p, const Mat4& placement);
 
 /// A part's convex decomposition, once the batch stage has made one (placed).
 struct PartDecomposition {
