@@ -198,3 +198,41 @@ TEST(Convexity, TheScreenFromTheHullsPointsIsTheScreenFromEveryCorner) {
     }
   }
 }
+
+TEST(Convexity, TheHullsOwnFacetsGiveItsVolumeAndArea) {
+  // A 32-sided prism (radius 5, height 30, side points doubled and interior
+  // points added) in float32 far from the origin: convex_hull's facets, taken
+  // by hull_of_points without a second qhull run, give the prism's volume and
+  // area by construction; every vertex lies on the inner side of every facet.
+  const int n = 32;
+  const double r = 5, height = 30;
+  const Vec3 far(20000.25, -15000.5, 9000);
+  Points pts(3, 4 * n + 10);
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * M_PI * k / n;
+    for (int z = 0; z < 2; ++z) {
+      const Vec3 v = far + Vec3(r * std::cos(a), r * std::sin(a), z * height);
+      pts.col(2 * k + z) = v.cast<float>().cast<double>();
+      pts.col(2 * n + 2 * k + z) = pts.col(2 * k + z);  // the same point twice
+    }
+  }
+  for (int k = 0; k < 10; ++k)
+    pts.col(4 * n + k) = (far + Vec3(0.1 * k, 0.2, 1 + 2 * k)).cast<float>().cast<double>();
+  HullTriangles facets;
+  const Hull h = convex_hull(pts, &facets);
+  ASSERT_EQ(h.dimension, 3);
+  ASSERT_EQ(facets.triangles.size(), facets.normals.size());
+  const HullOfPoints made = hull_of_points(h.vertices, facets);
+  ASSERT_TRUE(made.solid());
+  // float32 moves each corner by up to ~1e-3 at 20,000: relative 1e-4 holds.
+  const double base = 0.5 * n * r * r * std::sin(2 * M_PI / n);
+  const double side = n * 2 * r * std::sin(M_PI / n) * height;
+  EXPECT_NEAR(made.volume, base * height, 1e-4 * base * height);
+  EXPECT_NEAR(made.total_area, 2 * base + side, 1e-4 * (2 * base + side));
+  for (size_t i = 0; i < made.f.normals.size(); ++i) {
+    EXPECT_NEAR(made.f.normals[i].norm(), 1.0, 1e-12);
+    for (long v = 0; v < made.centred.cols(); ++v)
+      EXPECT_LE(made.f.normals[i].dot(made.centred.col(v)) + made.f.offsets[i], 1e-9 * height)
+          << "facet " << i << " vertex " << v;
+  }
+}

@@ -18,10 +18,22 @@ namespace pd {
 
 namespace {
 
-// Fills h's facets from h.centred; false when it is flat or smaller.
-bool facets_of(HullOfPoints& h) {
+// Fills h's facets from h.centred (or takes `known`); false when it is flat
+// or smaller.
+bool facets_of(HullOfPoints& h, const HullTriangles* known = nullptr) {
   const Points& p = h.centred;
-  if (p.cols() < 4 || !hull_facets(p, h.f)) return false;
+  if (known) {
+    if (known->triangles.empty()) return false;
+    h.f.triangles = known->triangles;
+    h.f.normals = known->normals;
+    for (size_t i = 0; i < h.f.triangles.size(); ++i) {  // through the farthest corner
+      double at = -INFINITY;
+      for (int k : h.f.triangles[i]) at = std::max(at, h.f.normals[i].dot(p.col(k)));
+      h.f.offsets.push_back(-at);
+    }
+  } else if (p.cols() < 4 || !hull_facets(p, h.f)) {
+    return false;
+  }
   h.facets = true;
   for (std::size_t i = 0; i < h.f.triangles.size(); ++i) {
     const auto& t = h.f.triangles[i];
@@ -40,6 +52,14 @@ HullOfPoints hull_of_points(const Points& points) {
   h.centre = points.rowwise().mean();
   h.centred = points.colwise() - h.centre;
   facets_of(h);
+  return h;
+}
+
+HullOfPoints hull_of_points(const Points& points, const HullTriangles& facets) {
+  HullOfPoints h;
+  h.centre = points.rowwise().mean();
+  h.centred = points.colwise() - h.centre;
+  facets_of(h, &facets);
   return h;
 }
 
@@ -298,16 +318,18 @@ Points distinct_columns(const Points& p) {
 }  // namespace
 
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
-                                 const Points* hull_points) {
-  return screen_convexity(m, PreparedMesh(m), concavity_tol, stop_above, hull_points);
+                                 const Points* hull_points, const HullTriangles* hull_facets) {
+  return screen_convexity(m, PreparedMesh(m), concavity_tol, stop_above, hull_points, hull_facets);
 }
 
 ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double concavity_tol,
-                                 double stop_above, const Points* hull_points) {
+                                 double stop_above, const Points* hull_points,
+                                 const HullTriangles* hull_facets) {
   ConvexityScreen r;
   r.closed = part.closed();
-  const HullOfPoints h =
-      hull_of_points(hull_points ? *hull_points : m.vertices);  // the estimate's too
+  const Points& points = hull_points ? *hull_points : m.vertices;
+  const HullOfPoints h = hull_points && hull_facets ? hull_of_points(points, *hull_facets)
+                                                    : hull_of_points(points);  // the estimate's too
   const double hull_volume = h.solid() ? h.volume : 0.0;
   const double missing = r.closed ? hull_volume - mesh_volume(m) : -1.0;
   // A coarse screen first, without the part's polygons (building them costs

@@ -50,6 +50,9 @@ struct HullOfPoints {
   bool solid() const { return facets && volume > 0; }
 };
 HullOfPoints hull_of_points(const Points& points);
+/// The same from facets already found (convex_hull's, of these points:
+/// corners index `points`, unit normals in their axes), without qhull.
+HullOfPoints hull_of_points(const Points& points, const HullTriangles& facets);
 
 /// `points` need at least 4 affinely independent points (else value 0: a flat
 /// or smaller hull lies on the part). `missing_volume` is hull volume − the
@@ -111,11 +114,14 @@ struct ConvexityScreen {
   Concavity concavity;
 };
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
-                                 const Points* hull_points = nullptr);
+                                 const Points* hull_points = nullptr,
+                                 const HullTriangles* hull_facets = nullptr);
 /// The same with m's prepared mesh given (a caller that keeps one for later
-/// queries builds it once).
+/// queries builds it once), and the hull's facets when the caller has them
+/// (of `hull_points`, as hull_of_points takes them).
 ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double concavity_tol,
-                                 double stop_above, const Points* hull_points = nullptr);
+                                 double stop_above, const Points* hull_points = nullptr,
+                                 const HullTriangles* hull_facets = nullptr);
 
 /// Measures m once. A convex (within concavity_tol) single-shell mesh is its
 /// own piece. Open meshes: the concavity is against the surface, volume 0.

@@ -61,6 +61,11 @@ Points select(const Points& p, const std::vector<int>& ids) {
 }  // namespace
 
 Hull convex_hull(const Points& pts) {
+  return convex_hull(pts, nullptr);
+}
+
+Hull convex_hull(const Points& pts, HullTriangles* facets) {
+  if (facets) *facets = HullTriangles{};
   if (pts.cols() == 0) throw std::invalid_argument("no vertices");
   if (!pts.allFinite()) throw std::invalid_argument("non-finite (NaN or Inf) coordinates");
 
@@ -93,10 +98,30 @@ Hull convex_hull(const Points& pts) {
     dim = 2;
 
   if (dim == 3) {
-    QhullSession s(3, interleave(c, Eigen::Matrix3d::Identity()), "qhull");
+    // Triangulated output ("Qt") changes no vertex, only how facets are listed.
+    QhullSession s(3, interleave(c, Eigen::Matrix3d::Identity()), "qhull Qt");
     if (s.ok()) {
-      h.vertices = select(pts, s.vertex_ids());
+      const std::vector<int> ids = s.vertex_ids();
+      h.vertices = select(pts, ids);
       h.dimension = 3;
+      if (facets) {  // c is pts moved and scaled alike: the normals hold for pts
+        qhT* qh = s.qh();
+        facetT* facet;
+        vertexT *vertex, **vertexp;
+        FORALLfacets {
+          std::array<int, 3> tri{0, 0, 0};
+          int k = 0;
+          FOREACHvertex_(facet->vertices) {
+            if (k < 3) {
+              const int id = qh_pointid(qh, vertex->point);
+              tri[k] = static_cast<int>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+            }
+            ++k;
+          }
+          facets->triangles.push_back(tri);
+          facets->normals.emplace_back(facet->normal[0], facet->normal[1], facet->normal[2]);
+        }
+      }
       return h;
     }
     // Nearly flat beyond qhull's precision: fall back to the 2-D hull of the

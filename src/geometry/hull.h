@@ -21,6 +21,16 @@ struct Hull {
 /// Throws std::invalid_argument for an empty set or non-finite coordinates.
 Hull convex_hull(const Points& pts);
 
+/// The triangulated facets of a solid hull as convex_hull found them: corners
+/// as indices into Hull::vertices, outward unit normals in the input's axes.
+struct HullTriangles {
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Vec3> normals;
+};
+/// The same, with the facets of the same qhull run into `facets` when the
+/// hull is solid (dimension 3; else `facets` is left empty).
+Hull convex_hull(const Points& pts, HullTriangles* facets);
+
 /// A triangulated 3-D hull with outward unit normals: each facet satisfies
 /// normal·x + offset <= 0 for every point of the hull.
 struct HullFacets {

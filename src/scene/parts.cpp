@@ -69,6 +69,7 @@ struct MeshFile {
   LoadedMeshes read;            ///< as the loader returned it; freed once reduced
   std::vector<Points> reduced;  ///< per piece, file coordinates
   std::vector<long> counts;     ///< vertices per piece as read
+  HullTriangles facets;         ///< piece 0's hull facets, when hulled here (not cached)
   std::optional<std::string> error;
   std::vector<std::string> warnings;  ///< the loader's (a PLY header line skipped, …)
   bool hulls_cached = false;          ///< `reduced` and `counts` came from the hull cache
@@ -151,19 +152,24 @@ StoredConvexity convexity_of(const PartSpec& spec, MeshFile& f, double concavity
     placed->vertices = apply_placement(m.vertices, to_scene);
     placed->triangles = m.triangles;
     const Points hull_points = apply_placement(f.reduced[0], to_scene);
+    HullTriangles facets = f.facets;  // turned with the part
+    for (Vec3& n : facets.normals) n = (to_scene.topLeftCorner<3, 3>() * n).normalized();
+    const HullTriangles* known = facets.triangles.empty() ? nullptr : &facets;
     const long n = m.triangles.cols();
     if (budget.fetch_sub(n) >= n) {
       auto solid = std::make_shared<const SolidDistance>(*placed);
-      c = screen_convexity(*placed, solid->mesh(), concavity_tol, concavity_tol, &hull_points);
+      c = screen_convexity(*placed, solid->mesh(), concavity_tol, concavity_tol, &hull_points,
+                           known);
       f.placed = std::move(placed);
       f.solid = std::move(solid);
     } else {
       budget.fetch_add(n);
-      c = screen_convexity(*placed, concavity_tol, concavity_tol, &hull_points);
+      c = screen_convexity(*placed, concavity_tol, concavity_tol, &hull_points, known);
     }
     c.concavity.value /= f.max_stretch;  // file units, as the cache keeps it
   } else {
-    c = screen_convexity(m, tol, stop_above, &f.reduced[0]);
+    c = screen_convexity(m, tol, stop_above, &f.reduced[0],
+                         f.facets.triangles.empty() ? nullptr : &f.facets);
   }
   const StoredConvexity s{c.concavity.value, c.closed};
   write_cached_convexity(cache_dir, key, s);
@@ -248,7 +254,8 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
       f.warnings = f.read.warnings;
       for (const Mesh& m : meshes) {
         f.counts.push_back(m.vertices.cols());
-        f.reduced.push_back(convex_hull(m.vertices).vertices);
+        f.reduced.push_back(
+            convex_hull(m.vertices, f.reduced.empty() ? &f.facets : nullptr).vertices);
       }
       store = true;
     }
