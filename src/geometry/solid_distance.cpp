@@ -284,8 +284,19 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   std::vector<int> faces;
   a.faces_in_turned_box(R, Vec3::Zero(), box.min(), box.max(), faces);
   int near_face = -1;  // the samples come in runs close together
+  // The last point measured and its upper bound: sd is 1-Lipschitz, so no
+  // point within r of it lies deeper than that bound + r. A point this shows
+  // to be shallower than the deepest found (by more than the values'
+  // rounding) cannot change it, and is not measured: the result is the one
+  // measuring it would give.
+  Vec3 last = Vec3::Zero();
+  double last_upper = INFINITY;
+  const double rounding = 4 * b.noise() + 1e-12 * b.box().diagonal().norm();
+  const auto reach = [&](const Vec3& p) { return last_upper + (p - last).norm(); };
   const auto sample = [&](const Vec3& p) {
     const DistanceBounds d = b.at(p, &near_face, false);  // the lower bound is all it needs
+    last = p;
+    last_upper = d.upper;
     if (!(d.lower > best.depth)) return d.lower;
     best.depth = d.lower;
     best.at = p;
@@ -298,7 +309,9 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
   std::set<std::array<double, 3>> corners;
   for (int f : faces)
     for (const Vec3& p : a.face(f))
-      if (in_box(p) && corners.insert({p.x(), p.y(), p.z()}).second) sample(p);
+      if (in_box(p) && corners.insert({p.x(), p.y(), p.z()}).second &&
+          !(reach(p) < best.depth - rounding))
+        sample(p);
   // Faces are split until a piece is within a quarter of b's thinnest extent
   // (a rod through a large wall face is sampled across its section); pieces
   // outside b's box are dropped, so the work follows the overlap. A piece is
@@ -334,9 +347,18 @@ SurfaceDepth surface_depth(const PreparedMesh& a, const SolidDistance& b, long m
     // Outside b's box, sd is at most minus the distance to it: a bound as
     // good as a sample's for ordering and pruning, and free.
     double value = -std::sqrt(box.squaredExteriorDistance(c));
-    if (box.contains(c)) ++samples, value = sample(centroid);
     const double farthest =
         std::max({(t[0] - centroid).norm(), (t[1] - centroid).norm(), (t[2] - centroid).norm()});
+    if (box.contains(c)) {
+      ++samples;
+      // A piece the last point shows to be shallower than the deepest found
+      // and than what matters is never split: measuring its centre would
+      // change nothing (it is counted all the same, so the budget runs alike).
+      const double r = reach(centroid);
+      if (r < best.depth - rounding && r + farthest < std::max(best.depth, only_above) - rounding)
+        return;
+      value = sample(centroid);
+    }
     open.push({t, value, value + farthest, level});
   };
   for (int f : faces) add(a.face(f), 0);
