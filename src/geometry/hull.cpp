@@ -52,6 +52,18 @@ std::vector<double> interleave(const Points& p, const Eigen::MatrixXd& basis) {
   return std::vector<double>(proj.data(), proj.data() + proj.size());
 }
 
+// The input indices of a triangulated ("Qt") facet's three corners.
+std::array<int, 3> facet_corners(qhT* qh, facetT* facet) {
+  std::array<int, 3> tri{0, 0, 0};
+  int k = 0;
+  vertexT *vertex, **vertexp;
+  FOREACHvertex_(facet->vertices) {
+    if (k < 3) tri[k] = qh_pointid(qh, vertex->point);
+    ++k;
+  }
+  return tri;
+}
+
 Points select(const Points& p, const std::vector<int>& ids) {
   Points out(3, ids.size());
   for (size_t k = 0; k < ids.size(); ++k) out.col(k) = p.col(ids[k]);
@@ -107,17 +119,10 @@ Hull convex_hull(const Points& pts, HullTriangles* facets) {
       if (facets) {  // c is pts moved and scaled alike: the normals hold for pts
         qhT* qh = s.qh();
         facetT* facet;
-        vertexT *vertex, **vertexp;
         FORALLfacets {
-          std::array<int, 3> tri{0, 0, 0};
-          int k = 0;
-          FOREACHvertex_(facet->vertices) {
-            if (k < 3) {
-              const int id = qh_pointid(qh, vertex->point);
-              tri[k] = static_cast<int>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
-            }
-            ++k;
-          }
+          std::array<int, 3> tri = facet_corners(qh, facet);
+          for (int& id : tri)  // the input's index to the hull's
+            id = static_cast<int>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
           facets->triangles.push_back(tri);
           facets->normals.emplace_back(facet->normal[0], facet->normal[1], facet->normal[2]);
         }
@@ -157,17 +162,10 @@ bool hull_facets(const Points& pts, HullFacets& out) {
   if (!s.ok()) return false;
   qhT* qh = s.qh();
   facetT* facet;
-  vertexT *vertex, **vertexp;
   FORALLfacets {
     out.normals.emplace_back(facet->normal[0], facet->normal[1], facet->normal[2]);
     out.offsets.push_back(facet->offset);
-    std::array<int, 3> tri{0, 0, 0};
-    int k = 0;
-    FOREACHvertex_(facet->vertices) {
-      if (k < 3) tri[k] = qh_pointid(qh, vertex->point);
-      ++k;
-    }
-    out.triangles.push_back(tri);
+    out.triangles.push_back(facet_corners(qh, facet));
   }
   return true;
 }
