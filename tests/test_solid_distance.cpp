@@ -196,29 +196,27 @@ TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {
 
 TEST(SurfaceDepth, NeverBelowTheDeepestVertexWhateverTheBudget) {
   namespace sh = shapes;
+  // `m` turned about x, then y, and lowered until its lowest point is `depth`
+  // below z = 10 at (10, 10), the top of the blocks below.
+  const auto sunk = [](Mesh m, double about_x, double about_y, double depth) {
+    const Eigen::Matrix3d r =
+        (Eigen::AngleAxisd(about_x, Vec3::UnitX()) * Eigen::AngleAxisd(about_y, Vec3::UnitY()))
+            .toRotationMatrix();
+    for (Eigen::Index k = 0; k < m.vertices.cols(); ++k) m.vertices.col(k) = r * m.vertices.col(k);
+    const double low = m.vertices.row(2).minCoeff();
+    for (Eigen::Index k = 0; k < m.vertices.cols(); ++k)
+      m.vertices.col(k) += Vec3(10, 10, 10 - depth - low);
+    return m;
+  };
   // A cube on its corner, that corner 0.3 into a block: only the corner is deep.
   // The points measured are the ones that matter: a point is skipped only
   // when a measured neighbour shows it shallower than the deepest found.
-  Mesh corner = sh::box(Vec3(-2, -2, -2), Vec3(2, 2, 2));
-  const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(std::atan(std::sqrt(0.5)), Vec3::UnitX()) *
-                                Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()))
-                                   .toRotationMatrix();
-  for (Eigen::Index k = 0; k < corner.vertices.cols(); ++k)
-    corner.vertices.col(k) = tilt * corner.vertices.col(k);
-  const double low = corner.vertices.row(2).minCoeff();
-  for (Eigen::Index k = 0; k < corner.vertices.cols(); ++k)
-    corner.vertices.col(k) += Vec3(10, 10, 10 - 0.3 - low);
+  const Mesh corner =
+      sunk(sh::box(Vec3(-2, -2, -2), Vec3(2, 2, 2)), std::atan(std::sqrt(0.5)), M_PI / 4, 0.3);
   // A small foil tilted 0.6 into a block: its corners, all within 0.8 of one
   // another, lie at many depths (points near a shallow one may still be deeper).
-  Mesh foil = sh::box(Vec3(-0.25, -0.25, -0.025), Vec3(0.25, 0.25, 0.025));
-  const Eigen::Matrix3d lean =
-      (Eigen::AngleAxisd(0.7, Vec3::UnitX()) * Eigen::AngleAxisd(0.4, Vec3::UnitY()))
-          .toRotationMatrix();
-  for (Eigen::Index k = 0; k < foil.vertices.cols(); ++k)
-    foil.vertices.col(k) = lean * foil.vertices.col(k);
-  const double foil_low = foil.vertices.row(2).minCoeff();
-  for (Eigen::Index k = 0; k < foil.vertices.cols(); ++k)
-    foil.vertices.col(k) += Vec3(10, 10, 10 - 0.6 - foil_low);
+  const Mesh foil =
+      sunk(sh::box(Vec3(-0.25, -0.25, -0.025), Vec3(0.25, 0.25, 0.025)), 0.7, 0.4, 0.6);
   const std::pair<Mesh, Mesh> cases[] = {
       {sh::box(Vec3(5, 5, 7), Vec3(15, 5.05, 13)), sh::box(Vec3(0, 0, 0), Vec3(20, 20, 10))},
       {foil, sh::box(Vec3(0, 0, 0), Vec3(20, 20, 10))},
