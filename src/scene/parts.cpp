@@ -286,6 +286,7 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     f.error = load_error(spec, e);
   }
   f.read = {};
+  f.facets = {};  // the screen's only
 }
 
 PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
