@@ -140,7 +140,9 @@ TEST(Parts, ASoleInstancePlacedWithoutStretchKeepsTheDistancesItWasMeasuredOn) {
   };
   std::vector<std::string> files;
   std::string parts;
-  for (const auto& [shape, mesh] : shapes_made) {
+  for (const auto& made : shapes_made) {
+    const std::string& shape = made.first;  // a lambda below uses it: no structured binding
+    const Mesh& mesh = made.second;
     for (const char* name : {"sole", "inches", "twice", "stretched"}) {
       files.push_back(dir + shape + "_" + name + ".stl");
       pd::test::write_binary_stl(files.back(), mesh);
