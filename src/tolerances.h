@@ -168,6 +168,12 @@ inline constexpr double kConcavityFraction = 0.25;
 /// (absolute): a rotation written with 6 decimals (0.707107) passes, a scale
 /// (a units mistake, almost always) gets a warning with its factors.
 inline constexpr double kRigidPlacement = 1e-5;
+/// Numerical care, not accuracy: a placement whose largest and smallest
+/// stretch factors differ by at most this fraction stretches every length
+/// alike (a rotation, the units), so a file's convexity may be measured on its
+/// placed mesh and divided by the stretch (scene/parts.cpp): the two differ by
+/// rounding only. Anything else is measured in file coordinates.
+inline constexpr double kSimilarPlacement = 1e-12;
 
 /// A part whose size (largest box extent) is within this relative distance of
 /// 25.4, 1000 or 304.8 times (or 1/that) the median part size of its assembly

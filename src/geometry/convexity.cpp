@@ -24,8 +24,7 @@ bool facets_of(HullOfPoints& h, const HullTriangles* known = nullptr) {
   const Points& p = h.centred;
   if (known) {
     if (known->triangles.empty()) return false;
-    h.f.triangles = known->triangles;
-    h.f.normals = known->normals;
+    static_cast<HullTriangles&>(h.f) = *known;
     for (size_t i = 0; i < h.f.triangles.size(); ++i) {  // through the farthest corner
       double at = -INFINITY;
       for (int k : h.f.triangles[i]) at = std::max(at, h.f.normals[i].dot(p.col(k)));

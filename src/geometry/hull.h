@@ -31,12 +31,11 @@ struct HullTriangles {
 /// hull is solid (dimension 3; else `facets` is left empty).
 Hull convex_hull(const Points& pts, HullTriangles* facets);
 
-/// A triangulated 3-D hull with outward unit normals: each facet satisfies
-/// normal·x + offset <= 0 for every point of the hull.
-struct HullFacets {
-  std::vector<Vec3> normals;
+/// A triangulated 3-D hull with outward unit normals and their planes: each
+/// facet satisfies normal·x + offset <= 0 for every point of the hull
+/// (triangles index the input points).
+struct HullFacets : HullTriangles {
   std::vector<double> offsets;
-  std::vector<std::array<int, 3>> triangles;  ///< indices into the input points
 };
 
 /// Facets of the hull of a full-dimensional point set; returns false (and leaves

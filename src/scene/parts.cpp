@@ -111,8 +111,13 @@ bool keeps_surface(Pieces p) {
 }
 
 // The largest factor by which the placement stretches a length.
+// The placement's stretch factors, largest first.
+Vec3 stretches(const Mat4& placement) {
+  return Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues();
+}
+
 double stretch(const Mat4& placement) {
-  return Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues()(0);
+  return stretches(placement)(0);
 }
 
 // File coordinates to scene units: the unit conversion, then the transform.
@@ -125,9 +130,8 @@ Mat4 placement(const PartSpec& spec) {
 // Whether a placement stretches every length alike (units and a rotation):
 // distances measured on the placed mesh are then the file's, times the stretch.
 bool similarity(const Mat4& placement) {
-  const Vec3 s =
-      Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues();
-  return s(0) - s(2) <= 1e-12 * s(0);
+  const Vec3 s = stretches(placement);
+  return s(0) - s(2) <= tol::kSimilarPlacement * s(0);
 }
 
 // Triangles whose placed distances the parts stage may keep for the
@@ -271,8 +275,9 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
       if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
-      // Measured once, in file units; each instance scales the value by its own
-      // stretch. Voids count at the strictest instance's tolerance; the
+      // Measured once, kept in file units; each instance scales the value by its
+      // own stretch (a sole instance placed without stretch is measured on its
+      // placed mesh). Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
       const StoredConvexity c = convexity_of(spec, f, concavity_tol, cache.dir, budget);
       f.concavity = c.concavity;
