@@ -390,4 +390,17 @@ inline constexpr double kAutoToleranceMargin = 0.25;
 /// falls into ~25 patches, each an eighth of its diameter across.
 inline constexpr int kSagPatchCells = 8;
 
+/// B-rep parts (STEP, .brep) are meshed at this fraction of the tolerance as
+/// their linear deflection, unless the part or the scene gives one. A contact
+/// of curved faces leaves a mesh overlap up to the concave side's sag s ≤ δ;
+/// with the sags bounds, a mesh bracket [lo, hi] holds for the solids widened
+/// by 2δ (docs/solver.md, "B-rep parts"), so a contact is certified a false
+/// positive by the bound alone when hi + 2δ ≤ tolerance: at δ = tol/4, about
+/// 3δ ≤ tol with a quarter of the tolerance to spare for the bracket's width.
+inline constexpr double kDeflectionFraction = 0.25;
+/// Under tolerance auto, a B-rep part without a given deflection is meshed at
+/// this deflection in mm (its band then follows from the sags that gives):
+/// a 10 mm radius comes out in about 70 segments.
+inline constexpr double kAutoDeflectionMm = 0.01;
+
 }  // namespace pd::tol
