@@ -403,4 +403,18 @@ inline constexpr double kDeflectionFraction = 0.25;
 /// a 10 mm radius comes out in about 70 segments.
 inline constexpr double kAutoDeflectionMm = 0.01;
 
+/// Two exact solids closer than this fraction of the pair's size (or than
+/// kExactTouchMm, Open CASCADE's confusion tolerance) touch: the rounding of
+/// its distances, far below any tolerance.
+inline constexpr double kExactTouch = 1e-9;
+inline constexpr double kExactTouchMm = 1e-7;
+/// The time box of one pair's measurements on the exact solids (seconds; the
+/// pair timeout, when smaller, wins). Booleans on near-coincident free-form
+/// faces have taken 25 s; the Boolean stops at the box and the mesh verdict
+/// stands, with the reason.
+inline constexpr double kExactSeconds = 10.0;
+/// The share of that box the search for a point deep inside both solids (the
+/// thickness's lower bound) may use before the Boolean runs.
+inline constexpr double kExactLowerShare = 0.3;
+
 }  // namespace pd::tol

@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "batch/brep_confirm.h"
 #include "batch/content_hashes.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
@@ -182,6 +183,12 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   }
   RunOptions run_options = options;
   if (rules) scope_candidates(*rules, candidates, pair_checks, options, run_options);
+  // A pair with a B-rep part is reported once its exact check is made.
+  const auto on_pair = run_options.on_pair;
+  if (on_pair)
+    run_options.on_pair = [&, on_pair](const PairResult& r, const std::vector<Part>& p) {
+      if (!held_for_exact(p[r.a], p[r.b])) on_pair(r, p);
+    };
   const std::vector<std::pair<int, int>>& pairs = candidates.pairs;
   out.all_pairs = candidates.all_pairs;
   out.culled = candidates.culled;
@@ -197,12 +204,16 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);
+  out.stages.refine = lap(t);
+  run_options.on_pair = on_pair;
+  confirm_brep_pairs(out.parts, pairs, out.pairs, run_options, pair_checks, units);
+  out.stages.exact = lap(t);
   if (rules) {
     for (PairResult& r : out.pairs) rules->note(r);
     out.rules = rules->coverage();
   }
   warn_tolerance_covers_part(out.parts, options.tolerance, units, out.pairs);
-  out.stages.refine = lap(t);
+  out.stages.refine += lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();
   return out;
 }

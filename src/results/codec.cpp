@@ -95,8 +95,17 @@ struct Writer {
   json value(const std::optional<T>& v) const {
     return value(*v);
   }
+  json value(ExactVerdict v) const {
+    if (encoding == Encoding::kComplete) return static_cast<int>(v);
+    return exact_verdict_name(v);
+  }
+  json value(ExactBasis b) const {
+    if (encoding == Encoding::kComplete) return static_cast<int>(b);
+    return exact_basis_name(b);
+  }
   json value(const SolveStats& s) const { return nested(s); }
   json value(const MotionTrace& m) const { return nested(m); }
+  json value(const ExactCheck& e) const { return nested(e); }
 
   template <class T>
   json nested(const T& v) const {
@@ -167,8 +176,17 @@ struct Reader {
     read(j, x);
     v = std::move(x);
   }
+  void read(const json& j, ExactVerdict& v) const {
+    v = encoding == Encoding::kComplete ? enum_from_value(j, ExactVerdict::kTimeout, "exact verdict")
+                                        : exact_verdict_from_name(j.get<std::string>());
+  }
+  void read(const json& j, ExactBasis& b) const {
+    b = encoding == Encoding::kComplete ? enum_from_value(j, ExactBasis::kSolids, "exact basis")
+                                        : exact_basis_from_name(j.get<std::string>());
+  }
   void read(const json& j, SolveStats& s) const { for_each_field(s, Reader{encoding, j}); }
   void read(const json& j, MotionTrace& m) const { for_each_field(m, Reader{encoding, j}); }
+  void read(const json& j, ExactCheck& e) const { for_each_field(e, Reader{encoding, j}); }
 };
 
 }  // namespace
