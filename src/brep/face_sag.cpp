@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "geometry/interpolation_bound.h"
+#include "geometry/triangle_tree.h"
 
 namespace pd {
 
@@ -169,7 +170,17 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
     const double v1 = std::max({uv[0].Y(), uv[1].Y(), uv[2].Y()});
     SecondDerivativeBounds m;
     double dev;
-    if (analytic_bounds(s, v0, v1, m)) {
+    if (s.GetType() == GeomAbs_Sphere) {
+      // The triangle lies inside the sphere (its corners are on it), at most
+      // r − d(c, T) from it; every point of the sphere lies on a ray from the
+      // centre through some triangle, no farther from it. Exact, where the
+      // parametrisation's derivatives blow up at the poles.
+      const gp_Sphere sphere = s.Sphere();
+      const Vec3 c(sphere.Location().X(), sphere.Location().Y(), sphere.Location().Z());
+      const auto v = [](const gp_Pnt& q) { return Vec3(q.X(), q.Y(), q.Z()); };
+      const Vec3 near = closest_on_triangle(c, v(p[0]), v(p[1]), v(p[2]));
+      dev = std::max(0.0, sphere.Radius() - (near - c).norm());
+    } else if (analytic_bounds(s, v0, v1, m)) {
       dev = triangle_interpolation_bound({Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()),
                                           Vec2(uv[2].X(), uv[2].Y())},
                                          m);
