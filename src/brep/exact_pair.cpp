@@ -27,6 +27,7 @@
 #include <memory>
 
 #include "brep/shape_tree.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -265,7 +266,10 @@ ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const 
     if (d <= r.touch * to_mm) {
       std::vector<gp_Pnt> starts;
       for (const Vec3& s : r.starts) starts.emplace_back(s.x() * to_mm, s.y() * to_mm, s.z() * to_mm);
-      lower_bound(a, b, starts, deadline, m);
+      const auto lower_deadline =
+          t0 + std::chrono::duration_cast<Clock::duration>(
+                   std::chrono::duration<double>(tol::kExactLowerShare * r.seconds));
+      lower_bound(a, b, starts, lower_deadline, m);
       m.lower *= to_scene;
       if (m.lower_at) m.lower_at = *m.lower_at * to_scene;
       if (r.common) {

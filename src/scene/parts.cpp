@@ -22,6 +22,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/setup_warnings.h"
 #include "scene/split_nodes.h"
+#include "scene/units.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -577,6 +578,12 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     p.motion = scene.parts[k].motion;
     if (!p.error) {
       if (auto w = non_rigid_placement(scene.parts[k].transform)) p.warnings.push_back(*w);
+      const PartSpec& spec = scene.parts[k];
+      if (spec.units_key && spec.mesh && format_unit(*spec.mesh) == "mm" && is_brep_path(*spec.mesh) &&
+          *spec.units_key != "mm")
+        p.warnings.push_back(spec.where + ": units \"" + *spec.units_key +
+                             "\" does not apply: a STEP file declares its own unit, and is read "
+                             "in mm (converted to the scene's)");
       if (p.resolution && scene.tolerance)
         if (auto w = resolution_warning(*scene.tolerance, *p.resolution, units))
           p.warnings.push_back(*w);
