@@ -2,12 +2,11 @@
 // deflection bound, the decision on the solids' measurements), then the whole
 // pipeline on STEP assemblies made with Open CASCADE (tests/brep_cases.h),
 // every nominal relation known by construction.
-#include "batch/brep_confirm.h"
-
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include "batch/brep_confirm.h"
 #include "brep_cases.h"
 #include "cli_support.h"
 

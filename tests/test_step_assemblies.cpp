@@ -51,14 +51,15 @@ std::vector<BrepCasePart> mechanisms() {
 
 // The nominal relation of each pair (by part names), and the exact verdicts
 // it allows.
-const std::map<std::pair<std::string, std::string>, std::pair<std::string, std::string>> kExpected = {
-    {{"plate-exact", "pin-exact"}, {"contact", "touching"}},
-    {{"plate-press", "pin-press"}, {"contact", "false_positive"}},
-    {{"plate-clear", "pin-clear"}, {"clearance", "separated"}},
-    {{"plate-sunk", "box-sunk"}, {"interference", "interference"}},
-    {{"housing", "buried"}, {"interference", "interference"}},
-    {{"shaft", "o-ring"}, {"contact", "touching"}},
-    {{"block", "clip"}, {"contact", "touching"}},
+const std::map<std::pair<std::string, std::string>, std::pair<std::string, std::string>> kExpected =
+    {
+        {{"plate-exact", "pin-exact"}, {"contact", "touching"}},
+        {{"plate-press", "pin-press"}, {"contact", "false_positive"}},
+        {{"plate-clear", "pin-clear"}, {"clearance", "separated"}},
+        {{"plate-sunk", "box-sunk"}, {"interference", "interference"}},
+        {{"housing", "buried"}, {"interference", "interference"}},
+        {{"shaft", "o-ring"}, {"contact", "touching"}},
+        {{"block", "clip"}, {"contact", "touching"}},
 };
 
 std::string name_of(const std::string& id) {
@@ -81,8 +82,8 @@ void expect_relations(const json& report, const std::string& what) {
     else if (relation == "clearance")
       EXPECT_EQ(status, "separated") << what << " " << a << " " << b;
     else
-      EXPECT_TRUE(status == "separated" || status == "false_positive") << what << " " << a << " "
-                                                                        << b << ": " << status;
+      EXPECT_TRUE(status == "separated" || status == "false_positive")
+          << what << " " << a << " " << b << ": " << status;
     ASSERT_TRUE(p.contains("exact")) << what << " " << a << " " << b;
     // A contact's exact answer may be certified as a false positive (within the
     // tolerance) or found touching on the solids: both are right.
@@ -146,8 +147,9 @@ TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {
   const json report = json::parse(r.out);
   ASSERT_EQ(report["parts"].size(), 2u);
   EXPECT_FALSE(report["parts"][0].contains("error") && !report["parts"][0]["error"].is_null());
-  EXPECT_NE(report["parts"][1]["error"].get<std::string>().find("\"assembly/label\" holds no solid"),
-            std::string::npos)
+  EXPECT_NE(
+      report["parts"][1]["error"].get<std::string>().find("\"assembly/label\" holds no solid"),
+      std::string::npos)
       << report["parts"][1].dump();
 }
 

@@ -25,9 +25,9 @@ std::string exact_text(const ExactCheck& e, const std::string& depth_source,
   const std::string how = exact_sentence(e);
   // Measured on the solids, the bracket is of their overlap thickness; widened
   // from the meshes, of what the mesh stage's depth is.
-  const std::string what =
-      e.basis == ExactBasis::kSolids || depth_source == "exact" ? "overlap thickness"
-                                                                : depth_meaning(depth_source);
+  const std::string what = e.basis == ExactBasis::kSolids || depth_source == "exact"
+                               ? "overlap thickness"
+                               : depth_meaning(depth_source);
   switch (e.verdict) {
     case ExactVerdict::kSkipped:
       return how;
