@@ -416,5 +416,11 @@ inline constexpr double kExactSeconds = 10.0;
 /// The share of that box the search for a point deep inside both solids (the
 /// thickness's lower bound) may use before the Boolean runs.
 inline constexpr double kExactLowerShare = 0.3;
+/// Effort: the exact distance of two solids measures face pairs nearest box
+/// first; past this many, faces whose boxes are apart bound the distance from
+/// below instead (a certified "apart by at least"). Face distances on free-form
+/// faces cost up to 0.1 s each: a 375-face frame against a 337-face part took
+/// 33 s to measure exactly at 70 mm apart.
+inline constexpr long kExactFacePairs = 16;
 
 }  // namespace pd::tol
