@@ -309,6 +309,10 @@ inline constexpr size_t kHtmlPageTriangles = 300000;
 /// The most parts of the rest of the assembly a finding's view shows around
 /// its pair (as faint boxes, the nearest first).
 inline constexpr size_t kHtmlContextParts = 24;
+/// The most inside tests one finding's drawn overlap of nonconvex parts may
+/// cost (report/html_geometry.h, solid_overlap_web_mesh): a few tenths of a
+/// second; past it the view shows the finding's `at` and its thickness alone.
+inline constexpr long kHtmlOverlapProbes = 200000;
 /// BCF viewpoints (--bcf, report/bcf_view.h): the perspective camera's vertical
 /// field of view (degrees; it just holds the finding's ball) and the aspect
 /// ratio it is written with (a 16:9 screen). Display only.
