@@ -111,9 +111,16 @@ TEST(HtmlGeometry, ANonconvexPairsOverlapIsThePartsOwnNotTheirHulls) {
                 x.z() > -step && x.z() < 10 + step && (x.x() < 4 + step || x.y() < 4 + step))
         << "a point of the drawn overlap outside the tray and the block: " << x.transpose();
   }
-  // It reaches along both arms to the block's far faces.
+  // It reaches along both arms to the block's far faces, and holds the tray's
+  // top face where the block covers it (two large triangles whose corners all
+  // lie outside the block).
   EXPECT_NEAR(p.row(0).maxCoeff(), 30, step);
   EXPECT_NEAR(p.row(1).maxCoeff(), 30, step);
+  bool on_the_top_face = false;
+  for (long k = 0; k < p.cols(); ++k)
+    on_the_top_face |= std::fabs(p(2, k) - 10) < 1e-3 && p(0, k) > 10 && p(0, k) < 25 &&
+                       p(1, k) > 2 && p(1, k) < 4;
+  EXPECT_TRUE(on_the_top_face);
   // The hulls' overlap (what the page drew before) fills the corner between the arms.
   const auto hulls = overlap_web_mesh(part_vertices(tray), part_vertices(block), 4000);
   ASSERT_TRUE(hulls);

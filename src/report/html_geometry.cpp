@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numeric>
 
@@ -179,12 +180,17 @@ class ShownSolid {
   const Points& vertices() const { return vertices_; }
   const std::vector<std::array<int, 3>>& triangles() const { return triangles_; }
 
-  bool inside(const Vec3& x) const {
-    if (solid_) return solid_->at(x, nullptr, false).lower > 0;
+  /// The coordinates' rounding (float32 steps of a mesh far from the origin).
+  double noise() const { return solid_ ? solid_->noise() : 0.0; }
+
+  /// Deeper than `margin` inside: a point on a face the two parts share (a
+  /// seated contact) is outside, whichever way the rounding goes.
+  bool inside(const Vec3& x, double margin) const {
+    if (solid_) return solid_->at(x, nullptr, false).lower > margin;
     for (const HullFacets& f : facets_) {
       bool in = true;
       for (size_t k = 0; in && k < f.normals.size(); ++k)
-        in = f.normals[k].dot(x) + f.offsets[k] < 0;
+        in = f.normals[k].dot(x) + f.offsets[k] < -margin;
       if (in) return true;
     }
     return false;
@@ -198,37 +204,79 @@ class ShownSolid {
   std::string why_;
 };
 
-// The triangles of one surface inside the other solid, within `region`: each
-// split into four until its longest edge is at most h (at most 8 times), each
-// piece kept when its centre is inside. Counts inside tests in `probes`.
+// The triangles of one surface inside the other solid, within `region` (a
+// point outside it is outside the other part's box). Corners are classified
+// by the other solid; a triangle whose corners all agree is kept or dropped
+// whole once its longest edge is at most `coarse` (a part poking through a
+// large face is caught at that scale), and one whose corners disagree is
+// halved across its longest edge down to `fine` (CAD's long slivers are cut
+// along their length only), its pieces kept by their centre's side. Counts
+// inside tests in `probes`.
 class OverlapSurface {
  public:
-  OverlapSurface(const ShownSolid& other, const Aabb& region, double h, long& probes)
-      : other_(other), region_(region), h_(h), probes_(probes) {}
-
-  void add(const Vec3& p, const Vec3& q, const Vec3& r, int level = 0) {
-    if (probes_ < 0) return;
-    const Aabb box{p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)};
-    if (!box.overlaps(region_)) return;
-    const double longest = std::max({(p - q).norm(), (q - r).norm(), (r - p).norm()});
-    if (longest > h_ && level < 8) {
-      const Vec3 pq = (p + q) / 2, qr = (q + r) / 2, rp = (r + p) / 2;
-      add(p, pq, rp, level + 1);
-      add(pq, q, qr, level + 1);
-      add(rp, qr, r, level + 1);
-      add(pq, qr, rp, level + 1);
-      return;
+  OverlapSurface(const ShownSolid& from, const ShownSolid& other, const Aabb& region, double coarse,
+                 double fine, double margin, long& probes)
+      : other_(other),
+        region_(region),
+        coarse_(coarse),
+        fine_(fine),
+        margin_(margin),
+        probes_(probes) {
+    const Points& v = from.vertices();
+    std::vector<signed char> side(static_cast<size_t>(v.cols()), -1);
+    auto corner = [&](int k) {
+      signed char& s = side[static_cast<size_t>(k)];
+      if (s < 0) s = inside(v.col(k)) ? 1 : 0;
+      return s == 1;
+    };
+    for (const auto& t : from.triangles()) {
+      if (probes_ < 0) return;
+      const Vec3 p = v.col(t[0]), q = v.col(t[1]), r = v.col(t[2]);
+      if (!Aabb{p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)}.overlaps(region_)) continue;
+      add(p, q, r, corner(t[0]), corner(t[1]), corner(t[2]), 0);
     }
-    if (--probes_ < 0) return;
-    if (other_.inside((p + q + r) / 3)) kept.insert(kept.end(), {p, q, r});
   }
 
   std::vector<Vec3> kept;  ///< three corners per triangle
 
  private:
+  bool inside(const Vec3& x) {
+    if ((x.array() < region_.lo.array()).any() || (x.array() > region_.hi.array()).any())
+      return false;
+    --probes_;
+    return other_.inside(x, margin_);
+  }
+
+  void add(const Vec3& p, const Vec3& q, const Vec3& r, bool ip, bool iq, bool ir, int level) {
+    if (probes_ < 0) return;
+    if (!Aabb{p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)}.overlaps(region_)) return;
+    const bool same = ip == iq && iq == ir;
+    const double longest = std::max({(p - q).norm(), (q - r).norm(), (r - p).norm()});
+    if (level >= 24 || longest <= (same ? coarse_ : fine_)) {
+      if (same ? ip : inside((p + q + r) / 3)) kept.insert(kept.end(), {p, q, r});
+      return;
+    }
+    // Halved across the longest edge: (a, b) that edge, c the opposite corner.
+    const double pq = (p - q).squaredNorm(), qr = (q - r).squaredNorm(), rp = (r - p).squaredNorm();
+    if (pq >= qr && pq >= rp)
+      halve(p, q, r, ip, iq, ir, level);
+    else if (qr >= rp)
+      halve(q, r, p, iq, ir, ip, level);
+    else
+      halve(r, p, q, ir, ip, iq, level);
+  }
+
+  // (a, m, c) and (m, b, c), m the middle of ab: the orientation of (a, b, c) kept.
+  void halve(const Vec3& a, const Vec3& b, const Vec3& c, bool ia, bool ib, bool ic, int level) {
+    const Vec3 m = (a + b) / 2;
+    const bool im = inside(m);
+    add(a, m, c, ia, im, ic, level + 1);
+    add(m, b, c, im, ib, ic, level + 1);
+  }
+
   const ShownSolid& other_;
   Aabb region_;
-  double h_;
+  double coarse_, fine_, margin_;
   long& probes_;
 };
 
@@ -334,15 +382,15 @@ SolidOverlap solid_overlap_web_mesh(const Part& a, const Part& b, size_t max_tri
       out.note = s->why_not();
       return out;
     }
-  const double h =
-      std::max((region.hi - region.lo).norm() / 48,
+  const double diagonal =
+      std::max((region.hi - region.lo).norm(),
                1e-9 * std::max((a.box.hi - a.box.lo).norm(), (b.box.hi - b.box.lo).norm()));
+  // Points within a few steps of the coordinates' rounding of a surface are on it.
+  const double margin = 2 * std::max({a.resolution.value_or(0.0), b.resolution.value_or(0.0),
+                                      sa.noise(), sb.noise(), 1e-12 * diagonal});
   long probes = tol::kHtmlOverlapProbes;
-  OverlapSurface in_b(sb, region, h, probes), in_a(sa, region, h, probes);
-  for (const auto& t : sa.triangles())
-    in_b.add(sa.vertices().col(t[0]), sa.vertices().col(t[1]), sa.vertices().col(t[2]));
-  for (const auto& t : sb.triangles())
-    in_a.add(sb.vertices().col(t[0]), sb.vertices().col(t[1]), sb.vertices().col(t[2]));
+  const OverlapSurface in_b(sa, sb, region, diagonal / 8, diagonal / 48, margin, probes);
+  const OverlapSurface in_a(sb, sa, region, diagonal / 8, diagonal / 48, margin, probes);
   if (probes < 0) {
     out.note = "more than " + count_text(static_cast<size_t>(tol::kHtmlOverlapProbes)) +
                " inside tests to draw";
@@ -350,7 +398,15 @@ SolidOverlap solid_overlap_web_mesh(const Part& a, const Part& b, size_t max_tri
   }
   Mesh soup;
   const long n = static_cast<long>(in_b.kept.size() + in_a.kept.size());
-  if (n == 0) return out;
+  if (n == 0) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "no part of either surface lies deeper than the coordinates' rounding (%.3g) "
+                  "inside the other",
+                  margin);
+    out.note = text;
+    return out;
+  }
   soup.vertices.resize(3, n);
   soup.triangles.resize(3, n / 3);
   long k = 0;

@@ -50,9 +50,11 @@ std::optional<WebMesh> overlap_web_mesh(const Points& a, const Points& b, size_t
 /// The overlap of two parts' own solids, where a part is nonconvex (its placed
 /// surface mesh; a convex part is its convex pieces): each part's surface
 /// triangles that lie inside the other part, the boundary of the intersection.
-/// Triangles within the parts' common box are split to a 48th of that box's
-/// diagonal and kept by their centre's side (a jagged edge at that scale, as
-/// drawn). `mesh` is empty when the parts do not overlap in a solid or when it
+/// Within the parts' common box, a triangle whose corners lie on one side of
+/// the other part is kept or dropped whole once it is an 8th of that box's
+/// diagonal, and one that crosses its surface is split to a 48th and kept by
+/// its pieces' centres (a jagged edge at that scale, as drawn). `mesh` is
+/// empty when the parts do not overlap in a solid or when it
 /// cannot be drawn cheaply; `note` then says why (a mesh that bounds no solid,
 /// more than tol::kHtmlOverlapProbes inside tests).
 struct SolidOverlap {
