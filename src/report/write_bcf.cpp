@@ -14,8 +14,8 @@
 #include "report/finding_text.h"
 #include "report/markup_escape.h"
 #include "report/writer.h"
-#include "report/zip_archive.h"
 #include "scene/units.h"
+#include "zip_archive.h"
 
 namespace pd {
 
