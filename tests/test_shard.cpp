@@ -219,6 +219,24 @@ TEST(Shard, MergeExitCodeIsTheRunsWithoutErrors) {
   const CliResult m = run("merge" + joined(shards) + " -o " + merged, "");
   EXPECT_EQ(m.code, 1) << m.err;
   expect_same_report(read_json(merged), read_json(full), "clean scene, 3 shards");
+  // Each shard exited 0 (run_shards), and its report says so: the verdict is
+  // the merge's, also for the shards holding the findings.
+  int with_findings = 0;
+  for (int k = 1; k <= 3; ++k) {
+    const auto summary = read_json(shards[k - 1])["summary"];
+    EXPECT_EQ(summary["exit_code"], 0) << k;
+    EXPECT_EQ(summary["verdict"], "deferred to pdcheck merge") << k;
+    if (summary["failing"].get<long>() > 0) with_findings = k;
+  }
+  ASSERT_GT(with_findings, 0);
+  EXPECT_FALSE(read_json(merged)["summary"].contains("verdict"));
+  const CliResult said = run(
+      s + " --jobs 2 --shard " + std::to_string(with_findings) + "/3 -o " + tmp("clean_said.json"),
+      "");
+  EXPECT_EQ(said.code, 0) << said.err;
+  EXPECT_NE(said.err.find("(exit code 1 for this shard alone) is pdcheck merge's"),
+            std::string::npos)
+      << said.err;
   // Shard and merged reports follow the report schema.
   for (const std::string& doc : {shards[0], merged}) {
     bool skip = false;

@@ -137,6 +137,8 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
                                  [](const SuppressionIssue& i) { return i.fails; });
   rv.exit_code = run_exit_code(incomplete, rv.failing > 0 || stale);
   if (!options.allow_empty && every_part_failed(run)) rv.exit_code = kExitBadInput;
+  rv.own_exit_code = rv.exit_code;
+  if (options.deferred) rv.exit_code = kExitClean, rv.deferred = true;
   return rv;
 }
 
