@@ -17,7 +17,7 @@ PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
     const auto it = options.baseline->findings.find(pr.fingerprint);
     pr.baseline_state =
         compare_finding(it == options.baseline->findings.end() ? nullptr : &it->second, r.status,
-                        r.depth, options.tolerance);
+                        r.depth, r.tolerance.value_or(options.tolerance));
   }
   if (options.suppressions) {
     const auto it = options.suppressions->by_fingerprint.find(pr.fingerprint);

@@ -519,7 +519,9 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     p.motion = scene.parts[k].motion;
     if (!p.error) {
       if (auto w = non_rigid_placement(scene.parts[k].transform)) p.warnings.push_back(*w);
-      if (p.resolution && scene.tolerance)
+      // Under auto nobody chose a tolerance, and each pair's band holds its
+      // parts' coordinate steps.
+      if (p.resolution && scene.tolerance && !scene.auto_tolerance)
         if (auto w = resolution_warning(*scene.tolerance, *p.resolution, units))
           p.warnings.push_back(*w);
     }
