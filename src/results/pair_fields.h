@@ -44,6 +44,7 @@ auto for_each_field(M& m, Visit&& visit) -> IfFieldsOf<M, MotionTrace> {
 template <class R, class Visit>
 auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"status"}, r.status);
+  visit(Field{"duplicate"}.unless_empty(), r.duplicate);
   // tolerance auto: the pair's own band and what it rests on (absent otherwise).
   visit(Field{"tolerance"}, r.tolerance);
   visit(Field{"tolerance_source"}.unless_empty(), r.tolerance_source);

@@ -239,13 +239,14 @@
       dd.append(document.createTextNode(v));
       dl.append(dt, dd);
     };
-    add('status', f.status.replace(/_/g, ' ') + (f.confirmed === false ? ' (unconfirmed: an upper bound)' : ''));
+    add('status', f.status.replace(/_/g, ' ') + (f.confirmed === false ? ' (unconfirmed: an upper bound)' : '') +
+      (f.duplicate ? ', duplicate: the same geometry at the same place (placed twice)' : ''));
     if (f.status === 'error') add('error', f.error || '');
     else {
       // The sentence is pdcheck's own (the one stderr, JUnit and SARIF give):
       // the page only adds the numbers beside it, never a claim of its own.
       if (f.text) add('finding', f.text);
-      add('depth', len(f.depth) + ' (tolerance ' + len(data.tolerance) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
+      add('depth', len(f.depth) + ' (tolerance ' + len(tolOf(f)) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
       if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') + ')');
       add('depth source', f.depth_source || 'hull');
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
