@@ -14,6 +14,7 @@
 #include "file_hash.h"
 #include "geometry/convexity.h"
 #include "geometry/coordinate_resolution.h"
+#include "geometry/same_position.h"
 #include "geometry/solid_distance.h"
 #include "hash.h"
 #include "parallel_for.h"
@@ -256,11 +257,14 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     bool store = false;  // the cache entry is new, or gains the sag
     if (!f.hulls_cached) {
       f.warnings = f.read.warnings;
+      long open = 0;
       for (const Mesh& m : meshes) {
         f.counts.push_back(m.vertices.cols());
         f.reduced.push_back(
             convex_hull(m.vertices, f.reduced.empty() ? &f.facets : nullptr).vertices);
+        open += boundary_edges(m);
       }
+      if (open > 0) f.warnings.push_back(open_mesh_warning(open));  // cached with the hulls
       store = true;
     }
     if (auto_tol && !f.sag) {
