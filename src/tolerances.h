@@ -179,12 +179,13 @@ inline constexpr double kSimilarPlacement = 1e-12;
 /// part's size (largest box extent) against the median of the other parts'.
 /// Within kUnitsLikeFactor of 25.4, 1000 or 304.8 times it (or 1/that), with
 /// two or more other parts, and kUnitsLikeGap times beyond every other part's
-/// size: the factor of inches, metres or feet against millimetres. At least kUnitsLikeFar times it (or 1/that): no ordinary
-/// assembly's part. A glTF part read in the metres its format declares, at
-/// least kUnitsLikeFormat times it: written in millimetres. A part
-/// kUnitsLikeGap times beyond every other part's size that meets no other
-/// part's box, where a units factor brings its size within the others' range
-/// (kUnitsLikeRange slack) and its box among theirs.
+/// size: the factor of inches, metres or feet against millimetres. At least
+/// kUnitsLikeFar times it (or 1/that): no ordinary assembly's part. A glTF
+/// part read in the metres its format declares, at least kUnitsLikeFormat
+/// times it: written in millimetres. A part kUnitsLikeGap times beyond every
+/// other part's size that meets no other part's box, where a units factor
+/// brings its size within the others' range (kUnitsLikeRange slack) and its
+/// box among theirs.
 inline constexpr double kUnitsLikeFactor = 0.03;
 /// Two parts are at the same place (a duplicate, batch/pair_solve.h) when
 /// their placed hulls' vertices agree within this fraction of the part's size
