@@ -188,6 +188,18 @@ TEST(SetupWarnings, AnInchPartAmongMillimetrePartsIsFoundByItsPlace) {
             w.npos)
       << w;
   EXPECT_NE(w.find("give the part \"units\": \"in\""), w.npos) << w;
+  // A bearing 29,500 mm from the origin (as scripts/make_cad_assemblies.py
+  // writes it): housing, rings, shaft and eight 8 mm balls, the outer ring
+  // exported in inches. The balls make the others' median 8 mm, so the ring
+  // (1.9 mm) is no outlier by size; its place says it.
+  std::vector<UnitsLikePart> bearing = {box_part(29452, 108), box_part(29486, 32.6),
+                                        box_part(29471, 70.9)};
+  for (int k = 0; k < 8; ++k) bearing.push_back(box_part(29484 + 3 * k, 8));
+  bearing.push_back(box_part(29478 / 25.4, 48.9 / 25.4));
+  const auto b = units_like_outliers(bearing);
+  for (size_t k = 0; k + 1 < bearing.size(); ++k) EXPECT_FALSE(b[k]) << k;
+  ASSERT_TRUE(b.back());
+  EXPECT_NEAR(b.back()->factor, 1 / 25.4, 1e-12);
   // Two parts: the same bolt beside its bracket, found the same way.
   const auto two = units_like_outliers({parts[4], box_part(190, 40)});
   ASSERT_TRUE(two[0]);
@@ -203,6 +215,13 @@ TEST(SetupWarnings, OrdinaryAssembliesRaiseNoUnitsWarning) {
                                                box_part(90, 16),    box_part(50, 30),
                                                box_part(-300, 400), box_part(60, 8)};
   for (const auto& o : units_like_outliers(assembly)) EXPECT_FALSE(o);
+  // An exploded view: every part apart from the others, moved out from the
+  // housing in the middle; scaled down they would fall into it, scaled up
+  // they fall nowhere.
+  const std::vector<UnitsLikePart> exploded = {box_part(-150, 300), box_part(400, 100),
+                                               box_part(-700, 60),  box_part(600, 30),
+                                               box_part(900, 4),    box_part(1100, 16)};
+  for (const auto& o : units_like_outliers(exploded)) EXPECT_FALSE(o);
   // Two parts: the washer on its housing, a 10 times smaller part beside
   // another, a 25 times smaller one apart whose scaled box lands nowhere.
   EXPECT_FALSE(units_like_outliers({box_part(0, 100), box_part(100, 4)})[1]);

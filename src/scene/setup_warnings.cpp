@@ -170,25 +170,30 @@ std::vector<std::optional<UnitsLikeOutlier>> units_like_outliers(
             factor = want;
             why.push_back("within " + num(100 * tol::kUnitsLikeFactor) + " % of it");
           }
-    // Beyond every other part's size, where a factor puts it among them in
-    // size and in place.
-    if (small || large) {
-      std::optional<double> placed;
-      for (const UnitsFactor& u : kUnitsFactors) {
-        const double f = large ? u.factor : 1.0 / u.factor;
+    // Its place: apart from every other part, where a factor puts it among
+    // them in size and in place. Scaled up (a part read too small, which the
+    // mistake moved towards the origin: scaled back it moves away, where only
+    // its own place holds parts) from half the others' median; scaled down,
+    // or by 10 (an exploded view's parts shrink into its middle), only from
+    // beyond every other part's size.
+    std::optional<double> placed;
+    for (const UnitsFactor& u : kUnitsFactors)
+      for (const double f : {u.factor, 1.0 / u.factor}) {
+        const bool up = f < 1;
+        const bool allowed =
+            up ? small || (ratio * tol::kUnitsLikeRange <= 1 && u.factor != 10.0) : large;
         const double fixed = size / f;
-        if (fixed * tol::kUnitsLikeRange < others.smallest(k) ||
+        if (!allowed || fixed * tol::kUnitsLikeRange < others.smallest(k) ||
             fixed > others.largest(k) * tol::kUnitsLikeRange || !placed_like(parts, k, f))
           continue;
         if (!placed || std::abs(std::log(fixed / ref)) < std::abs(std::log(size / *placed / ref)))
           placed = f;
       }
-      if (placed && (!factor || *factor == *placed)) {
-        factor = placed;
-        why.push_back("it meets no other part, and scaled by " +
-                      (*placed < 1 ? num(1 / *placed) : "1/" + num(*placed)) +
-                      " about the origin it meets one");
-      }
+    if (placed && (!factor || *factor == *placed)) {
+      factor = placed;
+      why.push_back("it meets no other part, and scaled by " +
+                    (*placed < 1 ? num(1 / *placed) : "1/" + num(*placed)) +
+                    " about the origin it meets one");
     }
     // So far off that no ordinary assembly has it.
     if (!factor && std::abs(std::log(ratio)) >= std::log(tol::kUnitsLikeFar)) {
