@@ -254,6 +254,7 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
                                             "b",
                                             "fingerprint",
                                             "status",
+                                            "duplicate",
                                             "tolerance",
                                             "tolerance_source",
                                             "tolerance_basis",

@@ -28,8 +28,9 @@ const std::string kNoShardEnv =
     "-u SLURM_ARRAY_TASK_COUNT ";
 
 // Groups 20 apart along x, each one relation between cubes of size 4 (a, b, and
-// c for a chain): interference (0.5 in), false_positive (0.05 in, tolerance 0.1),
-// touching (separated), 0.3 apart (a clearance violation at min 0.5), 0.7 apart
+// c for a chain): interference (0.5 in), 0.05 in (within the tolerance 0.1: a
+// clearance violation with a depth), touching (a clearance violation at distance
+// 0), 0.3 apart (a clearance violation at min 0.5), 0.7 apart
 // (checked: the reach is 1.0 from a per-pair minimum), a chain of three
 // overlapping cubes, 5 apart (culled). Plus a mesh part interfering with group 0,
 // an unreadable mesh and a mesh with NaN coordinates (part errors: exit 3).
@@ -163,8 +164,8 @@ TEST(Shard, MergedShardsEqualTheUnshardedReport) {
   const json want = read_json(full);
   // The scene has what the merge must get right.
   const json& sum = want["summary"];
-  for (const char* k : {"separated", "false_positive", "interference", "error",
-                        "clearance_violation", "part_errors", "unchecked", "culled"})
+  for (const char* k : {"separated", "interference", "error", "clearance_violation", "part_errors",
+                        "unchecked", "culled"})
     EXPECT_GT(sum[k].get<long>(), 0) << k << " missing from the test scene: " << sum.dump();
   // Every finding says where it is; groups of several findings (the chains of
   // three cubes: two of them ask the top cube to move up) are recomputed by the
