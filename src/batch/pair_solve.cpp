@@ -250,6 +250,8 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
       if (!checks.motion) witness = static_distance(a, b, s, ipopt, r);
+      // Touching within rounding is distance 0, as an overlap that small is depth 0.
+      if (r.distance && *r.distance <= tol::kTouch * size) r.distance = 0.0;
       // Under auto, the gap band of the convex sags where the gap is: the part
       // of the distance the tessellation can have made. Closer than the
       // minimum, touching included, is a violation (decide_clearance).

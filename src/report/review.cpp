@@ -8,6 +8,11 @@
 
 namespace pd {
 
+bool contact_violation(const PairResult& r) {
+  return r.status == Status::kClearanceViolation &&
+         (!r.distance || *r.distance == 0 || (r.gap_band && *r.distance <= *r.gap_band));
+}
+
 PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
                        const ReviewOptions& options, FailOn bar) {
   PairReview pr;
@@ -30,9 +35,10 @@ PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
         pr.not_holding = h;
     }
   }
-  // An expected contact: an overlap up to the rule's max_depth (docs/scene-format.md).
+  // An expected contact: an overlap up to the rule's max_depth, and the
+  // clearance violation a contact is (docs/scene-format.md).
   if (!pr.suppressed && options.expected && !r.expected.empty() &&
-      r.status == Status::kInterference) {
+      (r.status == Status::kInterference || contact_violation(r))) {
     const auto it = options.expected->by_name.find(r.expected);
     if (it != options.expected->by_name.end()) {
       const Suppression& s = options.expected->entries[it->second];

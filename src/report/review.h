@@ -80,6 +80,11 @@ struct Review {
   bool deferred = false;  ///< ReviewOptions::deferred
 };
 
+/// A clearance violation that is a contact: overlapping within the tolerance
+/// (no distance), touching (distance 0), or apart by no more than its gap
+/// band. An expected-contact rule suppresses it as it does an overlap.
+bool contact_violation(const PairResult& r);
+
 /// One pair alone (also for pairs streamed as they finish).
 PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
                        const ReviewOptions& options, FailOn bar);
