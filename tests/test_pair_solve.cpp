@@ -9,6 +9,7 @@
 #include "batch/pair_solve.h"
 #include "box_points.h"
 #include "inline_part.h"
+#include "scene/setup_warnings.h"
 
 using namespace pd;
 using pd_test::box_points;
@@ -124,6 +125,8 @@ TEST(PairSolve, APartPlacedTwiceAtTheSameSpotIsADuplicate) {
   EXPECT_EQ(r.status, Status::kInterference);
   EXPECT_TRUE(r.duplicate);
   EXPECT_NEAR(r.depth, 1.0, 1e-9);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(setup_warning_kind(r.warnings[0]), std::string(kPlacedTwice)) << r.warnings[0];
   // Its vertices in another order, one moved by rounding: the same.
   Part shuffled = inline_part("b", box_points(Vec3::Zero(), Vec3::Ones()).rowwise().reverse());
   shuffled.pieces[0].vertices(0, 0) += 1e-12;

@@ -303,6 +303,10 @@ TEST(SetupWarnings, OpenMeshesAndPartsPlacedTwice) {
                        "place (a part placed or exported twice: remove one of them)"),
             std::string::npos)
       << r.err;
+  EXPECT_NE(r.err.find("pdcheck: warning: part placed twice: box / box-again: the same geometry at "
+                       "the same place: remove one of them (and 1 more"),
+            std::string::npos)
+      << r.err;
 }
 
 // End to end: each smell is in the part's or pair's warnings and on stderr

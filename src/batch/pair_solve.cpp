@@ -12,6 +12,7 @@
 #include "batch/motion_sweep.h"
 #include "batch/piece_pairs.h"
 #include "geometry/depth_witness.h"
+#include "scene/setup_warnings.h"
 #include "solve/methods.h"
 #include "solve/signed_distance.h"
 #include "tolerances.h"
@@ -262,6 +263,9 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     }
     // A part placed twice: said as such (a moving one is not in one place).
     r.duplicate = !checks.motion && r.status != Status::kSeparated && same_placed_geometry(a, b);
+    if (r.duplicate)  // a set-up mistake: on stderr with the others (report/warning_lines.h)
+      r.warnings.push_back(std::string(kPlacedTwice) +
+                           ": the same geometry at the same place: remove one of them");
     // Every finding says where it is; a clean pair needs no place.
     if (r.status == Status::kSeparated)
       r.at.reset();

@@ -98,7 +98,7 @@ bool placed_like(const std::vector<UnitsLikePart>& parts, size_t k, double facto
 
 std::optional<std::string> setup_warning_kind(const std::string& warning) {
   for (const char* k : {kNonRigidPlacement, kUnitsLikeSize, kToleranceCoversPart,
-                        kToleranceBelowResolution, kOpenMesh}) {
+                        kToleranceBelowResolution, kOpenMesh, kPlacedTwice}) {
     const std::string prefix = std::string(k) + ": ";
     if (warning.compare(0, prefix.size(), prefix) == 0) return std::string(k);
   }

@@ -19,6 +19,7 @@ inline constexpr const char* kUnitsLikeSize = "size off the assembly's by a unit
 inline constexpr const char* kToleranceCoversPart = "tolerance covers a part";
 inline constexpr const char* kToleranceBelowResolution = "tolerance below coordinate resolution";
 inline constexpr const char* kOpenMesh = "open mesh";
+inline constexpr const char* kPlacedTwice = "part placed twice";
 
 /// The kind of a set-up warning (one of the constants above), or nullopt.
 std::optional<std::string> setup_warning_kind(const std::string& warning);
