@@ -5,12 +5,16 @@ library and one include view per layer, CMakeLists.txt).
 
     utilities -> geometry -> solve -> scene -> batch -> report -> apps/pdcheck
                              solve -> results -> batch
+                 geometry -> brep -> scene, batch
 
 A file may include headers of its own layer and of the layers below it, except
 that src/geometry and src/solve see only each other (solve above geometry) and
 src/tolerances.h, src/results (what a run found, between batch and report) sees
 the utilities, geometry and solve but not src/scene, and src/corpus (test and benchmark fixtures) only geometry,
-solve and src/tolerances.h. Nothing in the product includes src/corpus.
+solve and src/tolerances.h. Nothing in the product includes src/corpus. src/brep
+(STEP and .brep files, the exact solids) sees the utilities and geometry, and is
+the only place that includes Open CASCADE (a header named *.hxx): any other
+file under src or apps that includes one is flagged too.
 
 Usage: scripts/check_layers.py [SOURCE_ROOT] [--quiet]
 Prints the edge counts per pair of layers, then every edge that runs back up;
@@ -21,22 +25,25 @@ import os
 import re
 import sys
 
-ORDER = ["utilities", "geometry", "solve", "results", "scene", "batch", "report", "app"]
+ORDER = ["utilities", "geometry", "solve", "brep", "results", "scene", "batch", "report", "app"]
 # The layers whose headers each layer may include, besides its own.
 ALLOWED = {
     "utilities": {"tolerances"},
     "geometry": {"tolerances"},
     "solve": {"tolerances", "geometry"},
     "results": {"tolerances", "utilities", "geometry", "solve"},
-    "scene": {"tolerances", "utilities", "geometry", "solve"},
+    "brep": {"tolerances", "utilities", "geometry"},
+    "scene": {"tolerances", "utilities", "geometry", "solve", "brep"},
     "corpus": {"tolerances", "geometry", "solve"},
     "bench": set(ORDER) | {"tolerances", "corpus"},
 }
-ALLOWED["batch"] = ALLOWED["scene"] | {"results", "scene"}
+ALLOWED["batch"] = ALLOWED["scene"] | {"results", "scene"}  # brep through scene's set
 ALLOWED["report"] = ALLOWED["batch"] | {"batch"}
 ALLOWED["app"] = ALLOWED["report"] | {"report"}
-SUBDIRS = {"geometry", "solve", "results", "scene", "batch", "report", "corpus"}
+SUBDIRS = {"geometry", "solve", "brep", "results", "scene", "batch", "report", "corpus"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+# Open CASCADE's headers: <Name.hxx>, allowed in src/brep alone.
+OCCT_INCLUDE = re.compile(r'^\s*#\s*include\s+<([^>]+\.hxx)>', re.M)
 
 
 def layer_of(rel):
@@ -71,7 +78,11 @@ def main():
                 if src_layer == "tolerances":
                     src_layer = "utilities"
                 with open(path, encoding="utf-8") as text:
-                    includes = INCLUDE.findall(text.read())
+                    body = text.read()
+                includes = INCLUDE.findall(body)
+                if src_layer != "brep":
+                    for occt in OCCT_INCLUDE.findall(body):
+                        back.append(f"{rel}: #include <{occt}> (Open CASCADE outside src/brep)")
                 for inc in includes:
                     # As the compiler looks: beside the file, then under src/;
                     # report/html_assets.h is generated into the report layer.

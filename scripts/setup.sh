@@ -7,6 +7,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
           nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev libgtest-dev
           libcgal-dev libgmp-dev libmpfr-dev python3 python3-jsonschema libxml2-utils parallel
+          libocct-data-exchange-dev libtbb-dev  # STEP and .brep input (Open CASCADE 7.6)
           libzip-dev unzip  # --bcf writes a zip (libzip); its tests list and unpack it
           clang libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, symbolizer
           libjs-three chromium  # the HTML report: three.js inlined in it; its browser test

@@ -407,4 +407,31 @@ inline constexpr double kAutoToleranceMargin = 0.25;
 /// falls into ~25 patches, each an eighth of its diameter across.
 inline constexpr int kSagPatchCells = 8;
 
+/// B-rep parts (STEP, .brep) are meshed at this fraction of the tolerance as
+/// their linear deflection, unless the part or the scene gives one. A contact
+/// of curved faces leaves a mesh overlap up to the concave side's sag s ≤ δ;
+/// with the sags bounds, a mesh bracket [lo, hi] holds for the solids widened
+/// by 2δ (docs/solver.md, "B-rep parts"), so a contact is certified a false
+/// positive by the bound alone when hi + 2δ ≤ tolerance: at δ = tol/4, about
+/// 3δ ≤ tol with a quarter of the tolerance to spare for the bracket's width.
+inline constexpr double kDeflectionFraction = 0.25;
+/// Under tolerance auto, a B-rep part without a given deflection is meshed at
+/// this deflection in mm (its band then follows from the sags that gives):
+/// a 10 mm radius comes out in about 70 segments.
+inline constexpr double kAutoDeflectionMm = 0.01;
+
+/// Two exact solids closer than this fraction of the pair's size (or than
+/// kExactTouchMm, Open CASCADE's confusion tolerance) touch: the rounding of
+/// its distances, far below any tolerance.
+inline constexpr double kExactTouch = 1e-9;
+inline constexpr double kExactTouchMm = 1e-7;
+/// The time box of one pair's measurements on the exact solids (seconds; the
+/// pair timeout, when smaller, wins). Booleans on near-coincident free-form
+/// faces have taken 25 s; the Boolean stops at the box and the mesh verdict
+/// stands, with the reason.
+inline constexpr double kExactSeconds = 10.0;
+/// The share of that box the search for a point deep inside both solids (the
+/// thickness's lower bound) may use before the Boolean runs.
+inline constexpr double kExactLowerShare = 0.3;
+
 }  // namespace pd::tol

@@ -66,8 +66,11 @@ struct Fill {
     (*this)(f, x);
     v = x;
   }
+  void operator()(const Field&, pd::ExactVerdict& v) { v = pd::ExactVerdict::kFalsePositive; }
+  void operator()(const Field&, pd::ExactBasis& b) { b = pd::ExactBasis::kSolids; }
   void operator()(const Field&, pd::SolveStats& s) { for_each_field(s, *this); }
   void operator()(const Field&, pd::MotionTrace& m) { for_each_field(m, *this); }
+  void operator()(const Field&, pd::ExactCheck& e) { for_each_field(e, *this); }
 };
 
 std::string bits(double x) {
@@ -111,6 +114,8 @@ struct List {
   }
   void add(const std::string& key, Status s) const { add(key, int(s)); }
   void add(const std::string& key, pd::StopReason s) const { add(key, int(s)); }
+  void add(const std::string& key, pd::ExactVerdict v) const { add(key, int(v)); }
+  void add(const std::string& key, pd::ExactBasis b) const { add(key, int(b)); }
   template <class T>
   void add(const std::string& key, const std::array<T, 2>& v) const {
     add(key + "[0]", v[0]);
@@ -128,6 +133,9 @@ struct List {
   }
   void add(const std::string& key, const pd::MotionTrace& m) const {
     for_each_field(m, List{out, report, key + "."});
+  }
+  void add(const std::string& key, const pd::ExactCheck& e) const {
+    for_each_field(e, List{out, report, key + "."});
   }
 };
 
@@ -273,6 +281,7 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
                                             "reason",
                                             "clearance",
                                             "motion",
+                                            "exact",
                                             "method",
                                             "fallback",
                                             "warnings",
@@ -312,10 +321,11 @@ TEST(ResultsCodec, APartSurvivesTheReportAndItsReaders) {
   EXPECT_EQ(listed(pd::part_from_report(j)), listed(p));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{
-                      "id", "source", "vertices", "hull_vertices", "pieces", "warnings",
-                      "resolution", "box", "content_hash", "convex", "sag", "decomposition_seconds",
-                      "cached", "decomposition_note", "tags", "group", "sets", "error"}));
+  EXPECT_EQ(keys,
+            (std::vector<std::string>{"id", "source", "vertices", "hull_vertices", "pieces",
+                                      "warnings", "resolution", "box", "content_hash", "convex",
+                                      "sag", "tessellation", "decomposition_seconds", "cached",
+                                      "decomposition_note", "tags", "group", "sets", "error"}));
   EXPECT_EQ(j["box"].size(), 2u);
   EXPECT_EQ(j["sag"].size(), 3u);
 }

@@ -168,6 +168,11 @@ TEST(SetupWarnings, AGltfPartWrittenInMillimetresIsFoundInATwoPartScene) {
   // A glTF part 20 times the others' median already is suspect: a 2 mm pin
   // read as 2 m beside a 100 mm housing; one in proportion is not.
   EXPECT_TRUE(units_like_outliers({box_part(0, 100), box_part(0, 2000, 1000.0, "m")})[1]);
+  // A file that states its unit (STEP, converted by the reader) is never flagged.
+  UnitsLikePart step = box_part(0, 12000);
+  step.unit_from_file = true;
+  const auto s = units_like_outliers({box_part(0, 10), box_part(10, 10), step});
+  EXPECT_FALSE(s[2]);
   EXPECT_FALSE(units_like_outliers({box_part(0, 100), box_part(0, 150, 1000.0, "m")})[1]);
 }
 

@@ -5,11 +5,13 @@
 #include <map>
 #include <stdexcept>
 
+#include "batch/brep_confirm.h"
 #include "batch/content_hashes.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/rule_scope.h"
 #include "batch/run_stages.h"
+#include "brep/brep_file.h"
 #include "scene/setup_warnings.h"
 #include "scene/units.h"
 
@@ -62,8 +64,10 @@ void warn_units_like_sizes(const SceneSpec& scene, std::vector<Part>& parts, con
     if (k >= specs.size()) continue;
     const PartSpec& s = specs[k];
     seen[k].unit_mm = s.to_scene_units * unit_in_mm(units).value_or(1.0);
-    if (s.mesh && format_unit(*s.mesh) && s.to_scene_units == mesh_to_scene_units(*s.mesh, units))
-      seen[k].format_unit = format_unit(*s.mesh);
+    if (s.mesh && is_brep_path(*s.mesh))
+      seen[k].unit_from_file = true;  // a STEP file states its unit, the reader converts it
+    else if (s.mesh && format_unit(*s.mesh) && !s.units_key)
+      seen[k].format_unit = format_unit(*s.mesh);  // glTF: metres, by its specification
   }
   const auto off = units_like_outliers(seen);
   for (size_t k = 0; k < parts.size(); ++k) {
@@ -188,6 +192,12 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   }
   RunOptions run_options = options;
   if (rules) scope_candidates(*rules, candidates, pair_checks, options, run_options);
+  // A pair with a B-rep part is reported once its exact check is made.
+  const auto on_pair = run_options.on_pair;
+  if (on_pair)
+    run_options.on_pair = [&, on_pair](const PairResult& r, const std::vector<Part>& p) {
+      if (!held_for_exact(p[r.a], p[r.b])) on_pair(r, p);
+    };
   const std::vector<std::pair<int, int>>& pairs = candidates.pairs;
   out.all_pairs = candidates.all_pairs;
   out.culled = candidates.culled;
@@ -203,12 +213,16 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);
+  out.stages.refine = lap(t);
+  run_options.on_pair = on_pair;
+  confirm_brep_pairs(out.parts, pairs, out.pairs, run_options, pair_checks, units);
+  out.stages.exact = lap(t);
   if (rules) {
     for (PairResult& r : out.pairs) rules->note(r);
     out.rules = rules->coverage();
   }
   warn_tolerance_covers_part(out.parts, options.tolerance, units, out.pairs);
-  out.stages.refine = lap(t);
+  out.stages.refine += lap(t);
   out.seconds = std::chrono::duration<double>(t - t0).count();
   return out;
 }

@@ -25,6 +25,7 @@ struct StageTimes {
   double broad_phase = 0.0;  ///< candidate pairs found
   double solve = 0.0;        ///< every pair solved (the work queue)
   double refine = 0.0;       ///< nonconvex pairs: mesh tests, decompositions, piece pairs
+  double exact = 0.0;        ///< B-rep pairs: certified by the bound or measured on the solids
 };
 
 /// What a shard's report says about it (docs/report-format.md, "shard").

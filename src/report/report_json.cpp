@@ -115,6 +115,11 @@ PartResult part_result(const RunResult& r, size_t k) {
   }
   if (k < r.part_hashes.size()) out.content_hash = r.part_hashes[k];
   out.convex = p.convex;
+  if (p.brep) {
+    out.tessellation_deflection = p.brep->tessellation.deflection;
+    out.tessellation_sag = p.brep->tessellation.sag;
+    out.tessellation_basis = sag_basis_name(p.brep->tessellation.basis);
+  }
   if (p.sag) {
     out.sag_concave = p.sag->measured.concave;
     out.sag_convex = p.sag->measured.convex;
@@ -170,7 +175,8 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
                 {"parts", r.stages.parts},
                 {"broad_phase", r.stages.broad_phase},
                 {"solve", r.stages.solve},
-                {"refine", r.stages.refine}}}};
+                {"refine", r.stages.refine},
+                {"exact", r.stages.exact}}}};
   if (ctx.auto_tolerance) {
     json a = json::object();
     if (ctx.auto_tolerance->min) a["min"] = *ctx.auto_tolerance->min;

@@ -174,10 +174,10 @@ json finding_row(const json& p, const json& report) {
               {"fingerprint", p.value("fingerprint", "")},
               {"status", p.value("status", "")}};
   for (const char* key :
-       {"depth",      "direction",    "margin",         "depth_source", "pieces",
-        "confirmed",  "error",        "baseline_state", "suppressed",   "warnings",
-        "hull_depth", "depth_bounds", "distance",       "clearance",    "motion",
-        "at",         "reason",       "group",          "tolerance",    "duplicate"})
+       {"depth",    "direction",      "margin",     "depth_source", "pieces",     "confirmed",
+        "error",    "baseline_state", "suppressed", "warnings",     "hull_depth", "depth_bounds",
+        "distance", "clearance",      "motion",     "at",           "reason",     "group",
+        "exact",    "tolerance",      "duplicate"})
     if (p.contains(key)) row[key] = p[key];
   if (row.contains("motion")) row["motion"].erase("series");
   row["text"] = pair_sentence(p, report.value("units", ""), run_tolerance(report));

@@ -18,7 +18,7 @@ namespace {
 StopReason stop_reason_from_name(const std::string& name) {
   for (StopReason r : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
                        StopReason::kEpaCertificate, StopReason::kCertificate, StopReason::kBayesian,
-                       StopReason::kCap})
+                       StopReason::kCap, StopReason::kAboveTolerance})
     if (name == stop_reason_name(r)) return r;
   throw std::invalid_argument("unknown stop_reason \"" + name + "\"");
 }
@@ -95,8 +95,17 @@ struct Writer {
   json value(const std::optional<T>& v) const {
     return value(*v);
   }
+  json value(ExactVerdict v) const {
+    if (encoding == Encoding::kComplete) return static_cast<int>(v);
+    return exact_verdict_name(v);
+  }
+  json value(ExactBasis b) const {
+    if (encoding == Encoding::kComplete) return static_cast<int>(b);
+    return exact_basis_name(b);
+  }
   json value(const SolveStats& s) const { return nested(s); }
   json value(const MotionTrace& m) const { return nested(m); }
+  json value(const ExactCheck& e) const { return nested(e); }
 
   template <class T>
   json nested(const T& v) const {
@@ -158,8 +167,9 @@ struct Reader {
                                         : status_from_name(j.get<std::string>());
   }
   void read(const json& j, StopReason& s) const {
-    s = encoding == Encoding::kComplete ? enum_from_value(j, StopReason::kCap, "stop reason")
-                                        : stop_reason_from_name(j.get<std::string>());
+    s = encoding == Encoding::kComplete
+            ? enum_from_value(j, StopReason::kAboveTolerance, "stop reason")
+            : stop_reason_from_name(j.get<std::string>());
   }
   template <class T>
   void read(const json& j, std::optional<T>& v) const {
@@ -167,8 +177,18 @@ struct Reader {
     read(j, x);
     v = std::move(x);
   }
+  void read(const json& j, ExactVerdict& v) const {
+    v = encoding == Encoding::kComplete
+            ? enum_from_value(j, ExactVerdict::kTimeout, "exact verdict")
+            : exact_verdict_from_name(j.get<std::string>());
+  }
+  void read(const json& j, ExactBasis& b) const {
+    b = encoding == Encoding::kComplete ? enum_from_value(j, ExactBasis::kSolids, "exact basis")
+                                        : exact_basis_from_name(j.get<std::string>());
+  }
   void read(const json& j, SolveStats& s) const { for_each_field(s, Reader{encoding, j}); }
   void read(const json& j, MotionTrace& m) const { for_each_field(m, Reader{encoding, j}); }
+  void read(const json& j, ExactCheck& e) const { for_each_field(e, Reader{encoding, j}); }
 };
 
 }  // namespace

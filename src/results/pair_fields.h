@@ -41,6 +41,17 @@ auto for_each_field(M& m, Visit&& visit) -> IfFieldsOf<M, MotionTrace> {
   visit(Field{"series"}.unless_empty(), m.series);
 }
 
+template <class E, class Visit>
+auto for_each_field(E& e, Visit&& visit) -> IfFieldsOf<E, ExactCheck> {
+  visit(Field{"verdict"}, e.verdict);
+  visit(Field{"by"}.when(decisive(e.verdict)), e.basis);
+  visit(Field{"distance"}, e.distance);
+  visit(Field{"depth_bounds"}, e.depth_bounds);
+  visit(Field{"volume"}, e.volume);
+  visit(Field{"seconds"}, e.seconds);
+  visit(Field{"reason"}.unless_empty(), e.reason);
+}
+
 template <class R, class Visit>
 auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"status"}, r.status);
@@ -71,6 +82,7 @@ auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"gap_band"}.in("clearance").when(decided), r.gap_band);
   visit(Field{"gap_basis"}.in("clearance").when(decided).unless_empty(), r.gap_basis);
   visit(Field{"motion"}.when(decided), r.motion);
+  visit(Field{"exact"}, r.exact);
   visit(Field{"method"}, r.method);
   visit(Field{"fallback"}.unless_empty(), r.fallback);
   visit(Field{"warnings"}.unless_empty(), r.warnings);

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "results/exact_check.h"
 #include "solve/result.h"
 
 namespace pd {
@@ -88,6 +89,8 @@ struct PairResult {
   // Rules (docs/scene-format.md, "Rules"): what covered the pair.
   std::vector<std::string> tests;  ///< the tests that check it, in the rules' order
   std::string expected;            ///< the expected-contact rule covering it, if any
+  /// B-rep pairs: the verdict made sure of on the exact solids, or why not.
+  std::optional<ExactCheck> exact;
 };
 
 /// Status from depth: touching within rounding of the pair size is separated;

@@ -25,6 +25,9 @@ auto for_each_field(P& p, Visit&& visit) -> IfFieldsOf<P, PartResult> {
   visit(Field{"concave"}.in("sag"), p.sag_concave);
   visit(Field{"convex"}.in("sag"), p.sag_convex);
   visit(Field{"declared"}.in("sag"), p.sag_declared);
+  visit(Field{"deflection"}.in("tessellation"), p.tessellation_deflection);
+  visit(Field{"sag"}.in("tessellation"), p.tessellation_sag);
+  visit(Field{"basis"}.in("tessellation").unless_empty(), p.tessellation_basis);
   visit(Field{"decomposition_seconds"}, p.decomposition_seconds);
   visit(Field{"cached"}, p.cached);
   visit(Field{"decomposition_note"}.unless_empty(), p.decomposition_note);

@@ -28,6 +28,10 @@ struct PartResult {
   std::optional<bool> convex;
   /// tolerance auto: the worst measured chord sags, and a declared one.
   std::optional<double> sag_concave, sag_convex, sag_declared;
+  /// B-rep parts: the deflection they were meshed at, the sag that mesh
+  /// carries ("bound" or "estimate": tessellation_basis), scene units.
+  std::optional<double> tessellation_deflection, tessellation_sag;
+  std::string tessellation_basis;
   std::optional<double> decomposition_seconds;
   std::optional<bool> cached;      ///< the decomposition came from the cache
   std::string decomposition_note;  ///< the decomposition did not finish within its time box

@@ -127,7 +127,9 @@ struct Want {
   bool by_node = false;
   NodeMeshes of(const aiScene* scene) const {
     if (by_node) return node_meshes_of(scene);
-    return {meshes_of(scene, split_instances), {}};
+    NodeMeshes out;
+    out.meshes = meshes_of(scene, split_instances);
+    return out;
   }
 };
 

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "brep/brep_file.h"
 #include "geometry/mesh.h"
 #include "geometry/types.h"
 
@@ -37,10 +38,24 @@ std::vector<Mesh> load_meshes(const std::string& path, bool split_instances,
 struct NodeMeshes {
   std::vector<Mesh> meshes;
   std::vector<std::string> nodes;  ///< per mesh, its node path
+  /// B-rep files (brep/brep_file.h), per mesh: the tessellation it carries,
+  /// and why its leaf cannot be checked ("" when it can). Empty otherwise.
+  std::vector<Tessellation> tessellations;
+  std::vector<std::string> leaf_errors;
 };
 NodeMeshes load_node_meshes(const std::string& path, std::vector<std::string>* warnings = nullptr);
 /// load_node_meshes from a file's bytes (as read_meshes).
 NodeMeshes read_node_meshes(std::string_view bytes, const std::string& extension,
+                            std::vector<std::string>* warnings = nullptr);
+
+/// A B-rep file (STEP, .brep: brep/brep_file.h) as meshes at linear deflection
+/// `deflection` (file units: mm for STEP), each leaf instance with its node
+/// path by the rules of load_node_meshes (the free shapes for the root's
+/// children when the file has several, else the one free shape's components):
+/// `by_node`, one mesh per leaf; else one mesh of them all, with their
+/// combined tessellation (a leaf that cannot be checked is then the file's
+/// error). Throws MeshError naming the file.
+NodeMeshes load_brep_meshes(const std::string& path, double deflection, bool by_node,
                             std::vector<std::string>* warnings = nullptr);
 
 /// One mesh of `pieces`: vertices concatenated, triangle indices offset.
@@ -76,6 +91,8 @@ struct MeshRequest {
   /// With by_node: only the distinct node paths, in file order, no meshes (the
   /// loader reads the whole file; only the names cross the pipe).
   bool node_names_only = false;
+  /// B-rep files: the linear deflection to mesh them at (file units).
+  double deflection = 0.0;
 };
 
 /// What load_meshes returned, or why the file cannot be used (names the file).
@@ -85,6 +102,10 @@ struct LoadedMeshes {
   std::vector<std::string> warnings;  ///< load_meshes' warnings
   /// by_node: per mesh its node path; node_names_only: the distinct paths.
   std::vector<std::string> nodes;
+  /// B-rep files: NodeMeshes' tessellations and leaf_errors (per mesh, or per
+  /// distinct path when node_names_only).
+  std::vector<Tessellation> tessellations;
+  std::vector<std::string> leaf_errors;
 };
 
 /// Tests only (fault injection): runs in a loader process before it reads the

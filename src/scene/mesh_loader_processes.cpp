@@ -37,8 +37,9 @@ namespace {
 
 // A payload: 'E' and the reason, or 'M', the mesh count, then per mesh its
 // vertex and triangle counts and raw arrays, then the warning count and per
-// warning its length and bytes, then the node path count and the paths alike
-// (this machine's byte order: the reader is a fork of the writer).
+// warning its length and bytes, then the node path count and the paths alike,
+// then the tessellation count and each as raw bytes, then the leaf errors as
+// the paths (this machine's byte order: the reader is a fork of the writer).
 template <class T>
 void put(std::string& out, const T& v) {
   out.append(reinterpret_cast<const char*>(&v), sizeof v);
@@ -53,7 +54,9 @@ void put_strings(std::string& out, const std::vector<std::string>& list) {
 }
 
 std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::string>& warnings,
-                   const std::vector<std::string>& nodes) {
+                   const std::vector<std::string>& nodes,
+                   const std::vector<Tessellation>& tessellations = {},
+                   const std::vector<std::string>& leaf_errors = {}) {
   size_t bytes = 1 + 8;
   for (const Mesh& m : meshes)
     bytes += 16 + m.vertices.size() * sizeof(double) + m.triangles.size() * sizeof(int);
@@ -70,6 +73,9 @@ std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::strin
   }
   put_strings(out, warnings);
   put_strings(out, nodes);
+  put(out, std::uint64_t(tessellations.size()));
+  for (const Tessellation& t : tessellations) put(out, t);
+  put_strings(out, leaf_errors);
   return out;
 }
 
@@ -124,6 +130,12 @@ LoadedMeshes decode(const std::string& payload) {
   }
   out.warnings = r.strings();
   out.nodes = r.strings();
+  const auto tessellations = r.get<std::uint64_t>();
+  if (tessellations > payload.size())
+    throw std::runtime_error("malformed answer from the loader process");
+  for (std::uint64_t k = 0; k < tessellations; ++k)
+    out.tessellations.push_back(r.get<Tessellation>());
+  out.leaf_errors = r.strings();
   return out;
 }
 
@@ -145,9 +157,13 @@ std::string load_one(const MeshRequest& f, double memory_mb) {
   (void)tuned;
   try {
     std::vector<std::string> warnings;
-    if (!f.by_node) return encode(load_meshes(f.path, f.split_instances, &warnings), warnings, {});
-    NodeMeshes read = load_node_meshes(f.path, &warnings);
-    if (!f.node_names_only) return encode(read.meshes, warnings, read.nodes);
+    const bool brep = is_brep_path(f.path);
+    if (!f.by_node && !brep)
+      return encode(load_meshes(f.path, f.split_instances, &warnings), warnings, {});
+    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, f.by_node, &warnings)
+                           : load_node_meshes(f.path, &warnings);
+    if (!f.node_names_only)
+      return encode(read.meshes, warnings, read.nodes, read.tessellations, read.leaf_errors);
     // A node's meshes come together (collect_by_node), and paths are unique.
     std::vector<std::string> names;
     for (std::string& n : read.nodes)
@@ -208,7 +224,8 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
     try {
       out[k] = decode(payload);
     } catch (const std::exception& e) {
-      out[k] = {{}, "cannot load mesh file " + path + ": " + e.what(), {}, {}};
+      out[k] = {};
+      out[k].error = "cannot load mesh file " + path + ": " + e.what();
     }
   };
   QueueOptions queue{loaders, timeout, {}, {}};

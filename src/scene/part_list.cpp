@@ -4,6 +4,7 @@
 #include <system_error>
 #include <vector>
 
+#include "brep/brep_file.h"
 #include "scene/scene.h"
 #include "scene/units.h"
 
@@ -61,6 +62,7 @@ SceneSpec parse_part_list(const std::string& text, const std::string& path) {
         }
     }
     p.where = path + ": line " + std::to_string(n) + " (\"" + p.id + "\")";
+    p.split_nodes = p.split_auto = is_brep_path(*p.mesh);  // an assembly: a part per leaf
     if (p.id.empty() || p.mesh->empty())
       throw SceneError(path + ": line " + std::to_string(n) +
                        ": expected \"path\" or \"id<TAB>path\"");
@@ -76,7 +78,7 @@ bool looks_like_mesh_file(const std::string& path) {
   for (const char* m :
        {".stl", ".obj", ".ply", ".gltf", ".glb", ".3mf", ".off", ".fbx", ".dae", ".3ds"})
     if (ext == m) return true;
-  return false;
+  return is_brep_path(path);
 }
 
 std::optional<std::string> empty_scene_problem(const SceneSpec& s) {

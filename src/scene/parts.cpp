@@ -23,6 +23,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/setup_warnings.h"
 #include "scene/split_nodes.h"
+#include "scene/units.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -39,18 +40,46 @@ long Part::hull_vertex_count() const {
 
 namespace {
 
-std::string instance_key(const PartSpec& s) {
+// File coordinates to scene units: the unit conversion, then the transform.
+Mat4 placement(const PartSpec& spec) {
+  Mat4 m = spec.transform;
+  m.topLeftCorner<3, 3>() *= spec.to_scene_units;
+  return m;
+}
+
+// The placement's stretch factors, largest first.
+Vec3 stretches(const Mat4& placement) {
+  return Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues();
+}
+
+// The largest factor by which the placement stretches a length.
+double stretch(const Mat4& placement) {
+  return stretches(placement)(0);
+}
+
+// A B-rep part's linear deflection in its file's units (0 for a mesh file):
+// the scene's length over the placement's largest stretch.
+double file_deflection(const SceneSpec& scene, const PartSpec& spec) {
+  if (!spec.mesh || !is_brep_path(*spec.mesh)) return 0.0;
+  return brep_deflection(scene, spec) / stretch(placement(spec));
+}
+
+std::string instance_key(const PartSpec& s, double deflection) {
   std::ostringstream k;
   k.precision(17);
-  k << *s.mesh << '|' << s.to_scene_units << '|' << int(s.pieces);
+  k << *s.mesh << '|' << s.to_scene_units << '|' << int(s.pieces) << '|' << deflection;
   for (int i = 0; i < 16; ++i) k << '|' << s.transform(i / 4, i % 4);
   if (s.node) k << '\0' << *s.node;  // '\0': no path or name holds it
   return k.str();
 }
 
-// The geometry a MeshFile holds: a file, or one node's meshes in it.
-std::string file_key(const PartSpec& s) {
-  return *s.mesh + '|' + std::to_string(int(s.pieces)) + (s.node ? '\0' + *s.node : "");
+// The geometry a MeshFile holds: a file, or one node's meshes in it (a B-rep
+// file's at one deflection).
+std::string file_key(const PartSpec& s, double deflection) {
+  std::ostringstream k;
+  k.precision(17);
+  k << *s.mesh << '|' << int(s.pieces) << '|' << deflection;
+  return k.str() + (s.node ? '\0' + *s.node : "");
 }
 
 std::string load_error(const PartSpec& spec, const std::exception& e) {
@@ -85,6 +114,11 @@ struct MeshFile {
   // measured on them and the kept budget held them (PartSurface::solid).
   std::shared_ptr<const Mesh> placed;
   std::shared_ptr<const SolidDistance> solid;
+  // B-rep files: the deflection asked (file units), the leaf the meshes are of
+  // (-1: every leaf, joined) and the tessellation they carry.
+  double deflection = 0.0;
+  int leaf = -1;
+  std::optional<Tessellation> tessellation;
   // Under tolerance auto: the sag (file units; from the hull cache entry when
   // it holds one), and the concavity tolerance it gives the file (scene units).
   std::optional<TessellationSag> sag;
@@ -93,10 +127,10 @@ struct MeshFile {
 
 // A file's sag: each of its meshes measured on its own (welding across meshes
 // would join unrelated instances), the features of all of them.
-TessellationSag file_sag(const std::vector<Mesh>& meshes) {
+TessellationSag file_sag(const std::vector<Mesh>& meshes, CoordinateStorage storage) {
   TessellationSag all;
   for (const Mesh& m : meshes) {
-    TessellationSag s = measure_tessellation_sag(m, CoordinateStorage::kFloat32);
+    TessellationSag s = measure_tessellation_sag(m, storage);
     all.concave = std::max(all.concave, s.concave);
     all.convex = std::max(all.convex, s.convex);
     all.resolution = std::max(all.resolution, s.resolution);
@@ -109,23 +143,6 @@ TessellationSag file_sag(const std::vector<Mesh>& meshes) {
 
 bool keeps_surface(Pieces p) {
   return p == Pieces::kAuto || p == Pieces::kDecompose;
-}
-
-// The largest factor by which the placement stretches a length.
-// The placement's stretch factors, largest first.
-Vec3 stretches(const Mat4& placement) {
-  return Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues();
-}
-
-double stretch(const Mat4& placement) {
-  return stretches(placement)(0);
-}
-
-// File coordinates to scene units: the unit conversion, then the transform.
-Mat4 placement(const PartSpec& spec) {
-  Mat4 m = spec.transform;
-  m.topLeftCorner<3, 3>() *= spec.to_scene_units;
-  return m;
 }
 
 // Whether a placement stretches every length alike (units and a rotation):
@@ -190,9 +207,15 @@ std::string file_hash(const std::string& path, const PartsCache& cache) {
 }
 
 // The cache key of a part's geometry: its file's content hash, and for a node
-// part the node path with it (a node's hulls, sag and convexity are its own).
-std::string geometry_hash(const PartSpec& spec, const PartsCache& cache) {
+// part the node path with it (a node's hulls, sag and convexity are its own);
+// for a B-rep file the deflection it is meshed at too.
+std::string geometry_hash(const PartSpec& spec, const PartsCache& cache, double deflection) {
   const std::string file = file_hash(*spec.mesh, cache);
+  if (deflection > 0) {
+    char d[32];
+    std::snprintf(d, sizeof d, "%.17g", deflection);
+    return Hasher().add("pdcheck-brep-v1").add(file).add(spec.node.value_or("")).add(d).hex();
+  }
   if (!spec.node) return file;
   return Hasher().add("pdcheck-node-v1").add(file).add(*spec.node).hex();
 }
@@ -200,7 +223,7 @@ std::string geometry_hash(const PartSpec& spec, const PartsCache& cache) {
 // A node part's meshes, from its file read by node: those of its node, joined
 // into one unless `split_instances`.
 LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_node,
-                       const PartSpec& spec) {
+                       const PartSpec& spec, int& leaf) {
   LoadedMeshes out;
   out.warnings = file.warnings;
   out.error = file.error;
@@ -208,6 +231,14 @@ LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_n
   if (of_node.empty()) {
     out.error = "cannot load mesh file " + *spec.mesh + ": it has no node \"" + *spec.node +
                 "\" (the file changed since the scene part was split?)";
+    return out;
+  }
+  if (!file.leaf_errors.empty()) {  // a B-rep file: a node is one leaf instance
+    const size_t k = of_node[0];
+    leaf = int(k);
+    if (!file.leaf_errors[k].empty()) out.error = file.leaf_errors[k];
+    out.meshes = {file.meshes[k]};
+    out.tessellations = {file.tessellations[k]};
     return out;
   }
   std::vector<Mesh> meshes;
@@ -224,7 +255,7 @@ LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_n
 // when a run under tolerance auto stored one.
 bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
   if (cache.dir.empty()) return false;
-  f.hash = geometry_hash(spec, cache);
+  f.hash = geometry_hash(spec, cache, f.deflection);
   auto hit = read_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes));
   if (!hit) return false;
   f.counts = std::move(hit->counts);
@@ -252,6 +283,7 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
+    if (!f.read.tessellations.empty()) f.tessellation = f.read.tessellations[0];
     // Hulls first: a mesh they reject (non-finite coordinates, ...) fails as in
     // pieces "hull", before any measurement.
     bool store = false;  // the cache entry is new, or gains the sag
@@ -268,7 +300,8 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
       store = true;
     }
     if (auto_tol && !f.sag) {
-      f.sag = file_sag(meshes);
+      f.sag = file_sag(meshes,
+                       f.tessellation ? CoordinateStorage::kDouble : CoordinateStorage::kFloat32);
       store = true;
     }
     if (store && !f.hash.empty())  // one entry per file: its hulls, and its sag under auto
@@ -278,7 +311,7 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     f.concavity_tol = concavity_tol;
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
       f.mesh = std::make_shared<const Mesh>(meshes[0]);
-      if (f.hash.empty()) f.hash = geometry_hash(spec, cache);
+      if (f.hash.empty()) f.hash = geometry_hash(spec, cache, f.deflection);
       // Measured once, kept in file units; each instance scales the value by its
       // own stretch (a sole instance placed without stretch is measured on its
       // placed mesh). Voids count at the strictest instance's tolerance; the
@@ -375,13 +408,29 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
     for (const Points* p : sets) max_abs = std::max(max_abs, max_abs_coordinate(*p));
     const double placed_max_abs =
         std::max(part.box.lo.cwiseAbs().maxCoeff(), part.box.hi.cwiseAbs().maxCoeff());
+    // B-rep meshes are made in double precision.
+    const bool float32 = file != nullptr && !file->tessellation;
     part.resolution =
-        coordinate_resolution(max_abs, file != nullptr, stretch(placement(spec)), placed_max_abs);
+        coordinate_resolution(max_abs, float32, stretch(placement(spec)), placed_max_abs);
+    if (file && file->tessellation) {
+      PartBrep b;
+      b.file = *spec.mesh;
+      b.leaf = file->leaf;
+      b.placement = placement(spec);
+      b.tessellation = *file->tessellation;
+      const double s = stretch(b.placement);
+      b.tessellation.deflection *= s;
+      b.tessellation.sag *= s;
+      b.tessellation.tolerance *= s;
+      part.brep = std::move(b);
+    }
     if (auto_tol) {
       PartSag sag;
       if (file) sag.measured = placed_sag(*file->sag, placement(spec), stretch(placement(spec)));
       sag.measured.resolution = *part.resolution;  // one owner: the part's resolution
       sag.declared = spec.sag;
+      // A B-rep part's sag is known from its faces, not measured from creases.
+      if (part.brep && !spec.sag) sag.declared = part.brep->tessellation.sag;
       part.sag = std::move(sag);
     }
     if (file && file->mesh) {
@@ -405,6 +454,7 @@ struct DistinctParts {
   size_t files = 0;                            ///< distinct mesh files
   std::vector<size_t> users;                   ///< scene parts per distinct geometry
   std::vector<size_t> source;                  ///< per scene part: its distinct part
+  std::vector<double> deflection;              ///< per distinct part: file_deflection
 };
 
 DistinctParts distinct_parts(const SceneSpec& scene) {
@@ -413,8 +463,9 @@ DistinctParts distinct_parts(const SceneSpec& scene) {
   std::map<std::string, size_t> files, seen;
   for (size_t k = 0; k < scene.parts.size(); ++k) {
     const PartSpec& spec = scene.parts[k];
+    const double deflection = file_deflection(scene, spec);
     if (spec.mesh) {
-      const auto [it, fresh] = seen.emplace(instance_key(spec), d.unique.size());
+      const auto [it, fresh] = seen.emplace(instance_key(spec, deflection), d.unique.size());
       d.source[k] = it->second;
       if (!fresh) {
         ++d.users[it->second];
@@ -426,8 +477,9 @@ DistinctParts distinct_parts(const SceneSpec& scene) {
     d.unique.push_back(&spec);
     d.users.push_back(1);
     d.file_of.emplace_back();
+    d.deflection.push_back(deflection);
     if (spec.mesh && !spec.error)
-      d.file_of.back() = files.emplace(file_key(spec), files.size()).first->second;
+      d.file_of.back() = files.emplace(file_key(spec, deflection), files.size()).first->second;
   }
   d.files = files.size();
   return d;
@@ -464,19 +516,26 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     if (!file_of[u] || file_spec[*file_of[u]]) continue;
     const size_t f = *file_of[u];
     file_spec[f] = unique[u];
+    const double deflection = distinct.deflection[u];
+    mesh_files[f].deflection = deflection;
+    // A B-rep file is always read: its tessellation is in no cache.
     if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces) &&
-        (!auto_tol || mesh_files[f].sag))
+        (!auto_tol || mesh_files[f].sag) && deflection == 0)
       continue;
     if (unique[u]->node) {
-      const auto [it, fresh] = by_node.emplace(*unique[u]->mesh, requests.size());
+      std::ostringstream key;  // a split file, read once per deflection for all its node parts
+      key.precision(17);
+      key << deflection << '|' << *unique[u]->mesh;
+      const auto [it, fresh] = by_node.emplace(key.str(), requests.size());
       if (fresh) {
-        requests.push_back({*unique[u]->mesh, true, true, false});
+        requests.push_back({*unique[u]->mesh, true, true, false, deflection});
         requested.emplace_back();
       }
       requested[it->second].push_back(f);
       continue;
     }
-    requests.push_back({*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes});
+    requests.push_back(
+        {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes, false, false, deflection});
     requested.push_back({f});
   }
   for (size_t u = 0; u < unique.size(); ++u)
@@ -502,7 +561,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
         const auto it = meshes_of_node.find(*file_spec[f]->node);
         mesh_files[f].read =
             node_read(read[r], it == meshes_of_node.end() ? std::vector<size_t>{} : it->second,
-                      *file_spec[f]);
+                      *file_spec[f], mesh_files[f].leaf);
       }
       read[r] = {};
     }
@@ -523,6 +582,12 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     p.motion = scene.parts[k].motion;
     if (!p.error) {
       if (auto w = non_rigid_placement(scene.parts[k].transform)) p.warnings.push_back(*w);
+      const PartSpec& spec = scene.parts[k];
+      if (spec.units_key && spec.mesh && format_unit(*spec.mesh) == "mm" &&
+          is_brep_path(*spec.mesh) && *spec.units_key != "mm")
+        p.warnings.push_back(spec.where + ": units \"" + *spec.units_key +
+                             "\" does not apply: a STEP file declares its own unit, and is read "
+                             "in mm (converted to the scene's)");
       // Under auto nobody chose a tolerance, and each pair's band holds its
       // parts' coordinate steps.
       if (p.resolution && scene.tolerance && !scene.auto_tolerance)

@@ -85,7 +85,7 @@ struct Element {
 enum class Format { kAscii, kLittle, kBig };
 
 /// Printable, bounded: a token of a damaged file may be anything.
-std::string quoted(std::string_view s) {
+std::string ply_quoted(std::string_view s) {
   std::string out = "\"";
   for (size_t k = 0; k < s.size() && k < 40; ++k) {
     const unsigned char c = s[k];
@@ -161,7 +161,7 @@ bool host_is_big_endian() {
 }
 
 std::string where(const Element& e, std::uint64_t instance) {
-  return "element " + quoted(e.name) + " instance " + std::to_string(instance) + " of " +
+  return "element " + ply_quoted(e.name) + " instance " + std::to_string(instance) + " of " +
          std::to_string(e.count);
 }
 
@@ -195,7 +195,7 @@ void walk_binary(std::string_view bytes, size_t pos, bool big, std::vector<Eleme
             fail("data cut short: " + where(el, i) + " is past the end");
           const double n = decode(data + pos, p.count, swap);
           if (n < 0)
-            fail(where(el, i) + ": list " + quoted(p.name) + " has negative length " +
+            fail(where(el, i) + ": list " + ply_quoted(p.name) + " has negative length " +
                  std::to_string(long(n)));
           items = std::uint64_t(n);
           pos += p.count.size;
@@ -238,9 +238,9 @@ void walk_ascii(std::string_view bytes, size_t pos, std::vector<Element>& elemen
     const char* first = t.data() + (t.size() > 1 && t[0] == '+' ? 1 : 0);
     const auto r = std::from_chars(first, t.data() + t.size(), v);
     if (r.ec == std::errc::result_out_of_range)
-      fail(where(el, i) + ": " + quoted(t) + " is out of the range of a double");
+      fail(where(el, i) + ": " + ply_quoted(t) + " is out of the range of a double");
     if (r.ec != std::errc() || r.ptr != t.data() + t.size())
-      fail(where(el, i) + ": " + quoted(t) + " is not a number");
+      fail(where(el, i) + ": " + ply_quoted(t) + " is not a number");
     return v;
   };
   for (size_t e = 0; e < elements.size(); ++e) {
@@ -254,8 +254,8 @@ void walk_ascii(std::string_view bytes, size_t pos, std::vector<Element>& elemen
         if (p.count.size) {
           const double n = number(token(el, i), el, i);
           if (!(n >= 0 && n <= 1e15) || n != std::floor(n))
-            fail(where(el, i) + ": list " + quoted(p.name) + " has length " + std::to_string(n) +
-                 ", not a whole number >= 0");
+            fail(where(el, i) + ": list " + ply_quoted(p.name) + " has length " +
+                 std::to_string(n) + ", not a whole number >= 0");
           items = std::uint64_t(n);
         }
         for (std::uint64_t j = 0; j < items; ++j) {
@@ -283,7 +283,7 @@ Format format_of(const std::vector<std::string_view>& w, const std::string& at) 
   if (w[1] == "ascii") return Format::kAscii;
   if (w[1] == "binary_little_endian") return Format::kLittle;
   if (w[1] == "binary_big_endian") return Format::kBig;
-  fail(at + "unknown format " + quoted(w[1]));
+  fail(at + "unknown format " + ply_quoted(w[1]));
 }
 
 Element element_of(const std::vector<std::string_view>& w, std::string_view line,
@@ -292,7 +292,8 @@ Element element_of(const std::vector<std::string_view>& w, std::string_view line
   if (w.size() != 3 ||
       std::from_chars(w[2].data(), w[2].data() + w[2].size(), n).ptr != w[2].data() + w[2].size())
     fail(at + "expected \"element <name> <count>\"");
-  if (n > std::uint64_t(INT32_MAX)) fail(at + "element count " + quoted(w[2]) + " is too large");
+  if (n > std::uint64_t(INT32_MAX))
+    fail(at + "element count " + ply_quoted(w[2]) + " is too large");
   return {std::string(w[1]), n, {}, {std::string(line)}, 0, 0};
 }
 
@@ -302,14 +303,14 @@ Property property_of(const std::vector<std::string_view>& w, const std::string& 
     p.count = type_of(w[2]);
     p.type = type_of(w[3]);
     p.name = w[4];
-    if (!p.count.size) fail(at + "unknown property type " + quoted(w[2]));
+    if (!p.count.size) fail(at + "unknown property type " + ply_quoted(w[2]));
     if (p.count.kind == Kind::kFloat)
-      fail(at + "a list length must have an integer type, not " + quoted(w[2]));
-    if (!p.type.size) fail(at + "unknown property type " + quoted(w[3]));
+      fail(at + "a list length must have an integer type, not " + ply_quoted(w[2]));
+    if (!p.type.size) fail(at + "unknown property type " + ply_quoted(w[3]));
   } else if (w.size() == 3) {
     p.type = type_of(w[1]);
     p.name = w[2];
-    if (!p.type.size) fail(at + "unknown property type " + quoted(w[1]));
+    if (!p.type.size) fail(at + "unknown property type " + ply_quoted(w[1]));
   } else {
     fail(at + "expected \"property <type> <name>\" or \"property list <type> <type> <name>\"");
   }
@@ -322,15 +323,15 @@ Property property_of(const std::vector<std::string_view>& w, const std::string& 
 // properties it would end assimp's property list there.
 void skip_unknown_line(const std::vector<std::string_view>& w, std::string_view line,
                        const std::string& at, Header& h, std::vector<std::string>& warnings) {
-  if (!text_line(line)) fail(at + "unknown line " + quoted(line) + " is not text");
+  if (!text_line(line)) fail(at + "unknown line " + ply_quoted(line) + " is not text");
   // Only before the first element, where exporters put their free text.
   // Among elements the rewrite would hand assimp a header it was never
   // fuzzed on, and fuzzing found assimp 5.2.5 corrupting its heap on
   // such rewritten headers (duplicate elements after the skipped line).
   if (!h.elements.empty())
-    fail(at + "unknown keyword " + quoted(w[0]) +
+    fail(at + "unknown keyword " + ply_quoted(w[0]) +
          " after the first element (only before it is a free-text line skipped)");
-  warnings.push_back("PLY " + at + "unknown line " + quoted(line) +
+  warnings.push_back("PLY " + at + "unknown line " + ply_quoted(line) +
                      " skipped (neither comment, element nor property)");
   h.skipped = true;
 }
@@ -362,7 +363,7 @@ Header parse_header(std::string_view bytes, size_t data, std::vector<std::string
       if (e.name == "vertex" || e.name == "face" || e.name == "tristrips")
         for (const Element& before : h.elements)
           if (before.name == e.name)
-            fail(at + "a second element " + quoted(e.name) + " (a PLY file declares it once)");
+            fail(at + "a second element " + ply_quoted(e.name) + " (a PLY file declares it once)");
       h.elements.push_back(std::move(e));
     } else if (w[0] == "property") {
       if (h.elements.empty()) fail(at + "property before any element");
@@ -385,8 +386,9 @@ void check_counts(const Header& h, size_t data_bytes) {
     for (const Property& p : e.properties)
       least += *h.format == Format::kAscii ? 2 : (p.count.size ? p.count.size : p.type.size);
     if (least > 0 && e.count > data_bytes / least)
-      fail("data cut short: element " + quoted(e.name) + " declares " + std::to_string(e.count) +
-           " instances, the data holds at most " + std::to_string(data_bytes / least));
+      fail("data cut short: element " + ply_quoted(e.name) + " declares " +
+           std::to_string(e.count) + " instances, the data holds at most " +
+           std::to_string(data_bytes / least));
   }
 }
 

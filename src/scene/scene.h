@@ -59,6 +59,12 @@ struct PartSpec {
   /// The concave sag its exporter was set to (scene units): replaces the
   /// measured one under `tolerance: auto`.
   std::optional<double> sag;
+  /// B-rep files (STEP, .brep): the linear deflection to mesh them at (scene
+  /// units), when the part or the scene gives one (brep_deflection).
+  std::optional<double> deflection;
+  /// The part's `units` key as written, when it has one (a STEP file's own
+  /// unit wins over it: the parts stage says so when they differ).
+  std::optional<std::string> units_key;
   /// Rules (scene/rules.h) select parts by these: free labels, and a
   /// `/`-separated product path ("wing/rib-7/bracket"; "" = none).
   std::vector<std::string> tags;
@@ -66,6 +72,9 @@ struct PartSpec {
   /// `"split": "nodes"`: the scene part stands for one part per node of its
   /// mesh file, made by split_node_parts before anything plans with parts.
   bool split_nodes = false;
+  /// A B-rep file without `"split"`: split when it holds more than one leaf
+  /// instance (an assembly), else kept whole (a part file).
+  bool split_auto = false;
   /// A node part (split_node_parts): the node path of its meshes in `mesh`.
   std::optional<std::string> node;
   /// Why the part cannot be built, known before its geometry is read (a split
@@ -121,6 +130,8 @@ struct SceneSpec {
   /// one number stands for the scene (the baseline's `updated` rule).
   std::optional<double> tolerance;
   std::optional<AutoTolerance> auto_tolerance;  ///< "tolerance": "auto" or {"auto": true, …}
+  /// The scene's `deflection` (scene units): B-rep parts without their own.
+  std::optional<double> deflection;
   std::vector<PartSpec> parts;
   std::optional<std::vector<std::pair<std::string, std::string>>> pairs;
   SolverOverrides solver;
@@ -128,6 +139,11 @@ struct SceneSpec {
   std::optional<Rules> rules;  ///< the scene's `rules`, or --rules FILE
   bool part_list = false;      ///< read from a plain part list (parse_part_list), not a scene JSON
 };
+
+/// The linear deflection a B-rep part is meshed at (scene units): its own
+/// `deflection`, else the scene's, else tol::kDeflectionFraction of the scene's
+/// tolerance, else (tolerance auto) tol::kAutoDeflectionMm in the scene's unit.
+double brep_deflection(const SceneSpec& s, const PartSpec& p);
 
 /// Why the scene gives nothing to check, when it has no part: a scene whose
 /// `parts` is empty, or a part list without a path (a failed export upstream).

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 
+#include "brep/brep_file.h"
 #include "parallel_for.h"
 #include "scene/json_split.h"
 #include "scene/json_strict.h"
@@ -135,6 +136,12 @@ void part_labels(const Ctx& c, const json& j, const std::string& at, PartSpec& p
   }
 }
 
+double positive(const Ctx& c, const json& j, const std::string& at) {
+  const double v = number(c, j, at);
+  if (!(v > 0)) c.fail(at, "must be > 0");
+  return v;
+}
+
 /// `scanned`, when given, is the part's vertex list already read by
 /// scan_vertex_array (its "vertices" value in `j` is then a placeholder); when
 /// it holds nothing, the caller sets the vertices (or their VertexSummary).
@@ -143,7 +150,7 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
   if (!j.is_object()) c.fail(at, std::string("expected an object, got ") + type_name(j));
   only_keys(c, j, at,
             {"id", "mesh", "vertices", "units", "transform", "pieces", "motion", "sag", "tags",
-             "group", "split"});
+             "group", "split", "deflection"});
   PartSpec p;
   p.where = c.file + ": " + at;
   if (!j.contains("id")) c.fail(at, "missing \"id\"");
@@ -161,8 +168,10 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
   } else {
     p.vertices = vertex_list(c, j["vertices"], at + ".vertices");
   }
-  if (j.contains("units")) {
-    p.to_scene_units = *unit_in_mm(unit(c, j["units"], at + ".units")) / *unit_in_mm(scene_units);
+  const bool brep = p.mesh && is_brep_path(*p.mesh);
+  if (j.contains("units")) p.units_key = unit(c, j["units"], at + ".units");
+  if (j.contains("units") && !(brep && format_unit(*p.mesh))) {
+    p.to_scene_units = *unit_in_mm(*p.units_key) / *unit_in_mm(scene_units);
   } else if (p.mesh) {
     p.to_scene_units = mesh_to_scene_units(*p.mesh, scene_units);  // glTF: metres
   }
@@ -188,6 +197,12 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     if (v != "nodes") c.fail(at + ".split", "expected \"nodes\", got \"" + v + "\"");
     if (!has_mesh) c.fail(at + ".split", "\"nodes\" needs a mesh file");
     p.split_nodes = true;
+  } else if (brep) {  // an assembly file: one part per leaf instance
+    p.split_nodes = p.split_auto = true;
+  }
+  if (j.contains("deflection")) {
+    if (!brep) c.fail(at + ".deflection", "applies to B-rep files (.step, .stp, .brep) only");
+    p.deflection = positive(c, j["deflection"], at + ".deflection");
   }
   return p;
 }
@@ -206,12 +221,6 @@ RigidMotion motion(const Ctx& c, const json& j, const std::string& at, double to
   if (j.contains("about")) m.about = to_scene * vec3(c, j["about"], at + ".about");
   if (j.contains("velocity")) m.velocity = to_scene * vec3(c, j["velocity"], at + ".velocity");
   return m;
-}
-
-double positive(const Ctx& c, const json& j, const std::string& at) {
-  const double v = number(c, j, at);
-  if (!(v > 0)) c.fail(at, "must be > 0");
-  return v;
 }
 
 // The step count in double precision: a cast of more than 2^63 steps to an
@@ -389,9 +398,9 @@ void tolerance(const Ctx& c, const json& j, SceneSpec& s) {
 /// part's conversion needs (units, checks.motion) are read first.
 SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::string>& units) {
   if (!doc.is_object()) c.fail("", "a scene is a JSON object");
-  only_keys(
-      c, doc, "",
-      {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks", "rules"});
+  only_keys(c, doc, "",
+            {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks",
+             "rules", "deflection"});
   SceneSpec s;
   s.path = c.file;
   if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))
@@ -405,6 +414,7 @@ SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::s
                         "scene's \"units\")");
   if (units) s.units = units;
   if (doc.contains("tolerance")) tolerance(c, doc["tolerance"], s);
+  if (doc.contains("deflection")) s.deflection = positive(c, doc["deflection"], "deflection");
   if (!doc.contains("parts")) c.fail("", "missing \"parts\"");
   const json& parts = doc["parts"];
   if (!parts.is_array()) c.fail("parts", std::string("expected a list, got ") + type_name(parts));

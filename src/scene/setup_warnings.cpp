@@ -149,6 +149,7 @@ std::vector<std::optional<UnitsLikeOutlier>> units_like_outliers(
   // (2), else the one for which the factor leaves a unit (1).
   std::vector<int> likelier(parts.size(), 0);
   for (size_t k : usable) {
+    if (parts[k].unit_from_file) continue;
     const double size = size_of(*parts[k].box), ref = others.median(k), ratio = size / ref;
     std::optional<double> factor;
     std::vector<std::string> why;

@@ -41,6 +41,9 @@ struct UnitsLikePart {
   /// The unit its file format declares ("m": glTF), when it was read in it
   /// (no `units` of its own).
   std::optional<std::string> format_unit;
+  /// Its file states its unit and the reader converts it (STEP): compared
+  /// with, never flagged.
+  bool unit_from_file = false;
 };
 
 /// Why a part's size looks like a units mistake.

@@ -101,6 +101,11 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
       continue;
     }
     const LoadedMeshes& file = files.at(*p.mesh);
+    if (p.split_auto && !file.error && file.nodes.size() == 1) {  // a B-rep part file: whole
+      p.split_nodes = false;
+      parts.push_back(std::move(p));
+      continue;
+    }
     if (file.error || file.nodes.empty()) {
       // One part, named by its id, carries why: its pairs are errors, the batch goes on.
       p.error = file.error ? *file.error : "mesh file " + *p.mesh + ": has no meshes";

@@ -18,7 +18,8 @@ struct SplitLoad {
 };
 
 /// Replaces every `"split": "nodes"` part by one part per node of its mesh file
-/// that holds meshes, in file order: id `<id>/<node path>` (node_names.h),
+/// that holds meshes (a B-rep file without `"split"`, split_auto, only when it
+/// holds more than one leaf instance), in file order: id `<id>/<node path>` (node_names.h),
 /// group the part's group joined with the node path's parent, everything else
 /// (units, transform, pieces, tags, motion, sag) the part's. Each distinct file
 /// is read once, in loader processes (only node names cross the pipe), unless

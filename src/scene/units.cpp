@@ -43,6 +43,7 @@ std::optional<std::string> format_unit(const std::string& mesh_path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == ".gltf" || ext == ".glb") return "m";
+  if (ext == ".step" || ext == ".stp") return "mm";  // the reader converts the file's unit to mm
   return std::nullopt;
 }
 

@@ -25,8 +25,9 @@ std::optional<LengthArg> parse_length(const std::string& text);
 double length_in(const LengthArg& length, const std::string& scene_unit);
 
 /// The unit a mesh file's format fixes, by its extension: "m" for glTF 2.0
-/// (.gltf, .glb; the specification's unit is the metre), else nothing (the
-/// file takes its part's or scene's unit).
+/// (.gltf, .glb; the specification's unit is the metre), "mm" for STEP (.step,
+/// .stp: the file declares its unit and the reader converts it to mm), else
+/// nothing (the file takes its part's or scene's unit).
 std::optional<std::string> format_unit(const std::string& mesh_path);
 
 /// Scene units per unit of a mesh part without a `units` key: its format's

@@ -1,0 +1,325 @@
+#include "batch/brep_confirm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "batch/pair_tolerance.h"
+#include "batch/progress.h"
+#include "scene/units.h"
+#include "solve/ipopt_local.h"
+#include "solve/signed_distance.h"
+#include "tolerances.h"
+#include "work_queue.h"
+
+namespace pd {
+
+std::array<double, 2> mesh_bracket(const PairResult& r, bool convex_pair) {
+  if (r.status == Status::kSeparated) return {0.0, 0.0};
+  if (r.depth_bounds) return *r.depth_bounds;
+  if (r.depth_source == "hull" && !convex_pair) return {0.0, r.depth};
+  return {r.depth, r.depth};
+}
+
+namespace {
+
+double touch_of(const ExactContext& c) {
+  return tol::kExactTouch * c.pair_size;
+}
+
+ExactCheck check(ExactVerdict v, ExactBasis b, std::optional<std::array<double, 2>> bounds) {
+  ExactCheck e;
+  e.verdict = v;
+  e.basis = b;
+  e.depth_bounds = bounds;
+  return e;
+}
+
+}  // namespace
+
+std::optional<ExactCheck> certify_by_bound(const PairResult& r, const std::array<double, 2>& mesh,
+                                           const ExactContext& c,
+                                           std::optional<double> hull_distance) {
+  if (!c.bounds || r.status == Status::kError) return std::nullopt;
+  const double widen = 2.0 * c.sag;
+  if (r.status == Status::kSeparated || r.status == Status::kClearanceViolation) {
+    // Apart by more than both sags: the solids are apart too (and, with a
+    // clearance, as far as the sags leave of the meshes' distance).
+    if (!hull_distance || !(*hull_distance > widen + touch_of(c))) return std::nullopt;
+    if (c.clearance && !(*hull_distance - widen >= *c.clearance)) return std::nullopt;
+    ExactCheck e = check(ExactVerdict::kSeparated, ExactBasis::kBound, std::array{0.0, 0.0});
+    return e;
+  }
+  const double lo = mesh[0] - widen, hi = mesh[1] + widen;
+  const double band = tol::kClassifyBand * c.pair_size;
+  if (lo > c.tolerance + band && !c.clearance)
+    return check(ExactVerdict::kInterference, ExactBasis::kBound, std::array{lo, hi});
+  if (hi <= c.tolerance + band && !c.clearance)
+    return check(ExactVerdict::kFalsePositive, ExactBasis::kBound,
+                 std::array{std::max(0.0, lo), hi});
+  return std::nullopt;
+}
+
+void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactContext& c,
+                  const ExactMeasure& m) {
+  ExactCheck e;
+  e.basis = ExactBasis::kSolids;
+  e.seconds = m.seconds;
+  if (!m.ok) {
+    e.verdict = ExactVerdict::kFailed;
+    e.reason = m.error;
+    r.exact = e;
+    return;
+  }
+  e.distance = m.distance;
+  const double touch = touch_of(c);
+  // The mesh bracket widened by the sags: certified when they are bounds;
+  // against estimates the solids are held to twice their width.
+  const double widen = 2.0 * c.sag * (c.bounds ? 1.0 : 2.0);
+  const double mesh_lo = mesh[0] - widen, mesh_hi = mesh[1] + widen;
+  const double band = tol::kClassifyBand * c.pair_size;
+  char why[256];
+  if (*m.distance > touch) {
+    if (mesh_lo > touch) {
+      std::snprintf(why, sizeof why,
+                    "the solids are %.6g apart; the meshes overlap by at least %.6g beyond the "
+                    "sags",
+                    *m.distance, mesh_lo);
+      e.verdict = ExactVerdict::kInconsistent;
+      e.reason = why;
+      r.exact = e;
+      return;
+    }
+    e.verdict = ExactVerdict::kSeparated;
+    e.depth_bounds = {{0.0, 0.0}};
+  } else {
+    double lo = m.lower, hi = m.upper ? *m.upper : INFINITY;
+    if (c.bounds) hi = std::min(hi, mesh[1] + 2.0 * c.sag);  // certified already
+    if (lo > mesh_hi + touch || (m.upper && *m.upper + touch < mesh_lo)) {
+      std::snprintf(why, sizeof why,
+                    "the solids' thickness is within [%.6g, %.6g], the meshes' within "
+                    "[%.6g, %.6g] with the sags",
+                    m.lower, m.upper ? *m.upper : INFINITY, std::max(0.0, mesh_lo), mesh_hi);
+      e.verdict = ExactVerdict::kInconsistent;
+      e.reason = why;
+      r.exact = e;
+      return;
+    }
+    e.depth_bounds = {{lo, hi}};
+    if (hi <= touch) {
+      e.verdict = ExactVerdict::kTouching;
+      e.depth_bounds = {{0.0, 0.0}};
+    } else if (lo > c.tolerance + band) {
+      e.verdict = ExactVerdict::kInterference;
+    } else if (hi <= c.tolerance + band) {
+      e.verdict = ExactVerdict::kFalsePositive;
+    } else {
+      e.verdict = m.common_timed_out ? ExactVerdict::kTimeout : ExactVerdict::kFailed;
+      if (!m.common_error.empty()) {
+        e.reason = m.common_error;
+      } else {
+        std::snprintf(why, sizeof why,
+                      "the solids' thickness is within [%.6g, %.6g], which holds the tolerance", lo,
+                      hi);
+        e.reason = why;
+      }
+      if (!std::isfinite(hi)) e.depth_bounds.reset();
+    }
+    if (m.volume && decisive(e.verdict)) e.volume = m.volume;
+  }
+  r.exact = e;
+  if (!decisive(e.verdict)) return;
+  // The pair agrees with the solids. Where the status changes, so do its numbers.
+  const std::array<double, 2> b = *e.depth_bounds;
+  const auto set = [&](Status s, double depth) {
+    if (r.status == s) return;
+    r.status = s;
+    r.depth = depth;
+    r.depth_source = "exact";
+    r.depth_bounds = b;
+    r.reason.clear();
+  };
+  switch (e.verdict) {
+    case ExactVerdict::kInterference:
+      set(Status::kInterference, b[0]);
+      break;
+    case ExactVerdict::kFalsePositive:
+      set(Status::kFalsePositive, b[1]);
+      break;
+    default:  // touching or apart: depth 0
+      set(Status::kSeparated, 0.0);
+      if (e.verdict == ExactVerdict::kSeparated) r.distance = m.distance;
+      r.at.reset();
+      break;
+  }
+  // A clearance is broken by any approach closer than its minimum.
+  if (c.clearance && r.status != Status::kInterference &&
+      (e.verdict != ExactVerdict::kSeparated || *m.distance < *c.clearance)) {
+    r.status = Status::kClearanceViolation;
+    r.distance = e.verdict == ExactVerdict::kSeparated ? *m.distance : 0.0;
+  }
+  r.confirmed = true;
+  r.margin = c.tolerance - r.depth;
+}
+
+namespace {
+
+using json = nlohmann::json;
+
+// The worker's answer: the hulls' gap, and the solids' measurements when the
+// gap did not certify the pair.
+json encode(const std::optional<double>& hull_distance, const std::optional<ExactMeasure>& m) {
+  json j = json::object();
+  if (hull_distance) j["hull_distance"] = *hull_distance;
+  if (!m) return j;
+  json x = {{"ok", m->ok},
+            {"error", m->error},
+            {"lower", m->lower},
+            {"seconds", m->seconds},
+            {"timed_out", m->common_timed_out},
+            {"common_error", m->common_error}};
+  if (m->distance) x["distance"] = *m->distance;
+  if (m->upper) x["upper"] = *m->upper;
+  if (m->volume) x["volume"] = *m->volume;
+  j["measure"] = x;
+  return j;
+}
+
+ExactMeasure measure_of(const json& x) {
+  ExactMeasure m;
+  m.ok = x.at("ok").get<bool>();
+  m.error = x.at("error").get<std::string>();
+  m.lower = x.at("lower").get<double>();
+  m.seconds = x.at("seconds").get<double>();
+  m.common_timed_out = x.at("timed_out").get<bool>();
+  m.common_error = x.at("common_error").get<std::string>();
+  if (x.contains("distance")) m.distance = x["distance"].get<double>();
+  if (x.contains("upper")) m.upper = x["upper"].get<double>();
+  if (x.contains("volume")) m.volume = x["volume"].get<double>();
+  if (m.ok && !m.distance) m.ok = false, m.error = "no distance measured";
+  return m;
+}
+
+// The smallest gap between the pieces of two parts' hulls (0 when any overlap).
+double hull_gap(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt) {
+  double gap = INFINITY;
+  for (const Hull& p : a.pieces)
+    for (const Hull& q : b.pieces)
+      gap = std::min(
+          gap,
+          std::max(0.0, -signed_distance(p.vertices, q.vertices, s, ipopt, std::nullopt).value));
+  return gap;
+}
+
+}  // namespace
+
+void confirm_brep_pairs(const std::vector<Part>& parts,
+                        const std::vector<std::pair<int, int>>& pairs,
+                        std::vector<PairResult>& results, const RunOptions& options,
+                        const std::function<PairChecks(int, int)>& checks,
+                        const std::string& units) {
+  std::vector<size_t> held;
+  for (size_t k = 0; k < pairs.size(); ++k)
+    if (held_for_exact(parts[pairs[k].first], parts[pairs[k].second])) held.push_back(k);
+  if (held.empty()) return;
+  const double mm = unit_in_mm(units).value_or(1.0);
+  std::vector<ExactContext> context(pairs.size());
+  std::vector<std::array<double, 2>> mesh(pairs.size());
+  std::vector<size_t> to_measure;
+  const auto report = [&](size_t k) {
+    if (options.on_pair) options.on_pair(results[k], parts);
+  };
+  for (size_t k : held) {
+    const auto [a, b] = pairs[k];
+    const Part &pa = parts[a], &pb = parts[b];
+    PairResult& r = results[k];
+    if (r.status == Status::kError || !pa.brep || !pb.brep) {
+      if (r.status != Status::kError) {
+        ExactCheck e;
+        e.reason = "part \"" + (pa.brep ? pb : pa).id + "\" is a mesh, not a B-rep";
+        r.exact = e;
+      }
+      report(k);
+      continue;
+    }
+    const PairChecks pc = checks(a, b);
+    ExactContext& c = context[k];
+    c.tolerance = pair_tolerance_of(pc, options.tolerance);
+    c.pair_size = pair_size(pa, pb);
+    c.sag = std::max(pa.brep->tessellation.sag, pb.brep->tessellation.sag);
+    c.bounds = pa.brep->tessellation.basis == SagBasis::kBound &&
+               pb.brep->tessellation.basis == SagBasis::kBound;
+    c.clearance = pc.clearance;
+    mesh[k] = mesh_bracket(r, pa.convex.value_or(true) && pb.convex.value_or(true));
+    if (auto e = certify_by_bound(r, mesh[k], c, r.distance)) {
+      r.exact = *e;
+      r.confirmed = true;
+      report(k);
+      continue;
+    }
+    to_measure.push_back(k);
+  }
+  if (to_measure.empty()) return;
+
+  Progress progress(to_measure.size(), options.quiet, "exact solids");
+  const double seconds = options.pair_timeout > 0
+                             ? std::min(options.pair_timeout, tol::kExactSeconds)
+                             : tol::kExactSeconds;
+  std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
+  auto task = [&](size_t k) {
+    const auto [a, b] = pairs[k];
+    const Part &pa = parts[a], &pb = parts[b];
+    const PairResult& r = results[k];
+    const ExactContext& c = context[k];
+    std::optional<double> gap;
+    if (r.status == Status::kSeparated || r.status == Status::kClearanceViolation) {
+      if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
+      gap = hull_gap(pa, pb, options.solver, *ipopt);
+      PairResult probe = r;
+      if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
+    }
+    ExactRequest q;
+    if (r.at) q.starts.push_back(*r.at);
+    const Aabb meet = meeting_region(pa, pb);
+    q.starts.push_back(0.5 * (meet.lo + meet.hi));
+    q.seconds = seconds;
+    q.touch = std::max(touch_of(c), tol::kExactTouchMm / mm);
+    q.mm_per_unit = mm;
+    return encode(gap, measure_exact_pair({pa.brep->file, pa.brep->leaf, pa.brep->placement},
+                                          {pb.brep->file, pb.brep->leaf, pb.brep->placement}, q))
+        .dump();
+  };
+  auto done = [&](size_t k, bool ok, const std::string& payload) {
+    PairResult& r = results[k];
+    const ExactContext& c = context[k];
+    try {
+      if (!ok) throw std::runtime_error(payload);
+      const json j = json::parse(payload);
+      const std::optional<double> gap = j.contains("hull_distance")
+                                            ? std::optional(j["hull_distance"].get<double>())
+                                            : std::nullopt;
+      if (!j.contains("measure")) {
+        r.exact = certify_by_bound(r, mesh[k], c, gap);
+        if (!r.exact) throw std::runtime_error("the hulls' gap certified nothing");
+        r.confirmed = true;
+      } else {
+        decide_exact(r, mesh[k], c, measure_of(j["measure"]));
+      }
+    } catch (const std::exception& e) {
+      ExactCheck x;
+      const bool late = !ok && payload.rfind("timed out", 0) == 0;
+      x.verdict = late ? ExactVerdict::kTimeout : ExactVerdict::kFailed;
+      x.reason = late ? "the exact check passed the pair timeout" : e.what();
+      r.exact = x;
+    }
+    report(k);
+    progress.tick();
+  };
+  QueueOptions queue{options.jobs, options.pair_timeout > 0 ? options.pair_timeout + 5.0 : 0.0,
+                     options.on_warning};
+  run_work_queue(to_measure, queue, task, done);
+  progress.finish();
+}
+
+}  // namespace pd

@@ -1,0 +1,95 @@
+#include "brep/brep_file.h"
+
+#include <unistd.h>
+
+#include <Standard_Failure.hxx>
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <stdexcept>
+
+#include "brep/shape_mesh.h"
+#include "brep/shape_tree.h"
+
+namespace pd {
+
+bool is_brep_path(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == "step" || ext == "stp" || ext == "brep";
+}
+
+const char* sag_basis_name(SagBasis b) {
+  return b == SagBasis::kBound ? "bound" : "estimate";
+}
+
+Tessellation combine(const Tessellation& a, const Tessellation& b) {
+  Tessellation out = a;
+  out.deflection = std::max(a.deflection, b.deflection);
+  out.sag = std::max(a.sag, b.sag);
+  out.basis = a.basis == SagBasis::kBound && b.basis == SagBasis::kBound ? SagBasis::kBound
+                                                                         : SagBasis::kEstimate;
+  out.faces = a.faces + b.faces;
+  out.free_form = a.free_form + b.free_form;
+  out.tolerance = std::max(a.tolerance, b.tolerance);
+  return out;
+}
+
+namespace {
+
+BrepLeaf placed_leaf(const ShapeTree::Leaf& l, const ShapeMesh& m, double deflection) {
+  BrepLeaf leaf;
+  leaf.solids = m.solids;
+  leaf.tessellation = m.tessellation;
+  leaf.tessellation.sag *= std::abs(l.place.ScaleFactor());
+  leaf.tessellation.deflection = deflection;
+  leaf.mesh.triangles = m.mesh.triangles;
+  leaf.mesh.vertices.resize(3, m.mesh.vertices.cols());
+  for (long k = 0; k < m.mesh.vertices.cols(); ++k) {
+    gp_XYZ p(m.mesh.vertices(0, k), m.mesh.vertices(1, k), m.mesh.vertices(2, k));
+    l.place.Transforms(p);
+    leaf.mesh.vertices.col(k) = Vec3(p.X(), p.Y(), p.Z());
+  }
+  const std::string name = "\"" + l.name_path + "\"";
+  if (m.solids == 0)
+    leaf.error = name + " holds no solid (a surface model: shells or faces only); pdcheck " +
+                 "checks solids";
+  return leaf;
+}
+
+}  // namespace
+
+BrepFile read_brep_file(const std::string& path, double deflection) {
+  if (::access(path.c_str(), R_OK) != 0)
+    throw std::runtime_error("B-rep file " + path + ": cannot be read");
+  try {
+    const ShapeTree tree = read_shape_tree(path);
+    BrepFile out;
+    out.nodes = tree.nodes;
+    out.unit = tree.unit;
+    std::map<std::string, ShapeMesh> meshed;  // each product once
+    for (const ShapeTree::Leaf& l : tree.leaves) {
+      auto it = meshed.find(l.product_key);
+      if (it == meshed.end())
+        it = meshed.emplace(l.product_key, mesh_solids(l.product, deflection)).first;
+      out.leaves.push_back(placed_leaf(l, it->second, deflection));
+      if (it->second.open_edges > 0 && it->second.solids > 0)
+        out.warnings.push_back("\"" + l.name_path + "\": its mesh has " +
+                               std::to_string(it->second.open_edges) +
+                               " open edges (a solid whose faces do not close)");
+    }
+    for (std::string& w : out.warnings) w = "B-rep file " + path + ": " + w;
+    for (BrepLeaf& l : out.leaves)
+      if (l.error) l.error = "B-rep file " + path + ": " + *l.error;
+    return out;
+  } catch (const Standard_Failure& e) {
+    throw std::runtime_error("B-rep file " + path +
+                             ": Open CASCADE failed: " + e.GetMessageString());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("B-rep file " + path + ": " + e.what());
+  }
+}
+
+}  // namespace pd

@@ -1,0 +1,206 @@
+#include "brep/face_sag.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
+#include <Poly_PolygonOnTriangulation.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <gp_Circ.hxx>
+#include <gp_Cone.hxx>
+#include <gp_Cylinder.hxx>
+#include <gp_Elips.hxx>
+#include <gp_Sphere.hxx>
+#include <gp_Torus.hxx>
+
+#include "geometry/interpolation_bound.h"
+#include "geometry/triangle_tree.h"
+
+namespace pd {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Whether [a, b] holds a + k·period point `at` (mod period).
+bool holds(double a, double b, double at, double period) {
+  const double k = std::ceil((a - at) / period);
+  return at + k * period <= b;
+}
+
+// The range of cos and the largest |sin| over [a, b].
+struct TrigRange {
+  double cos_min, cos_max, sin_abs;
+};
+TrigRange trig_range(double a, double b) {
+  TrigRange r;
+  r.cos_max = holds(a, b, 0.0, 2 * kPi) ? 1.0 : std::max(std::cos(a), std::cos(b));
+  r.cos_min = holds(a, b, kPi, 2 * kPi) ? -1.0 : std::min(std::cos(a), std::cos(b));
+  r.sin_abs =
+      holds(a, b, kPi / 2, kPi) ? 1.0 : std::max(std::abs(std::sin(a)), std::abs(std::sin(b)));
+  return r;
+}
+
+// Bounds of the second derivatives of an analytic surface over the parameter
+// box [u0, u1] × [v0, v1] (OCCT's parametrisations, ElSLib); false for a
+// free-form surface.
+bool analytic_bounds(const BRepAdaptor_Surface& s, double v0, double v1,
+                     SecondDerivativeBounds& m) {
+  switch (s.GetType()) {
+    case GeomAbs_Plane:
+      m = {};
+      return true;
+    case GeomAbs_Cylinder:  // O + r(cos u X + sin u Y) + v Z
+      m = {s.Cylinder().Radius(), 0.0, 0.0};
+      return true;
+    case GeomAbs_Cone: {  // O + (r + v sin α)(cos u X + sin u Y) + v cos α Z
+      const gp_Cone c = s.Cone();
+      const double sa = std::sin(c.SemiAngle());
+      const double at0 = std::abs(c.RefRadius() + v0 * sa), at1 = std::abs(c.RefRadius() + v1 * sa);
+      m = {std::max(at0, at1), std::abs(sa), 0.0};
+      return true;
+    }
+    case GeomAbs_Sphere: {  // O + r cos v (cos u X + sin u Y) + r sin v Z
+      const double r = s.Sphere().Radius();
+      const TrigRange t = trig_range(v0, v1);
+      m = {r * std::max(std::abs(t.cos_min), std::abs(t.cos_max)), r * t.sin_abs, r};
+      return true;
+    }
+    case GeomAbs_Torus: {  // O + (R + r cos v)(cos u X + sin u Y) + r sin v Z
+      const gp_Torus t = s.Torus();
+      const double big = t.MajorRadius(), r = t.MinorRadius();
+      const TrigRange g = trig_range(v0, v1);
+      m = {std::max(std::abs(big + r * g.cos_min), std::abs(big + r * g.cos_max)), r * g.sin_abs,
+           r};
+      return true;
+    }
+    default:
+      return false;
+  }
+}
+
+// The distance between the surface and the flat triangle sampled at seven
+// points (its centroid, edge midpoints and the points halfway to the corners):
+// an estimate for free-form faces.
+double sampled_deviation(const BRepAdaptor_Surface& s, const std::array<gp_Pnt2d, 3>& uv,
+                         const std::array<gp_Pnt, 3>& p) {
+  static const double kWeights[7][3] = {{1 / 3., 1 / 3., 1 / 3.},
+                                        {.5, .5, 0},
+                                        {0, .5, .5},
+                                        {.5, 0, .5},
+                                        {2 / 3., 1 / 6., 1 / 6.},
+                                        {1 / 6., 2 / 3., 1 / 6.},
+                                        {1 / 6., 1 / 6., 2 / 3.}};
+  double worst = 0.0;
+  for (const auto& w : kWeights) {
+    const double u = w[0] * uv[0].X() + w[1] * uv[1].X() + w[2] * uv[2].X();
+    const double v = w[0] * uv[0].Y() + w[1] * uv[1].Y() + w[2] * uv[2].Y();
+    const gp_XYZ flat = w[0] * p[0].XYZ() + w[1] * p[1].XYZ() + w[2] * p[2].XYZ();
+    worst = std::max(worst, (s.Value(u, v).XYZ() - flat).Modulus());
+  }
+  return worst;
+}
+
+// The chord error of one boundary edge's polygon on the face's triangulation.
+FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc_Location& loc,
+                 const Handle(Poly_Triangulation) & handle) {
+  // Polygons of an edge are found by the triangulation they lie on.
+  FaceSag out;
+  if (BRep_Tool::Degenerated(e)) return out;
+  const Handle(Poly_PolygonOnTriangulation)& poly =
+      BRep_Tool::PolygonOnTriangulation(e, handle, loc);
+  if (poly.IsNull() || poly->NbNodes() < 2) return out;
+  BRepAdaptor_Curve c(e);
+  const GeomAbs_CurveType type = c.GetType();
+  if (type == GeomAbs_Line) return out;
+  const bool params = poly->HasParameters();
+  const gp_Trsf to_world = loc.Transformation();
+  for (int k = 1; k < poly->NbNodes(); ++k) {
+    const gp_Pnt a = t.Node(poly->Node(k)).Transformed(to_world);
+    const gp_Pnt b = t.Node(poly->Node(k + 1)).Transformed(to_world);
+    if (!params) {  // nothing to bound the arc with: estimate from the chord's middle
+      out.bound = false;
+      continue;
+    }
+    const double t0 = poly->Parameter(k), t1 = poly->Parameter(k + 1);
+    double dev;
+    if (type == GeomAbs_Circle) {
+      const double r = c.Circle().Radius();
+      dev = r * (1.0 - std::cos(0.5 * std::abs(t1 - t0)));
+    } else if (type == GeomAbs_Ellipse) {
+      dev = segment_interpolation_bound(t0, t1, c.Ellipse().MajorRadius());
+    } else {
+      out.bound = false;
+      const double mid = 0.5 * (t0 + t1);
+      dev = (c.Value(mid).XYZ() - 0.5 * (a.XYZ() + b.XYZ())).Modulus();
+    }
+    // The polygon's corners as stored may lie off the curve by rounding.
+    dev += std::max(c.Value(t0).Distance(a), c.Value(t1).Distance(b));
+    out.value = std::max(out.value, dev);
+  }
+  return out;
+}
+
+}  // namespace
+
+FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & handle,
+                 const TopLoc_Location& loc) {
+  FaceSag out;
+  const Poly_Triangulation& t = *handle;
+  BRepAdaptor_Surface s(face);  // placed by the face's location, as the nodes are by `loc`
+  const gp_Trsf to_world = loc.Transformation();
+  const bool has_uv = t.HasUVNodes();
+  double triangles = 0.0;
+  for (int k = 1; k <= t.NbTriangles(); ++k) {
+    int i[3];
+    t.Triangle(k).Get(i[0], i[1], i[2]);
+    std::array<gp_Pnt, 3> p;
+    std::array<gp_Pnt2d, 3> uv;
+    for (int c = 0; c < 3; ++c) {
+      p[c] = t.Node(i[c]).Transformed(to_world);
+      if (has_uv) uv[c] = t.UVNode(i[c]);
+    }
+    if (!has_uv) {
+      out.bound = false;
+      continue;
+    }
+    double corner = 0.0;  // the corners as stored against the surface at their parameters
+    for (int c = 0; c < 3; ++c)
+      corner = std::max(corner, s.Value(uv[c].X(), uv[c].Y()).Distance(p[c]));
+    const double v0 = std::min({uv[0].Y(), uv[1].Y(), uv[2].Y()});
+    const double v1 = std::max({uv[0].Y(), uv[1].Y(), uv[2].Y()});
+    SecondDerivativeBounds m;
+    double dev;
+    if (s.GetType() == GeomAbs_Sphere) {
+      // The triangle lies inside the sphere (its corners are on it), at most
+      // r − d(c, T) from it; every point of the sphere lies on a ray from the
+      // centre through some triangle, no farther from it. Exact, where the
+      // parametrisation's derivatives blow up at the poles.
+      const gp_Sphere sphere = s.Sphere();
+      const Vec3 c(sphere.Location().X(), sphere.Location().Y(), sphere.Location().Z());
+      const auto v = [](const gp_Pnt& q) { return Vec3(q.X(), q.Y(), q.Z()); };
+      const Vec3 near = closest_on_triangle(c, v(p[0]), v(p[1]), v(p[2]));
+      dev = std::max(0.0, sphere.Radius() - (near - c).norm());
+    } else if (analytic_bounds(s, v0, v1, m)) {
+      dev = triangle_interpolation_bound(
+          {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()), Vec2(uv[2].X(), uv[2].Y())}, m);
+    } else {
+      out.bound = false;
+      dev = sampled_deviation(s, uv, p);
+    }
+    triangles = std::max(triangles, dev + corner);
+  }
+  double edges = 0.0;
+  for (TopExp_Explorer x(face, TopAbs_EDGE); x.More(); x.Next()) {
+    const FaceSag e = edge_sag(TopoDS::Edge(x.Current()), t, loc, handle);
+    edges = std::max(edges, e.value);
+    out.bound = out.bound && e.bound;
+  }
+  out.value = triangles + edges;
+  return out;
+}
+
+}  // namespace pd
