@@ -175,10 +175,27 @@ inline constexpr double kRigidPlacement = 1e-5;
 /// rounding only. Anything else is measured in file coordinates.
 inline constexpr double kSimilarPlacement = 1e-12;
 
-/// A part whose size (largest box extent) is within this relative distance of
-/// 25.4, 1000 or 304.8 times (or 1/that) the median part size of its assembly
-/// gets a warning: the factor of inches, metres or feet against millimetres.
+/// The units check (scene/setup_warnings.h, docs/numerics.md "Units"): a
+/// part's size (largest box extent) against the median of the other parts'.
+/// Within kUnitsLikeFactor of 25.4, 1000 or 304.8 times it (or 1/that), with
+/// two or more other parts, and kUnitsLikeGap times beyond every other part's
+/// size: the factor of inches, metres or feet against millimetres. At least
+/// kUnitsLikeFar times it (or 1/that): no ordinary assembly's part. A glTF
+/// part read in the metres its format declares, at least kUnitsLikeFormat
+/// times it: written in millimetres. A part kUnitsLikeGap times beyond every
+/// other part's size that meets no other part's box, where a units factor
+/// brings its size within the others' range (kUnitsLikeRange slack) and its
+/// box among theirs.
 inline constexpr double kUnitsLikeFactor = 0.03;
+/// Two parts are at the same place (a duplicate, batch/pair_solve.h) when
+/// their placed hulls' vertices agree within this fraction of the part's size
+/// plus four coordinate steps: far below any placement a designer means, far
+/// above the rounding of one placement written twice.
+inline constexpr double kSamePlace = 1e-9;
+inline constexpr double kUnitsLikeFar = 100.0;
+inline constexpr double kUnitsLikeFormat = 20.0;
+inline constexpr double kUnitsLikeGap = 10.0;
+inline constexpr double kUnitsLikeRange = 2.0;
 /// Limits of one decomposition (beyond them: not complete, pairs unconfirmed),
 /// and the samples of a piece's concavity estimate (a fifth of them to rank
 /// candidate cuts).

@@ -9,6 +9,7 @@
 #include "batch/pair_tolerance.h"
 #include "cli_support.h"
 #include "corpus/cad_shapes.h"
+#include "page_data.h"
 #include "report/finding_text.h"
 #include "sag_part.h"
 #include "scene/hull_cache.h"
@@ -170,6 +171,62 @@ TEST(AutoTolerance, AFalsePositiveSaysWhichFeatureExplainsIt) {
             std::string::npos);
 }
 
+TEST(AutoTolerance, EveryOutputSaysAutoWithEachPairsBandAndNoResolutionWarning) {
+  // A 10 mm STL box (float32: a coordinate step) on an inline block, 0.5 deep.
+  const std::string dir = process_dir();
+  std::ofstream(dir + "auto_box.stl") << "solid b\n"
+                                      <<
+      [] {
+        std::string s;
+        const int f[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                              {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+        for (const auto& t : f) {
+          s += "facet normal 0 0 0\nouter loop\n";
+          for (int k : t)
+            s += "vertex " + std::to_string(10 * (k & 1)) + " " +
+                 std::to_string(10 * ((k >> 1) & 1)) + " " +
+                 std::to_string(10 * ((k >> 2) & 1) + 9.5) + "\n";
+          s += "endloop\nendfacet\n";
+        }
+        return s;
+      }() << "endsolid b\n";
+  const std::string scene = write_temp("auto_outputs.json", R"({"tolerance": "auto", "parts": [
+    {"id": "block", "vertices": [[0,0,0],[10,0,0],[0,10,0],[10,10,0],[0,0,10],[10,0,10],[0,10,10],[10,10,10]]},
+    {"id": "box", "mesh": "auto_box.stl"}]})");
+  const CliResult r = pdcheck(scene + " -q --no-cache --junit " + dir + "auto.xml --sarif " + dir +
+                              "auto.sarif --csv " + dir + "auto.csv --html " + dir + "auto.html");
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto rep = nlohmann::json::parse(r.out);
+  EXPECT_EQ(rep["tolerance"], "auto");
+  for (const auto& p : rep["parts"])
+    for (const auto& w : p.value("warnings", nlohmann::json::array()))
+      EXPECT_EQ(w.get<std::string>().find("coordinate resolution"), std::string::npos) << w;
+  EXPECT_EQ(r.err.find("coordinate resolution"), std::string::npos) << r.err;
+  ASSERT_EQ(rep["pairs"].size(), 1u);
+  const double band = rep["pairs"][0]["tolerance"];
+  EXPECT_GT(band, 0.0);
+  const std::string band_text = "tolerance " + short_number(band) + " mm";
+  const std::string junit = read_text(dir + "auto.xml");
+  EXPECT_NE(junit.find("<property name=\"tolerance\" value=\"auto\"/>"), std::string::npos)
+      << junit;
+  EXPECT_NE(junit.find(band_text), std::string::npos) << junit;
+  EXPECT_EQ(junit.find("tolerance 0 mm"), std::string::npos) << junit;
+  const auto sarif = nlohmann::json::parse(read_text(dir + "auto.sarif"));
+  EXPECT_EQ(sarif["runs"][0]["properties"]["tolerance"], "auto");
+  EXPECT_EQ(sarif["runs"][0]["results"][0]["properties"]["tolerance"], band);
+  const std::string csv = read_text(dir + "auto.csv");
+  EXPECT_NE(csv.find("," + nlohmann::json(band).dump() + ","), std::string::npos) << csv;
+  const nlohmann::json page = page_data(read_text(dir + "auto.html"));
+  EXPECT_EQ(page["tolerance"], "auto");
+  EXPECT_EQ(page["findings"][0]["tolerance"], band);
+  EXPECT_NE(page["findings"][0]["text"].get<std::string>().find(band_text), std::string::npos);
+  // The same page from the saved report.
+  std::ofstream(dir + "auto.json") << r.out;
+  const CliResult html = pdcheck("html " + dir + "auto.json -o " + dir + "auto2.html");
+  EXPECT_EQ(html.code, 0) << html.err;
+  EXPECT_EQ(page_data(read_text(dir + "auto2.html"))["tolerance"], "auto");
+}
+
 TEST(AutoTolerance, CommandLineAutoAndBadValues) {
   // Two inline cubes overlapping by 1e-9: no sag, only their double steps, so
   // auto calls it an interference where a fixed 0.01 calls it a false positive.
@@ -183,6 +240,7 @@ TEST(AutoTolerance, CommandLineAutoAndBadValues) {
   EXPECT_EQ(a.code, 1) << a.err;
   const auto rep = nlohmann::json::parse(a.out);
   EXPECT_TRUE(rep.contains("tolerance_auto"));
+  EXPECT_EQ(rep["tolerance"], "auto");
   ASSERT_EQ(rep["pairs"].size(), 1u);
   const auto& p = rep["pairs"][0];
   EXPECT_EQ(p["status"], "interference");

@@ -86,6 +86,44 @@ TEST(Checks, ClearanceViolationsAgainstExactDistances) {
   EXPECT_EQ(r["summary"]["exit_code"], 1);
 }
 
+TEST(Checks, AClearanceIsViolatedByContactAndOverlapAsByAGap) {
+  // Clearance 0.2, tolerance 0.1; unit cubes in pairs 10 apart along x: a gap
+  // of 0.1, an exact fit (touching faces), a press fit of 0.05 (within the
+  // tolerance), an overlap of 0.5 (beyond it), a gap of 0.3 (the clearance met).
+  const double second[] = {1.1, 1.0, 0.95, 0.5, 1.3};
+  const char* names[] = {"gap", "fit", "press", "clash", "clear"};
+  json parts = json::array();
+  for (int k = 0; k < 5; ++k) {
+    parts.push_back(cube_json(std::string(names[k]) + "-a", 10.0 * k));
+    parts.push_back(cube_json(std::string(names[k]) + "-b", 10.0 * k + second[k]));
+  }
+  const json plain = run({{"tolerance", 0.1}, {"parts", parts}});
+  const json checked =
+      run({{"tolerance", 0.1}, {"parts", parts}, {"checks", {{"clearance", {{"min", 0.2}}}}}});
+  const auto status = [](const json& r, const std::string& n) {
+    const json* p = find_pair(r, n + "-a", n + "-b");
+    return p ? (*p)["status"].get<std::string>() : "not checked";
+  };
+  // Without the check: a touching pair is separated, the press fit a false positive.
+  EXPECT_EQ(status(plain, "fit"), "separated");
+  EXPECT_EQ(status(plain, "press"), "false_positive");
+  EXPECT_EQ(status(checked, "gap"), "clearance_violation");
+  EXPECT_EQ(status(checked, "fit"), "clearance_violation");
+  EXPECT_EQ(status(checked, "press"), "clearance_violation");
+  EXPECT_EQ(status(checked, "clash"), "interference");  // the more severe finding
+  EXPECT_EQ(status(checked, "clear"), "not checked");   // farther apart than the clearance: culled
+  const json& fit = *find_pair(checked, "fit-a", "fit-b");
+  EXPECT_NEAR(fit["clearance"]["distance"].get<double>(), 0.0, 1e-9);
+  EXPECT_TRUE(fit.contains("at"));  // a finding says where it is
+  const json& press = *find_pair(checked, "press-a", "press-b");
+  EXPECT_NEAR(press["depth"].get<double>(), 0.05, 1e-9);
+  EXPECT_FALSE(press["clearance"].contains("distance"));
+  EXPECT_EQ(press["clearance"]["min"], 0.2);
+  EXPECT_EQ(checked["summary"]["clearance_violation"], 3);
+  EXPECT_EQ(checked["summary"]["interference"], 1);
+  EXPECT_EQ(checked["summary"]["false_positive"], 0);
+}
+
 TEST(Checks, MotionSweepAgainstAnalyticValues) {
   // b slides along −x through a at 1 unit/s: s(t) = t − 2 until contact at t = 2,
   // then the overlap 1 − |t − 3| (the x overlap is the smallest way out).

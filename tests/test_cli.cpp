@@ -267,6 +267,20 @@ TEST(Cli, EmptyInputIsAnError) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("no_parts.json: no parts"), std::string::npos) << r.err;
   EXPECT_EQ(pdcheck(none + " -q --allow-empty").code, 0);
+  // A pair list that lists none checks nothing.
+  const std::string no_pairs =
+      write_temp("no_pairs.json", R"({"tolerance": 1, "pairs": [], "parts": [
+      {"id": "a", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]},
+      {"id": "b", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]}]})");
+  const CliRun np = pdcheck(no_pairs + " -q");
+  EXPECT_EQ(np.code, 2) << np.err;
+  EXPECT_NE(np.err.find("pdcheck: error: " + no_pairs + ": pairs: an empty list: no pair to check"),
+            std::string::npos)
+      << np.err;
+  EXPECT_EQ(np.out, "");
+  const CliRun npa = pdcheck(no_pairs + " -q --allow-empty");
+  EXPECT_EQ(npa.code, 0) << npa.err;
+  EXPECT_EQ(json::parse(npa.out)["pairs"].size(), 0u);
 
   const std::string failed = write_temp("all_failed.json", R"({"tolerance": 1, "parts": [
       {"id": "a", "mesh": "no/such/a.stl"}, {"id": "b", "mesh": "no/such/b.stl"}]})");

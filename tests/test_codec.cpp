@@ -262,6 +262,7 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
                                             "b",
                                             "fingerprint",
                                             "status",
+                                            "duplicate",
                                             "tolerance",
                                             "tolerance_source",
                                             "tolerance_basis",

@@ -296,13 +296,14 @@ TEST(ContactBand, AClearanceIsCheckedAgainstTheGapBand) {
             std::string::npos)
       << pa.dump();
   EXPECT_NE(a.err.find(" - gap band "), std::string::npos) << a.err;
-  // Touching (true gap 0): the mesh shows the pin's sag as a gap; a fixed
-  // tolerance calls it a clearance violation, auto a contact.
+  // Touching (true gap 0): the mesh shows the pin's sag as a gap; auto says
+  // it is a contact, and a contact is closer than any clearance.
   EXPECT_EQ(only_pair(test::pdcheck(scene_with(0.0, "0.01") + " --no-cache -j 1"))["status"],
             "clearance_violation");
   const test::CliResult touching = test::pdcheck(scene_with(0.0, R"("auto")") + " --no-cache -j 1");
-  EXPECT_EQ(touching.code, 0) << touching.err;
+  EXPECT_EQ(touching.code, 1) << touching.err;
   const auto pt = only_pair(touching);
-  EXPECT_EQ(pt["status"], "separated") << pt.dump();
+  EXPECT_EQ(pt["status"], "clearance_violation") << pt.dump();
   EXPECT_LE(pt["clearance"]["distance"].get<double>(), pt["clearance"]["gap_band"].get<double>());
+  EXPECT_NE(touching.err.find("touching, distance "), std::string::npos) << touching.err;
 }

@@ -127,6 +127,10 @@ TEST(FindingGroups, ClearanceShortfallSizesTheMove) {
   // bolt-1 < plate bytewise: the move is bolt-1's (b), along +x.
   EXPECT_EQ(g.groups[0].move.part, 1);
   EXPECT_EQ(g.groups[0].move.direction, Vec3(1, 0, 0));
+  // Overlapping by 0.02 within the tolerance: out of the overlap, then the clearance.
+  PairResult press = finding(0, 1, Status::kClearanceViolation, 0.02, Vec3(1, 0, 0));
+  press.clearance_min = 0.5;
+  EXPECT_NEAR(group_findings({press}, kIds).groups[0].move.length, 0.52, 1e-15);
 }
 
 TEST(FindingGroups, InTheReportAndOnStderr) {

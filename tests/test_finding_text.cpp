@@ -86,6 +86,26 @@ TEST(FindingText, EverySentenceAgreesWithTheNumbers) {
     }
 }
 
+TEST(FindingText, AClearanceViolationSaysWhetherTheShortfallIsAGapAContactOrAnOverlap) {
+  PairResult gap = pair(Status::kClearanceViolation, "hull");
+  EXPECT_NE(finding_text(gap, parts(), PairReview{}, "mm", 0.05)
+                .find(": distance 0.5 mm < required clearance 1 mm"),
+            std::string::npos);
+  PairResult touching = gap;
+  touching.distance = 0.004, touching.gap_band = 0.01, touching.gap_basis = "bolt: r 4 mm";
+  EXPECT_NE(finding_text(touching, parts(), PairReview{}, "mm", 0.05)
+                .find(": touching, distance 0.004 mm <= gap band 0.01 mm (bolt: r 4 mm), closer "
+                      "than the required clearance 1 mm"),
+            std::string::npos);
+  PairResult press = gap;
+  press.distance.reset();
+  press.depth = 0.02;
+  EXPECT_NE(finding_text(press, parts(), PairReview{}, "mm", 0.05)
+                .find(": overlapping, depth 0.02 mm <= tolerance 0.05 mm (a contact, not an "
+                      "interference), closer than the required clearance 1 mm"),
+            std::string::npos);
+}
+
 TEST(FindingText, TheHtmlPageShowsTheSameSentence) {
   const std::vector<Part> p = parts();
   nlohmann::ordered_json report = {{"scene", "s.json"},

@@ -178,7 +178,7 @@ TEST(HullCache, AnEntryWithADamagedSagIsAMiss) {
   ASSERT_TRUE(fs::exists(file));
   // The sag's feature count made huge, the checksum kept right: the entry's
   // own parse refuses it.
-  const CacheKind kind{"pdcheck-hulls-3", ".pdh"};
+  const CacheKind kind{"pdcheck-hulls-4", ".pdh"};
   std::string body = *read_cache_entry(dir.string(), kind, k);
   const size_t sag_at = body.find("a warning\n") + 10;  // resolution, concave, convex, creases,
   const long huge = 1L << 40;                           // design_edges, then the count

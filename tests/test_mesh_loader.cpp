@@ -8,8 +8,10 @@
 #include <filesystem>
 #include <string>
 
+#include "cli_support.h"
 #include "scene/mesh_loader.h"
 #include "scratch_dir.h"
+#include "zip_archive.h"
 
 using namespace pd;
 using pd_test::error_of;
@@ -78,4 +80,39 @@ TEST(MeshLoader, UnusableFilesSayWhy) {
       EXPECT_NE(std::string(e.what()).find(f), std::string::npos) << e.what();
     }
   }
+}
+
+// The 3MF OpenSCAD writes (lib3mf: Zip64 size fields in every entry, dated
+// 1980-00-00), which assimp's own unzip reads as an empty scene: repacked, it
+// loads; a container that is no zip says so.
+TEST(MeshLoader, ThreeMfAsOpenScadWritesItLoads) {
+  if (!pd::test::have_command("openscad")) GTEST_SKIP() << "openscad is not installed";
+  const std::string d = pd_test::scratch_dir("mesh_loader", "3mf").string() + "/";
+  std::ofstream(d + "lid.scad") << "translate([5, 0, 0]) cube([10, 20, 2]);\n";
+  const auto made = pd::test::shell("openscad -o " + d + "lid.3mf " + d + "lid.scad 2>&1");
+  ASSERT_EQ(made.code, 0) << made.out;
+  // What makes it hard for assimp: the entries' sizes in Zip64 extra fields.
+  const std::string bytes = pd_test::read_text(d + "lid.3mf");
+  ASSERT_GE(bytes.size(), 30u);
+  EXPECT_EQ(bytes.substr(18, 8), std::string(8, '\xff')) << "no Zip64 sizes in the local header";
+  const auto sets = load_mesh_vertices(d + "lid.3mf", false);
+  ASSERT_EQ(sets.size(), 1u);
+  EXPECT_TRUE(sets[0].rowwise().minCoeff().isApprox(Vec3(5, 0, 0), 1e-6))
+      << sets[0].rowwise().minCoeff();
+  EXPECT_TRUE(sets[0].rowwise().maxCoeff().isApprox(Vec3(15, 20, 2), 1e-6))
+      << sets[0].rowwise().maxCoeff();
+  // From memory too (the shard plan's and split parts' path).
+  EXPECT_EQ(read_meshes(bytes, ".3mf", false).size(), 1u);
+  // Not a zip: the container is named as what failed.
+  std::ofstream(d + "broken.3mf") << "<model>not a zip</model>";
+  const std::string e = error_of<MeshError>([&] { load_meshes(d + "broken.3mf", false); });
+  EXPECT_NE(e.find("broken.3mf: the 3MF container (a zip archive) could not be opened: Not a zip "
+                   "archive"),
+            std::string::npos)
+      << e;
+  // A zip without a model: said as such.
+  std::ofstream(d + "empty.3mf") << pd::zip_archive({{"readme.txt", "nothing here"}});
+  const std::string none = error_of<MeshError>([&] { load_meshes(d + "empty.3mf", false); });
+  EXPECT_NE(none.find("the 3MF container opened, but"), std::string::npos) << none;
+  std::filesystem::remove_all(d);
 }

@@ -9,6 +9,7 @@
 #include "batch/pair_solve.h"
 #include "box_points.h"
 #include "inline_part.h"
+#include "scene/setup_warnings.h"
 
 using namespace pd;
 using pd_test::box_points;
@@ -85,8 +86,59 @@ TEST(PairSolve, ApartBoxesAreSeparatedAndAClearanceMeasuresTheirGap) {
   EXPECT_EQ(ok.status, Status::kSeparated);
   ASSERT_TRUE(ok.distance);
   EXPECT_NEAR(*ok.distance, 0.5, 1e-9);
-  // Touching face to face: contact, not a violation.
-  EXPECT_EQ(solve(box_at(1.0), 0.05, clearance(1.0)).status, Status::kSeparated);
+  // Touching face to face: closer than any clearance, a violation.
+  const PairResult touching = solve(box_at(1.0), 0.05, clearance(1.0));
+  EXPECT_EQ(touching.status, Status::kClearanceViolation);
+  ASSERT_TRUE(touching.distance);
+  EXPECT_NEAR(*touching.distance, 0.0, 1e-9);
+  EXPECT_TRUE(touching.at);
+  EXPECT_EQ(solve(box_at(1.0), 0.05).status, Status::kSeparated);
+}
+
+TEST(PairSolve, AnOverlapWithinTheToleranceViolatesAClearanceAnInterferenceStaysOne) {
+  // Overlapping by 0.1: within the tolerance 0.2 a false positive, which a
+  // clearance of 1 makes a violation once the pair is decided; beyond the
+  // tolerance 0.05 it stays an interference.
+  PairResult press = solve(box_at(0.9), 0.2, clearance(1.0));
+  EXPECT_EQ(press.status, Status::kFalsePositive);
+  note_pair_tolerance(press, clearance(1.0));
+  EXPECT_EQ(press.status, Status::kClearanceViolation);
+  EXPECT_NEAR(press.depth, 0.1, 1e-12);
+  EXPECT_FALSE(press.distance);
+  PairResult clash = solve(box_at(0.9), 0.05, clearance(1.0));
+  note_pair_tolerance(clash, clearance(1.0));
+  EXPECT_EQ(clash.status, Status::kInterference);
+  PairResult plain = solve(box_at(0.9), 0.2);
+  note_pair_tolerance(plain, {});
+  EXPECT_EQ(plain.status, Status::kFalsePositive);
+  EXPECT_TRUE(closer_than(0.0, 0.0, 0.2));
+  EXPECT_TRUE(closer_than(0.01, 0.02, 0.2));  // within the gap band: touching
+  EXPECT_TRUE(closer_than(0.3, 0.15, 0.2));
+  EXPECT_FALSE(closer_than(0.3, 0.05, 0.2));
+}
+
+TEST(PairSolve, APartPlacedTwiceAtTheSameSpotIsADuplicate) {
+  Part twin = kCube;
+  twin.id = "b";
+  EXPECT_TRUE(same_placed_geometry(kCube, twin));
+  const PairResult r = solve(twin, 0.05);
+  EXPECT_EQ(r.status, Status::kInterference);
+  EXPECT_TRUE(r.duplicate);
+  EXPECT_NEAR(r.depth, 1.0, 1e-9);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(setup_warning_kind(r.warnings[0]), std::string(kPlacedTwice)) << r.warnings[0];
+  // Its vertices in another order, one moved by rounding: the same.
+  Part shuffled = inline_part("b", box_points(Vec3::Zero(), Vec3::Ones()).rowwise().reverse());
+  shuffled.pieces[0].vertices(0, 0) += 1e-12;
+  EXPECT_TRUE(same_placed_geometry(kCube, shuffled));
+  // Moved by 1e-6 of its size, or another shape in the same box: not.
+  const Part moved = inline_part("b", box_points(Vec3(1e-6, 0, 0), Vec3(1 + 1e-6, 1, 1)));
+  EXPECT_FALSE(same_placed_geometry(kCube, moved));
+  EXPECT_FALSE(solve(moved, 0.05).duplicate);
+  Points wedge = box_points(Vec3::Zero(), Vec3::Ones());
+  wedge.col(7) = wedge.col(6);  // one corner pulled onto another: the same box, not the same part
+  EXPECT_FALSE(same_placed_geometry(kCube, inline_part("b", wedge)));
+  EXPECT_FALSE(solve(box_at(0.9), 0.05).duplicate);  // an ordinary interference
 }
 
 TEST(PairSolve, APartThatCouldNotBeLoadedMakesItsPairAnError) {

@@ -67,6 +67,23 @@ TEST(PairTolerance, MeasuredSagsAndStepsWithTheMarginNamed) {
   EXPECT_DOUBLE_EQ(t.at_contact(Vec3(1.5, 1.5, 1.5), 0.1).value, band(0, 0, 1e-6, 2e-6));
 }
 
+TEST(PairTolerance, FlatPartsGetTheFloorOfTheirCoordinateSteps) {
+  // Measured sag 0 on both: the band is the steps with the margin, never 0,
+  // and the basis says it is the floor.
+  const Part a = part("plate", Vec3(0, 0, 0), Vec3(2, 2, 2), 1e-6, 0);
+  const Part b = part("block", Vec3(1, 1, 1), Vec3(3, 3, 3), 2e-6, 0);
+  const PairTolerance t = pair_tolerance(a, b, AutoTolerance{}, "mm");
+  EXPECT_DOUBLE_EQ(t.value, band(0, 0, 1e-6, 2e-6));
+  EXPECT_GT(t.value, 0.0);
+  EXPECT_EQ(t.basis,
+            "plate: no concave tessellated surface there; block: no concave tessellated surface "
+            "there; coordinate steps 1e-06 + 2e-06 mm (flat there: the band's floor, the "
+            "coordinates' rounding)");
+  // One tessellated part: its sag, no floor said.
+  const Part bore = part("bore", Vec3(0, 0, 0), Vec3(2, 2, 2), 1e-6, 0.02);
+  EXPECT_EQ(pair_tolerance(bore, b, AutoTolerance{}, "mm").basis.find("floor"), std::string::npos);
+}
+
 TEST(PairTolerance, ADeclaredSagReplacesTheMeasuredOne) {
   const Part a = part("bore", Vec3(0, 0, 0), Vec3(2, 2, 2), 1e-6, 0.02);
   Part b = part("block", Vec3(1, 1, 1), Vec3(3, 3, 3), 2e-6, 0);

@@ -81,3 +81,24 @@ TEST(PriorSettings, OtherSettingsAreWarningsEachNamed) {
   reordered.method = m;
   EXPECT_TRUE(check_prior_settings("--reuse", "r.json", reordered, run).empty());
 }
+
+TEST(PriorSettings, ToleranceAutoIsSaidAsAuto) {
+  const PriorSettings p = prior_settings_of(nlohmann::json::parse(R"({"tolerance": "auto"})"));
+  EXPECT_TRUE(p.auto_tolerance);
+  EXPECT_FALSE(p.tolerance);
+  const std::vector<std::string> w = check_prior_settings("--baseline", "b.json", p, run_context());
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("--baseline b.json: written with tolerance auto, this run's is 0.1 mm", 0),
+            0u)
+      << w[0];
+  ReportContext under_auto = run_context();
+  under_auto.auto_tolerance = AutoTolerance{};
+  under_auto.tolerance = 0.0;
+  EXPECT_TRUE(check_prior_settings("--baseline", "b.json", p, under_auto).empty());
+  PriorSettings fixed;
+  fixed.tolerance = 0.1;
+  ASSERT_EQ(check_prior_settings("--reuse", "r.json", fixed, under_auto).size(), 1u);
+  EXPECT_NE(check_prior_settings("--reuse", "r.json", fixed, under_auto)[0].find(
+                "written with tolerance 0.1 mm, this run's is auto"),
+            std::string::npos);
+}

@@ -5,12 +5,42 @@
 #include <gtest/gtest.h>
 
 #include "report/baseline.h"
+#include "report/expected_rules.h"
 #include "report/review.h"
 #include "review_runs.h"
 
 namespace pd {
 
 using namespace pd::test;
+
+TEST(Review, AnExpectedContactSuppressesTheClearanceViolationAContactIs) {
+  ExpectedRules rules;
+  Suppression press;
+  press.rule = "press fits";
+  press.reason = "bearings are pressed in";
+  press.max_depth = 0.05;
+  press.where = "rules.expected[0]";
+  rules.entries.push_back(press);
+  rules.by_name.emplace(press.rule, 0);
+  ReviewOptions o;
+  o.expected = &rules;
+  std::vector<PairResult> pairs = {
+      pair(0, 1, Status::kClearanceViolation, 0.02), pair(1, 2, Status::kClearanceViolation, 0.0),
+      pair(2, 3, Status::kClearanceViolation, 0.0), pair(3, 4, Status::kClearanceViolation, 0.09)};
+  pairs[1].distance = 0.0;  // touching
+  pairs[2].distance = 0.1;  // apart, closer than the clearance: no contact
+  for (PairResult& r : pairs) r.clearance_min = 0.2, r.expected = press.rule;
+  const RunResult run = run_with(pairs);
+  const auto reviewed = [&](size_t k) {
+    return review_pair(run.pairs[k], run.parts, o, FailOn::kClearance);
+  };
+  EXPECT_TRUE(reviewed(0).suppressed);  // overlapping by 0.02 <= max_depth
+  EXPECT_TRUE(reviewed(1).suppressed);
+  EXPECT_FALSE(reviewed(2).suppressed);
+  EXPECT_TRUE(reviewed(2).fails);
+  EXPECT_FALSE(reviewed(3).suppressed);  // deeper than the rule allows
+  EXPECT_TRUE(reviewed(3).expected_exceeded);
+}
 
 TEST(FailOn, ExitCodeTable) {
   // One pair of each finding status; the baseline knows the interference.

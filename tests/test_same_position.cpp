@@ -9,6 +9,25 @@
 
 using namespace pd;
 
+TEST(SamePosition, BoundaryEdgesAreThoseOfAnOddNumberOfTriangles) {
+  // A tetrahedron as STL stores it (each triangle its own corners): closed.
+  const Vec3 c[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  Mesh m;
+  m.vertices.resize(3, 12);
+  m.triangles.resize(3, 4);
+  for (int t = 0; t < 4; ++t)
+    for (int k = 0; k < 3; ++k) {
+      m.vertices.col(3 * t + k) = c[faces[t][k]];
+      m.triangles(k, t) = 3 * t + k;
+    }
+  EXPECT_EQ(boundary_edges(m), 0);
+  Mesh open = m;  // one face missing: its three edges are the boundary
+  open.triangles.conservativeResize(3, 3);
+  EXPECT_EQ(boundary_edges(open), 3);
+  EXPECT_EQ(boundary_edges(Mesh{m.vertices, Triangles(3, 0)}), 0);  // a point cloud
+}
+
 TEST(SamePosition, EveryColumnPointsAtTheFirstEqualOne) {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> pick(0, 5);

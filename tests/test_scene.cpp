@@ -173,6 +173,13 @@ TEST(Scene, NothingToCheckIsSaid) {
   EXPECT_EQ(empty_scene_problem(s),
             "<stdin>: an empty part list (no mesh path on any line): nothing to check "
             "(--allow-empty accepts an empty input)");
+  SceneSpec listed = scene_of({part("a"), part("b")});
+  listed.pairs.emplace();
+  EXPECT_EQ(empty_scene_problem(listed),
+            "s.json: pairs: an empty list: no pair to check (leave \"pairs\" out to check every "
+            "pair whose boxes meet; --allow-empty accepts an empty input)");
+  listed.pairs->emplace_back("a", "b");
+  EXPECT_FALSE(empty_scene_problem(listed));
 }
 
 TEST(Scene, AMeshFileGivenAsASceneIsNamedSo) {

@@ -28,8 +28,9 @@ const std::string kNoShardEnv =
     "-u SLURM_ARRAY_TASK_COUNT ";
 
 // Groups 20 apart along x, each one relation between cubes of size 4 (a, b, and
-// c for a chain): interference (0.5 in), false_positive (0.05 in, tolerance 0.1),
-// touching (separated), 0.3 apart (a clearance violation at min 0.5), 0.7 apart
+// c for a chain): interference (0.5 in), 0.05 in (within the tolerance 0.1: a
+// clearance violation with a depth), touching (a clearance violation at distance
+// 0), 0.3 apart (a clearance violation at min 0.5), 0.7 apart
 // (checked: the reach is 1.0 from a per-pair minimum), a chain of three
 // overlapping cubes, 5 apart (culled). Plus a mesh part interfering with group 0,
 // an unreadable mesh and a mesh with NaN coordinates (part errors: exit 3).
@@ -163,8 +164,8 @@ TEST(Shard, MergedShardsEqualTheUnshardedReport) {
   const json want = read_json(full);
   // The scene has what the merge must get right.
   const json& sum = want["summary"];
-  for (const char* k : {"separated", "false_positive", "interference", "error",
-                        "clearance_violation", "part_errors", "unchecked", "culled"})
+  for (const char* k : {"separated", "interference", "error", "clearance_violation", "part_errors",
+                        "unchecked", "culled"})
     EXPECT_GT(sum[k].get<long>(), 0) << k << " missing from the test scene: " << sum.dump();
   // Every finding says where it is; groups of several findings (the chains of
   // three cubes: two of them ask the top cube to move up) are recomputed by the
@@ -219,6 +220,24 @@ TEST(Shard, MergeExitCodeIsTheRunsWithoutErrors) {
   const CliResult m = run("merge" + joined(shards) + " -o " + merged, "");
   EXPECT_EQ(m.code, 1) << m.err;
   expect_same_report(read_json(merged), read_json(full), "clean scene, 3 shards");
+  // Each shard exited 0 (run_shards), and its report says so: the verdict is
+  // the merge's, also for the shards holding the findings.
+  int with_findings = 0;
+  for (int k = 1; k <= 3; ++k) {
+    const auto summary = read_json(shards[k - 1])["summary"];
+    EXPECT_EQ(summary["exit_code"], 0) << k;
+    EXPECT_EQ(summary["verdict"], "deferred to pdcheck merge") << k;
+    if (summary["failing"].get<long>() > 0) with_findings = k;
+  }
+  ASSERT_GT(with_findings, 0);
+  EXPECT_FALSE(read_json(merged)["summary"].contains("verdict"));
+  const CliResult said = run(
+      s + " --jobs 2 --shard " + std::to_string(with_findings) + "/3 -o " + tmp("clean_said.json"),
+      "");
+  EXPECT_EQ(said.code, 0) << said.err;
+  EXPECT_NE(said.err.find("(exit code 1 for this shard alone) is pdcheck merge's"),
+            std::string::npos)
+      << said.err;
   // Shard and merged reports follow the report schema.
   for (const std::string& doc : {shards[0], merged}) {
     bool skip = false;

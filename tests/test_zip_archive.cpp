@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "bcf_check.h"
-#include "report/zip_archive.h"
+#include "zip_archive.h"
 
 using namespace pd::test;
 

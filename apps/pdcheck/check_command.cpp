@@ -185,8 +185,17 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
                          ": its settings hash differs from this run's (solver settings, tolerance "
                          "or checks): no pair was reused");
   }
-  // A shard's verdict is the merge's: its exit code says its report is written.
-  if (config.shard) return pd::kExitClean;
+  // A shard's verdict is the merge's: its exit code (as its report's) says
+  // its report is written.
+  if (review.deferred) {
+    if (!a.quiet && review.own_exit_code != pd::kExitClean)
+      say("note", "shard " + std::to_string(config.shard->index) + "/" +
+                      std::to_string(config.shard->total) + ": " + std::to_string(review.failing) +
+                      " failing finding(s) here; the verdict (exit code " +
+                      std::to_string(review.own_exit_code) +
+                      " for this shard alone) is pdcheck merge's: this shard exits 0");
+    return review.exit_code;
+  }
   if (review.exit_code == pd::kExitBadInput) say("error", *pd::every_part_failed(result));
   return review.exit_code;
 }

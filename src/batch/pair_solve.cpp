@@ -1,5 +1,6 @@
 #include "batch/pair_solve.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -11,6 +12,7 @@
 #include "batch/motion_sweep.h"
 #include "batch/piece_pairs.h"
 #include "geometry/depth_witness.h"
+#include "scene/setup_warnings.h"
 #include "solve/epa.h"
 #include "solve/methods.h"
 #include "solve/objective.h"
@@ -152,18 +154,84 @@ const char* non_finite_field(const PairResult& r) {
   return nullptr;
 }
 
+// The columns of p in lexicographic order.
+std::vector<Vec3> sorted_points(const Points& p) {
+  std::vector<Vec3> v(static_cast<size_t>(p.cols()));
+  for (Eigen::Index k = 0; k < p.cols(); ++k) v[k] = p.col(k);
+  std::sort(v.begin(), v.end(), [](const Vec3& x, const Vec3& y) {
+    return std::lexicographical_compare(x.data(), x.data() + 3, y.data(), y.data() + 3);
+  });
+  return v;
+}
+
+// Lexicographic order puts two copies of a point set in the same order only
+// when no coordinate differs by rounding across a tie: matched greedily
+// instead, each point against its nearest unmatched one within `eps`.
+bool same_points(const Points& p, const Points& q, double eps) {
+  if (p.cols() != q.cols()) return false;
+  const std::vector<Vec3> a = sorted_points(p), b = sorted_points(q);
+  std::vector<bool> used(b.size(), false);
+  for (const Vec3& x : a) {
+    // Candidates: those whose first coordinate is within eps (b is sorted by it).
+    auto it = std::lower_bound(b.begin(), b.end(), x.x() - eps,
+                               [](const Vec3& y, double v) { return y.x() < v; });
+    bool found = false;
+    for (; it != b.end() && it->x() <= x.x() + eps && !found; ++it) {
+      const size_t k = static_cast<size_t>(it - b.begin());
+      if (!used[k] && (*it - x).cwiseAbs().maxCoeff() <= eps) used[k] = found = true;
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+bool same_placed_geometry(const Part& a, const Part& b) {
+  if (a.error || b.error || a.pieces.size() != b.pieces.size() || a.pieces.empty()) return false;
+  const double size = std::max((a.box.hi - a.box.lo).norm(), (b.box.hi - b.box.lo).norm());
+  const double eps =
+      tol::kSamePlace * size + 4 * std::max(a.resolution.value_or(0.0), b.resolution.value_or(0.0));
+  if ((a.box.lo - b.box.lo).cwiseAbs().maxCoeff() > eps ||
+      (a.box.hi - b.box.hi).cwiseAbs().maxCoeff() > eps)
+    return false;
+  // A surface of its own (a nonconvex part): the hull is not the part, the
+  // same file placed alike is.
+  if (a.surface || b.surface) {
+    if (!a.surface || !b.surface || a.surface->file_hash != b.surface->file_hash) return false;
+    const Mat4& pa = a.surface->placement;
+    const Mat4& pb = b.surface->placement;
+    if ((pa.topLeftCorner<3, 3>() - pb.topLeftCorner<3, 3>()).cwiseAbs().maxCoeff() >
+            tol::kSamePlace ||
+        (pa.topRightCorner<3, 1>() - pb.topRightCorner<3, 1>()).cwiseAbs().maxCoeff() > eps)
+      return false;
+  }
+  for (size_t k = 0; k < a.pieces.size(); ++k)
+    if (!same_points(a.pieces[k].vertices, b.pieces[k].vertices, eps)) return false;
+  return true;
+}
 
 double pair_size(const Part& a, const Part& b) {
   return rounding_scale(a.box.merged(b.box));
 }
 
 void note_pair_tolerance(PairResult& r, const PairChecks& c) {
-  if (!c.tolerance) return;
-  r.tolerance = c.tolerance->value;
-  r.tolerance_source = c.tolerance->source;
-  r.tolerance_basis = c.tolerance->basis;
-  decide_at_contact(r, *c.tolerance);
+  if (c.tolerance) {
+    r.tolerance = c.tolerance->value;
+    r.tolerance_source = c.tolerance->source;
+    r.tolerance_basis = c.tolerance->basis;
+    decide_at_contact(r, *c.tolerance);
+  }
+  decide_clearance(r, c);
+}
+
+bool closer_than(double distance, double gap_band, double min) {
+  return std::max(0.0, distance - gap_band) < min;
+}
+
+void decide_clearance(PairResult& r, const PairChecks& c) {
+  if (!c.clearance || !(*c.clearance > 0)) return;
+  if (r.status == Status::kFalsePositive) r.status = Status::kClearanceViolation;
 }
 
 PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const SolverSettings& s,
@@ -215,15 +283,21 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
     if (r.status != Status::kSeparated && !checks.motion) r.distance.reset();
     if (checks.clearance && r.status == Status::kSeparated) {
       if (!checks.motion) witness = static_distance(a, b, s, ipopt, r);
-      // Touching (distance within rounding of 0, or under auto within the gap
-      // band of the convex sags where the gap is) is contact, as for depths.
+      // Touching within rounding is distance 0, as an overlap that small is depth 0.
+      if (r.distance && *r.distance <= tol::kTouch * size) r.distance = 0.0;
+      // Under auto, the gap band of the convex sags where the gap is: the part
+      // of the distance the tessellation can have made. Closer than the
+      // minimum, touching included, is a violation (decide_clearance).
       note_gap_band(r, checks.tolerance ? &*checks.tolerance : nullptr,
                     checks.motion ? r.at : witness.at(a, b));
-      const double band = r.gap_band.value_or(0.0);
-      if (r.distance && *r.distance > std::max(tol::kTouch * size, band) &&
-          *r.distance - band < *checks.clearance)
+      if (r.distance && closer_than(*r.distance, r.gap_band.value_or(0.0), *checks.clearance))
         r.status = Status::kClearanceViolation;
     }
+    // A part placed twice: said as such (a moving one is not in one place).
+    r.duplicate = !checks.motion && r.status != Status::kSeparated && same_placed_geometry(a, b);
+    if (r.duplicate)  // a set-up mistake: on stderr with the others (report/warning_lines.h)
+      r.warnings.push_back(std::string(kPlacedTwice) +
+                           ": the same geometry at the same place: remove one of them");
     // Every finding says where it is; a clean pair needs no place.
     if (r.status == Status::kSeparated)
       r.at.reset();

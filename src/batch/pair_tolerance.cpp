@@ -58,6 +58,10 @@ PairTolerance band_of(const Part& a, const Part& b, const AutoTolerance& t,
   out.source = sa.declared || sb.declared ? "declared" : "measured";
   out.basis = sa.clause + "; " + sb.clause + "; coordinate steps " + band_number(ra) + " + " +
               band_number(rb) + " " + units;
+  // Flat where they meet: the mesh is the part, and a design contact
+  // overlaps by no more than the coordinates' rounding (docs/numerics.md).
+  if (sa.sag == 0 && sb.sag == 0 && !sa.declared && !sb.declared)
+    out.basis += " (flat there: the band's floor, the coordinates' rounding)";
   const double unclamped = AutoTolerance{}.band(sa.sag, sb.sag, ra, rb);
   if (out.value > unclamped) out.basis += "; raised to the scene's min";
   if (out.value < unclamped) out.basis += "; lowered to the scene's max";

@@ -21,12 +21,14 @@
 namespace pd {
 
 bool needs_refinement(const PairResult& r, const Part& a, const Part& b) {
-  return r.status == Status::kInterference && !r.motion && (a.refinable() || b.refinable());
+  return r.status == Status::kInterference && !r.motion && !r.duplicate &&
+         (a.refinable() || b.refinable());
 }
 
 void note_hull_stage(PairResult& r, const Part& a, const Part& b) {
+  // Motion pairs are not refined; a duplicate (one mesh placed twice) overlaps wholly.
   if ((a.refinable() || b.refinable()) && r.status != Status::kError && !needs_refinement(r, a, b))
-    r.confirmed = r.status != Status::kInterference;  // motion pairs are not refined
+    r.confirmed = r.status != Status::kInterference || r.duplicate;
 }
 
 PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const PairResult* pieces,

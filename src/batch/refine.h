@@ -34,7 +34,8 @@ struct MeshVerdict {
   std::optional<Vec3> vertex_at;
 };
 
-/// Whether the hull stage's result `r` of parts a, b needs the refinement.
+/// Whether the hull stage's result `r` of parts a, b needs the refinement (a
+/// duplicate, one mesh placed twice, does not: its parts overlap wholly).
 bool needs_refinement(const PairResult& r, const Part& a, const Part& b);
 
 /// At the hull stage: marks a final result of a pair with a nonconvex part as

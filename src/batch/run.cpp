@@ -11,7 +11,9 @@
 #include "batch/refine.h"
 #include "batch/rule_scope.h"
 #include "batch/run_stages.h"
+#include "brep/brep_file.h"
 #include "scene/setup_warnings.h"
+#include "scene/units.h"
 
 namespace pd {
 
@@ -46,25 +48,32 @@ double lap(Clock::time_point& t) {
   return s;
 }
 
-// A part whose size is off its assembly's median by a units factor. The
-// median is over the whole scene, also in a shard (from the plan's boxes, which
-// are the parts' placed boxes), so a shard warns as the unsharded run does.
-void warn_units_like_sizes(std::vector<Part>& parts, const ScenePlan* plan,
+// A part whose size is off its neighbours' by a units factor. Every part of
+// the scene is compared, also in a shard (from the plan's boxes, which are the
+// parts' placed boxes), so a shard warns as the unsharded run does.
+void warn_units_like_sizes(const SceneSpec& scene, std::vector<Part>& parts, const ScenePlan* plan,
                            const std::vector<int>& loaded, const std::string& units) {
-  std::vector<std::optional<double>> sizes;
-  if (plan) {
-    for (const auto& b : plan->boxes)
-      sizes.push_back(b ? std::optional<double>((b->hi - b->lo).maxCoeff()) : std::nullopt);
-  } else {
-    for (const Part& p : parts)
-      sizes.push_back(p.error ? std::nullopt : std::optional<double>(part_size(p)));
+  const std::vector<PartSpec>& specs = scene.parts;  // a part per spec, in order
+  std::vector<UnitsLikePart> seen(plan ? plan->boxes.size() : parts.size());
+  for (size_t k = 0; k < seen.size(); ++k) {
+    if (plan) {
+      seen[k].box = plan->boxes[k];
+    } else if (!parts[k].error) {
+      seen[k].box = parts[k].box;
+    }
+    if (k >= specs.size()) continue;
+    const PartSpec& s = specs[k];
+    seen[k].unit_mm = s.to_scene_units * unit_in_mm(units).value_or(1.0);
+    if (s.mesh && is_brep_path(*s.mesh))
+      seen[k].unit_from_file = true;  // a STEP file states its unit, the reader converts it
+    else if (s.mesh && format_unit(*s.mesh) && !s.units_key)
+      seen[k].format_unit = format_unit(*s.mesh);  // glTF: metres, by its specification
   }
-  const UnitsLikeOutliers off = units_like_outliers(sizes);
+  const auto off = units_like_outliers(seen);
   for (size_t k = 0; k < parts.size(); ++k) {
     const size_t at = plan ? size_t(loaded[k]) : k;
-    if (off.factor[at] && !parts[k].error)
-      parts[k].warnings.push_back(
-          units_like_warning(*sizes[at], *off.factor[at], off.median, units));
+    if (off[at] && !parts[k].error)
+      parts[k].warnings.push_back(units_like_warning(seen[at], *off[at], units));
   }
 }
 
@@ -160,7 +169,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
     out.part_hashes.push_back(hashes[plan ? loaded[k] : k]);
   out.labels = part_labels(scene, loaded, out.parts.size(), rules ? &*rules : nullptr);
   const std::string units = scene.units.value_or("mm");
-  warn_units_like_sizes(out.parts, plan ? &*plan : nullptr, loaded, units);
+  warn_units_like_sizes(scene, out.parts, plan ? &*plan : nullptr, loaded, units);
   out.stages.parts = lap(t);
   const std::vector<Part>& parts = out.parts;
   const Checks& checks = scene.checks;

@@ -28,4 +28,24 @@ std::vector<int> first_at_same_position(const Points& p) {
   return first;
 }
 
+long boundary_edges(const Mesh& m) {
+  const std::vector<int> first = first_at_same_position(m.vertices);
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(3 * static_cast<size_t>(m.triangles.cols()));
+  for (Eigen::Index t = 0; t < m.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int u = first[m.triangles(k, t)], v = first[m.triangles((k + 1) % 3, t)];
+      if (u != v) edges.emplace_back(std::min(u, v), std::max(u, v));
+    }
+  std::sort(edges.begin(), edges.end());
+  long odd = 0;
+  for (size_t k = 0; k < edges.size();) {
+    size_t end = k;
+    while (end < edges.size() && edges[end] == edges[k]) ++end;
+    odd += (end - k) % 2;
+    k = end;
+  }
+  return odd;
+}
+
 }  // namespace pd

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "geometry/mesh.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -14,5 +15,11 @@ namespace pd {
 /// own. A sort, not a map or hash: O(n log n) without a node per point, and
 /// the same answer whatever the order of equal keys.
 std::vector<int> first_at_same_position(const Points& p);
+
+/// The edges of m (corners welded by position) used by an odd number of its
+/// triangles: the boundary of an open surface (holes, gaps, a missing face).
+/// 0 for a closed mesh and for one without triangles. Degenerate triangles'
+/// edges count as any other's.
+long boundary_edges(const Mesh& m);
 
 }  // namespace pd

@@ -36,7 +36,10 @@ ExportFinding export_finding(const ReportInput& in, size_t k) {
     f.depth = r.depth;
     f.margin = r.margin;
   }
-  f.tolerance = r.tolerance.value_or(in.context.tolerance);
+  if (r.tolerance)
+    f.tolerance = *r.tolerance;
+  else if (!in.context.auto_tolerance)
+    f.tolerance = in.context.tolerance;
   f.at = at_of(in, k);
   f.group = group_of(in, k);
   if (pr.baseline_state) f.baseline_state = baseline_state_name(*pr.baseline_state);

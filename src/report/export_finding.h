@@ -20,7 +20,7 @@ struct ExportFinding {
   const PairReview* review = nullptr;
   std::string a, b, fingerprint;
   std::optional<double> depth, margin;  ///< decided pairs (not `error`), as the report has them
-  double tolerance = 0.0;               ///< the one the pair was decided against
+  std::optional<double> tolerance;      ///< the one the pair was decided against
   std::optional<Vec3> at;               ///< where the depth was found, when the report says
   std::string group;                    ///< the finding's group id ("": none)
   std::string baseline_state;           ///< with --baseline ("": none)

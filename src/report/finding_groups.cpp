@@ -15,14 +15,16 @@ namespace pd {
 namespace {
 
 // How far a member is from being clear: its depth, or for a clearance
-// violation the clearance it lacks.
+// violation the clearance it lacks (its depth and the clearance when it
+// overlaps).
 double shortfall(const PairResult& r) {
   if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance)
-    return std::max(0.0, *r.clearance_min - (*r.distance - r.gap_band.value_or(0.0)));
+    return std::max(0.0, *r.clearance_min - std::max(0.0, *r.distance - r.gap_band.value_or(0.0)));
+  if (r.status == Status::kClearanceViolation && r.clearance_min) return r.depth + *r.clearance_min;
   return r.depth;
 }
 
-// Deeper first: depth, then shortfall (clearance violations have depth 0).
+// Deeper first: depth, then shortfall (a clearance violation apart has depth 0).
 bool deeper(const PairResult& x, const PairResult& y) {
   if (x.depth != y.depth) return x.depth > y.depth;
   return shortfall(x) > shortfall(y);

@@ -61,8 +61,25 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
   auto c = [](double x) { return short_number(std::abs(x) < 1e-12 ? 0.0 : x); };
   const std::string dir =
       "(" + c(r.direction.x()) + ", " + c(r.direction.y()) + ", " + c(r.direction.z()) + ")";
-  if (r.status == Status::kClearanceViolation && r.clearance_min && r.distance) {
-    t += ": distance " + short_number(*r.distance) + " " + units;
+  if (r.duplicate) {  // no move is a fix: one of the two is too many
+    t += ": duplicate: the same geometry at the same place (a part placed or exported twice: "
+         "remove one of them); they overlap wholly, " +
+         depth_meaning(r.depth_source) + " " + short_number(r.depth) + " " + units;
+  } else if (r.status == Status::kClearanceViolation && r.clearance_min && !r.distance) {
+    // Overlapping within the tolerance (a false positive's overlap): closer
+    // than any clearance.
+    t += ": overlapping, " + depth_meaning(r.depth_source) + " " + short_number(r.depth) + " " +
+         units + " <= tolerance " + short_number(tolerance) + " " + units +
+         " (a contact, not an interference), closer than the required clearance " +
+         short_number(*r.clearance_min) + " " + units;
+  } else if (r.status == Status::kClearanceViolation && r.clearance_min && r.gap_band &&
+             *r.distance <= *r.gap_band) {  // a gap the convex sags can make out of a contact
+    t += ": touching, distance " + short_number(*r.distance) + " " + units + " <= gap band " +
+         short_number(*r.gap_band) + " " + units + " (" + r.gap_basis +
+         "), closer than the required clearance " + short_number(*r.clearance_min) + " " + units;
+  } else if (r.status == Status::kClearanceViolation && r.clearance_min) {
+    t += ": " + std::string(*r.distance == 0 ? "touching, " : "") + "distance " +
+         short_number(*r.distance) + " " + units;
     if (r.gap_band) t += " - gap band " + short_number(*r.gap_band) + " " + units;
     t += " < required clearance " + short_number(*r.clearance_min) + " " + units +
          "; separating normal " + dir;

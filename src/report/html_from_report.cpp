@@ -55,7 +55,8 @@ SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_pat
   if (root.has("units")) units = root["units"].string();
   const std::string scene_path = find_scene(scene_name, report_path, scene);
   std::optional<double> tolerance;
-  if (root.has("tolerance")) tolerance = root["tolerance"].number();
+  // Under auto ("auto"), the scene's own: the geometry does not depend on it.
+  if (root.has("tolerance") && raw["tolerance"] != "auto") tolerance = root["tolerance"].number();
   const std::vector<Part> parts = load(scene_path, units, tolerance);
 
   SavedReportPage page;

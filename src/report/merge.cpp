@@ -282,7 +282,9 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
         std::make_shared<ExpectedRules>(expected_rules_of_report(*rules, shards[0].path));
     out.review_options.expected = out.expected.get();
   }
-  out.review_options.tolerance = first.at("tolerance").get<double>();
+  // Tolerance auto: each pair's own band is in its entry ("tolerance": "auto").
+  const bool auto_tolerance = first.at("tolerance") == "auto";
+  out.review_options.tolerance = auto_tolerance ? 0.0 : first.at("tolerance").get<double>();
   out.review_options.units = first.at("units").get<std::string>();
   if (listed) {
     // A scene's pair list has no broad phase: its pairs of usable parts are
@@ -312,6 +314,12 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   out.context.scene_path = first.at("scene").get<std::string>();
   out.context.units = first.at("units").get<std::string>();
   out.context.tolerance = out.review_options.tolerance;
+  if (auto_tolerance) {
+    out.context.auto_tolerance = AutoTolerance{};
+    const json a = first.value("tolerance_auto", json::object());
+    if (a.contains("min")) out.context.auto_tolerance->min = a["min"].get<double>();
+    if (a.contains("max")) out.context.auto_tolerance->max = a["max"].get<double>();
+  }
   out.summary_line = summary_line(s, seconds);
   return out;
 }

@@ -13,10 +13,16 @@ std::vector<std::string> check_prior_settings(const std::string& option, const s
                            run.units + ": its depths cannot be compared with this run's (run in " +
                            *prior.units + ", or write a new report in " + run.units + ")");
   std::vector<std::string> warnings;
-  if (prior.tolerance && *prior.tolerance != run.tolerance)
-    warnings.push_back(who + ": written with tolerance " + short_number(*prior.tolerance) + " " +
-                       run.units + ", this run's is " + short_number(run.tolerance) + " " +
-                       run.units + ": a status may differ by the tolerance alone");
+  const bool other_tolerance =
+      prior.auto_tolerance
+          ? !run.auto_tolerance
+          : prior.tolerance && (run.auto_tolerance || *prior.tolerance != run.tolerance);
+  if (other_tolerance)
+    warnings.push_back(who + ": written with tolerance " +
+                       (prior.auto_tolerance ? std::string("auto")
+                                             : short_number(*prior.tolerance) + " " + run.units) +
+                       ", this run's is " + tolerance_words(run) +
+                       ": a status may differ by the tolerance alone");
   if (prior.method) {
     // Both sides through the same JSON type, so that key order does not count.
     const nlohmann::json now = nlohmann::json::parse(method_json(run.solver).dump());

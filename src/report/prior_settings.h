@@ -16,6 +16,7 @@ namespace pd {
 struct PriorSettings {
   std::optional<std::string> units;      ///< the report's `units`
   std::optional<double> tolerance;       ///< its `tolerance`, in its units
+  bool auto_tolerance = false;           ///< its `tolerance` is "auto"
   std::optional<nlohmann::json> method;  ///< its `method` object
   /// Its `hashes.rules` ("" when it has hashes but no rules; nullopt: no hashes).
   std::optional<std::string> rules_hash;
@@ -30,6 +31,7 @@ PriorSettings prior_settings_of(const Json& report) {
     s.units = report["units"].template get<std::string>();
   if (report.contains("tolerance") && report["tolerance"].is_number())
     s.tolerance = report["tolerance"].template get<double>();
+  s.auto_tolerance = report.contains("tolerance") && report["tolerance"] == "auto";
   if (report.contains("method") && report["method"].is_object())
     s.method = nlohmann::json::parse(report["method"].dump());  // small: the settings only
   if (report.contains("hashes") && report["hashes"].is_object()) {

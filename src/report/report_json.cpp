@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <type_traits>
 
+#include "report/finding_text.h"
 #include "report/rules_report.h"
 #include "results/codec.h"
 
@@ -140,6 +141,14 @@ PartResult part_result(const RunResult& r, size_t k) {
 
 }  // namespace
 
+json tolerance_json(const ReportContext& ctx) {
+  return ctx.auto_tolerance ? json("auto") : json(ctx.tolerance);
+}
+
+std::string tolerance_words(const ReportContext& ctx) {
+  return ctx.auto_tolerance ? "auto" : short_number(ctx.tolerance) + " " + ctx.units;
+}
+
 json report_json(const ReportContext& ctx, const RunResult& r) {
   json parts = json::array();
   for (size_t k = 0; k < r.parts.size(); ++k) parts.push_back(part_to_report(part_result(r, k)));
@@ -150,7 +159,7 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
               {"report_version", 1},
               {"scene", ctx.scene_path},
               {"units", ctx.units},
-              {"tolerance", ctx.tolerance},
+              {"tolerance", tolerance_json(ctx)},
               {"method", method},
               {"direction_convention",
                "depth_source hull: moving part b by depth * direction separates the pair, and "

@@ -20,6 +20,12 @@ struct ReportContext {
   std::string rules_hash;                       ///< hashes.rules of the run's rules; "" = no rules
 };
 
+/// The run's tolerance as the report says it: "auto" under tolerance auto
+/// (each pair decided against its own band, given beside it), else the number.
+nlohmann::ordered_json tolerance_json(const ReportContext& ctx);
+/// The same in words: "auto" or "0.05 mm".
+std::string tolerance_words(const ReportContext& ctx);
+
 /// The run's counts (results/summary.h).
 Summary summarize(const RunResult& r);
 

@@ -8,6 +8,11 @@
 
 namespace pd {
 
+bool contact_violation(const PairResult& r) {
+  return r.status == Status::kClearanceViolation &&
+         (!r.distance || *r.distance == 0 || (r.gap_band && *r.distance <= *r.gap_band));
+}
+
 PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
                        const ReviewOptions& options, FailOn bar) {
   PairReview pr;
@@ -17,7 +22,7 @@ PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
     const auto it = options.baseline->findings.find(pr.fingerprint);
     pr.baseline_state =
         compare_finding(it == options.baseline->findings.end() ? nullptr : &it->second, r.status,
-                        r.depth, options.tolerance);
+                        r.depth, r.tolerance.value_or(options.tolerance));
   }
   if (options.suppressions) {
     const auto it = options.suppressions->by_fingerprint.find(pr.fingerprint);
@@ -30,9 +35,10 @@ PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,
         pr.not_holding = h;
     }
   }
-  // An expected contact: an overlap up to the rule's max_depth (docs/scene-format.md).
+  // An expected contact: an overlap up to the rule's max_depth, and the
+  // clearance violation a contact is (docs/scene-format.md).
   if (!pr.suppressed && options.expected && !r.expected.empty() &&
-      r.status == Status::kInterference) {
+      (r.status == Status::kInterference || contact_violation(r))) {
     const auto it = options.expected->by_name.find(r.expected);
     if (it != options.expected->by_name.end()) {
       const Suppression& s = options.expected->entries[it->second];
@@ -137,6 +143,8 @@ Review review_run(const RunResult& run, const ReviewOptions& options, bool incom
                                  [](const SuppressionIssue& i) { return i.fails; });
   rv.exit_code = run_exit_code(incomplete, rv.failing > 0 || stale);
   if (!options.allow_empty && every_part_failed(run)) rv.exit_code = kExitBadInput;
+  rv.own_exit_code = rv.exit_code;
+  if (options.deferred) rv.exit_code = kExitClean, rv.deferred = true;
   return rv;
 }
 

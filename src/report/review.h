@@ -34,6 +34,10 @@ struct ReviewOptions {
   /// A run whose every part failed exits 3 like any incomplete run (--allow-empty,
   /// and a shard, judged by its merge); otherwise 2: nothing was checked (batch/empty_input.h).
   bool allow_empty = false;
+  /// A shard (--shard): its verdict is its merge's. Its exit code, and its
+  /// report's summary.exit_code, are 0 once its report is written, and the
+  /// summary says `"verdict": "deferred to pdcheck merge"` (docs/scale-out.md).
+  bool deferred = false;
 };
 
 /// One pair's review (for findings; clean and failed pairs have neither state nor suppression).
@@ -70,7 +74,16 @@ struct Review {
   /// Every part failed (unless allow_empty): bad input; else incomplete wins,
   /// else a finding that fails or a stale suppression (run_exit_code).
   ExitCode exit_code = kExitClean;
+  /// The exit code the run would have on its own; a deferred one (a shard) has
+  /// exit_code 0 and leaves this to its merge.
+  ExitCode own_exit_code = kExitClean;
+  bool deferred = false;  ///< ReviewOptions::deferred
 };
+
+/// A clearance violation that is a contact: overlapping within the tolerance
+/// (no distance), touching (distance 0), or apart by no more than its gap
+/// band. An expected-contact rule suppresses it as it does an overlap.
+bool contact_violation(const PairResult& r);
 
 /// One pair alone (also for pairs streamed as they finish).
 PairReview review_pair(const PairResult& r, const std::vector<Part>& parts,

@@ -38,6 +38,7 @@ void add_run_review(json& doc, json& summary, const Review& review, const Review
     summary["baseline"] = states;
   }
   summary["exit_code"] = review.exit_code;
+  if (review.deferred) summary["verdict"] = "deferred to pdcheck merge";
   if (review.baseline_used) {
     json gone = json::array();
     for (const GoneFinding& g : review.gone)

@@ -155,6 +155,7 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
   }
   // A shard's parts are some of the scene's: its merge judges an empty run.
   out.review.options.allow_empty = a.allow_empty || out.shard.has_value();
+  out.review.options.deferred = out.shard.has_value();
   if (out.scene.pairs) {
     out.review.options.listed.emplace();
     for (const auto& [x, y] : *out.scene.pairs)

@@ -14,8 +14,8 @@
 #include "report/finding_text.h"
 #include "report/markup_escape.h"
 #include "report/writer.h"
-#include "report/zip_archive.h"
 #include "scene/units.h"
+#include "zip_archive.h"
 
 namespace pd {
 
@@ -90,6 +90,7 @@ std::string extensions_xml() {
 
 std::string title(const ExportFinding& f, const std::string& units, size_t members) {
   std::string t = f.a + " / " + f.b + ": " + status_name(f.pair->status);
+  if (f.pair->duplicate) t += ", duplicate (placed twice)";
   // A decided depth only: an undecided pair's is a lower bound (its bracket is in the description).
   if (f.depth &&
       (f.pair->status == Status::kInterference || f.pair->status == Status::kFalsePositive))
@@ -112,6 +113,7 @@ std::string markup_xml(const std::string& guid, const std::string& viewpoint_gui
   std::string description;
   for (const ExportFinding& m : fs) {
     labels.insert(status_name(m.pair->status));
+    if (m.pair->duplicate) labels.insert("duplicate");
     if (!m.baseline_state.empty()) labels.insert(m.baseline_state);
     if (!m.suppression.empty()) labels.insert("suppressed");
     description += (description.empty() ? "" : "\n") + m.message + " [fingerprint " +

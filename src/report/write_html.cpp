@@ -160,6 +160,14 @@ std::vector<const json*> sorted_findings(const json& report) {
   return findings;
 }
 
+// The run's tolerance as a number: 0 under auto ("tolerance": "auto"), where
+// each pair carries its own band.
+double run_tolerance(const json& report) {
+  return report.contains("tolerance") && report["tolerance"].is_number()
+             ? report["tolerance"].get<double>()
+             : 0.0;
+}
+
 // A finding's row of the table: the report's keys the page shows, and its sentence.
 json finding_row(const json& p, const json& report) {
   json row = {{"a", p.value("a", "")},
@@ -167,12 +175,13 @@ json finding_row(const json& p, const json& report) {
               {"fingerprint", p.value("fingerprint", "")},
               {"status", p.value("status", "")}};
   for (const char* key :
-       {"depth", "direction", "margin", "depth_source", "pieces", "confirmed", "error",
-        "baseline_state", "suppressed", "warnings", "hull_depth", "depth_bounds", "distance",
-        "clearance", "motion", "at", "reason", "group", "exact"})
+       {"depth",    "direction",      "margin",     "depth_source", "pieces",     "confirmed",
+        "error",    "baseline_state", "suppressed", "warnings",     "hull_depth", "depth_bounds",
+        "distance", "clearance",      "motion",     "at",           "reason",     "group",
+        "exact",    "tolerance",      "duplicate"})
     if (p.contains(key)) row[key] = p[key];
   if (row.contains("motion")) row["motion"].erase("series");
-  row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));
+  row["text"] = pair_sentence(p, report.value("units", ""), run_tolerance(report));
   return row;
 }
 
@@ -325,7 +334,7 @@ json page_data(const json& report, json rows, PageGeometry& geometry,
       {"tool", report.value("tool", json::object())},
       {"scene", report.value("scene", "")},
       {"units", report.value("units", "")},
-      {"tolerance", report.value("tolerance", 0.0)},
+      {"tolerance", report.contains("tolerance") ? report["tolerance"] : json(0.0)},
       {"method", report.value("method", json::object())},
       {"seconds", report.value("seconds", 0.0)},
       {"summary", report.value("summary", json::object())},

@@ -98,10 +98,9 @@ std::string render_junit(const ReportInput& in) {
   out += "  <testsuite name=\"" + markup_escape(suite) + "\"" + counts + " skipped=\"" +
          std::to_string(skipped) + "\" time=\"" + seconds(run.seconds) + "\">\n";
   out += "    <properties>\n";
-  const std::pair<std::string, std::string> props[] = {
-      {"tolerance", short_number(tol) + " " + units},
-      {"fail_on", fail_on_name(rv.fail_on)},
-      {"exit_code", std::to_string(rv.exit_code)}};
+  const std::pair<std::string, std::string> props[] = {{"tolerance", tolerance_words(in.context)},
+                                                       {"fail_on", fail_on_name(rv.fail_on)},
+                                                       {"exit_code", std::to_string(rv.exit_code)}};
   for (const auto& [name, value] : props)
     out += "      <property name=\"" + markup_escape(name) + "\" value=\"" + markup_escape(value) +
            "\"/>\n";

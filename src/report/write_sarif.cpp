@@ -135,9 +135,10 @@ std::string render_sarif(const ReportInput& in) {
     if (pr.baseline_state) res["baselineState"] = baseline_state_name(*pr.baseline_state);
     if (pr.suppressed) res["suppressions"] = suppression_json(*pr.suppressed, in);
     json props = {{"a", a.id}, {"b", b.id}, {"status", status_name(r.status)}};
+    if (r.duplicate) props["duplicate"] = true;
     if (r.status != Status::kError) {
       props["depth"] = r.depth;
-      props["tolerance"] = in.context.tolerance;
+      props["tolerance"] = r.tolerance ? json(*r.tolerance) : tolerance_json(in.context);
       props["units"] = in.context.units;
       props["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0, r.direction.z() + 0.0};
     }
@@ -201,7 +202,7 @@ std::string render_sarif(const ReportInput& in) {
                     {"properties",
                      {{"scene", scene},
                       {"units", in.context.units},
-                      {"tolerance", in.context.tolerance},
+                      {"tolerance", tolerance_json(in.context)},
                       {"fail_on", fail_on_name(rv.fail_on)}}}};
   json doc = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
               {"version", "2.1.0"},

@@ -55,6 +55,7 @@ auto for_each_field(E& e, Visit&& visit) -> IfFieldsOf<E, ExactCheck> {
 template <class R, class Visit>
 auto for_each_field(R& r, Visit&& visit) -> IfFieldsOf<R, PairResult> {
   visit(Field{"status"}, r.status);
+  visit(Field{"duplicate"}.unless_empty(), r.duplicate);
   // tolerance auto: the pair's own band and what it rests on (absent otherwise).
   visit(Field{"tolerance"}, r.tolerance);
   visit(Field{"tolerance_source"}.unless_empty(), r.tolerance_source);

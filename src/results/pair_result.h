@@ -78,6 +78,10 @@ struct PairResult {
   std::optional<Vec3> at;  ///< where the depth was found (nonconvex pairs: the thickest overlap)
   std::string reason;      ///< why an undecided pair stayed undecided
   bool reused = false;     ///< taken from an earlier report (--reuse), not solved
+  /// The same geometry at the same place (a part placed or exported twice):
+  /// an interference that is a mistake of the set-up, said so (Navisworks'
+  /// duplicates test).
+  bool duplicate = false;
   // tolerance auto (docs/numerics.md): the pair's own band and what it rests on.
   std::optional<double> tolerance;
   std::string tolerance_source;  ///< "measured", "declared" (tolerance auto) or "rule"

@@ -14,7 +14,7 @@ namespace pd {
 namespace {
 
 // 3: the sag inside (before: a `.pds` entry of its own per file).
-constexpr CacheKind kHullCache{"pdcheck-hulls-3", ".pdh"};
+constexpr CacheKind kHullCache{"pdcheck-hulls-4", ".pdh"};  // 4: open-mesh warnings
 constexpr CacheKind kInlineKind{"pdcheck-inline-hull-1", ".pdi"};
 
 /// One line per warning (a line end inside one becomes a space).

@@ -15,6 +15,7 @@
 
 #include "scene/node_names.h"
 #include "scene/ply_check.h"
+#include "zip_archive.h"
 
 namespace pd {
 
@@ -241,9 +242,40 @@ bool goes_to_ply_check(std::string_view head, std::string_view extension) {
   return looks_like_ply(head) || ext == "ply";
 }
 
+std::string lower_extension(std::string_view extension) {
+  std::string ext(extension);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+  return ext;
+}
+
+/// A 3MF file (a zip of XML parts), read by libzip and repacked as a plain zip
+/// before assimp reads it: assimp 5.2.5's unzip finds no model in archives
+/// whose entries carry Zip64 size fields, as lib3mf (OpenSCAD's 3MF export)
+/// writes them even for small files, and then reads an empty scene.
+NodeMeshes read_3mf(const std::string& bytes, const Want& want) {
+  std::string plain;
+  try {
+    plain = zip_archive(zip_entries(bytes));
+  } catch (const ZipError& e) {
+    throw MeshError(std::string("the 3MF container (a zip archive) could not be opened: ") +
+                    e.what());
+  }
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFileFromMemory(plain.data(), plain.size(), 0, "3mf");
+  if (!scene || !scene->mRootNode) {
+    const std::string why = importer.GetErrorString();
+    throw MeshError("the 3MF container opened, but " +
+                    (why.empty() ? std::string("no 3D model in it could be read") : why));
+  }
+  return want.of(scene);
+}
+
 NodeMeshes read_with(std::string_view bytes, const std::string& extension, const Want& want,
                      std::vector<std::string>* warnings) {
   if (goes_to_ply_check(bytes, extension)) return read_ply(bytes, want, warnings);
+  if (lower_extension(extension) == "3mf") return read_3mf(std::string(bytes), want);
   Assimp::Importer importer;
   // Only positions are needed; no post-processing that could move vertices.
   const aiScene* scene = checked(
@@ -265,6 +297,8 @@ NodeMeshes load_with(const std::string& path, const Want& want,
         for (const std::string& w : found) warnings->push_back("mesh file " + path + ": " + w);
       return meshes;
     }
+    if (lower_extension(std::filesystem::path(path).extension().string()) == "3mf")
+      return read_3mf(read_bytes(path), want);
     Assimp::Importer importer;
     // Only positions are needed; no post-processing that could move vertices.
     return want.of(checked(importer.ReadFile(path, 0), importer));

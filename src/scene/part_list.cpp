@@ -82,6 +82,10 @@ bool looks_like_mesh_file(const std::string& path) {
 }
 
 std::optional<std::string> empty_scene_problem(const SceneSpec& s) {
+  if (s.pairs && s.pairs->empty())
+    return s.path +
+           ": pairs: an empty list: no pair to check (leave \"pairs\" out to check every pair "
+           "whose boxes meet; --allow-empty accepts an empty input)";
   if (!s.parts.empty()) return std::nullopt;
   const std::string what = s.part_list ? "an empty part list (no mesh path on any line)"
                                        : "no parts (\"parts\" is empty)";

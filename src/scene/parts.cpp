@@ -14,6 +14,7 @@
 #include "file_hash.h"
 #include "geometry/convexity.h"
 #include "geometry/coordinate_resolution.h"
+#include "geometry/same_position.h"
 #include "geometry/solid_distance.h"
 #include "hash.h"
 #include "parallel_for.h"
@@ -288,11 +289,14 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     bool store = false;  // the cache entry is new, or gains the sag
     if (!f.hulls_cached) {
       f.warnings = f.read.warnings;
+      long open = 0;
       for (const Mesh& m : meshes) {
         f.counts.push_back(m.vertices.cols());
         f.reduced.push_back(
             convex_hull(m.vertices, f.reduced.empty() ? &f.facets : nullptr).vertices);
+        open += boundary_edges(m);
       }
+      if (open > 0) f.warnings.push_back(open_mesh_warning(open));  // cached with the hulls
       store = true;
     }
     if (auto_tol && !f.sag) {
@@ -584,7 +588,9 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
         p.warnings.push_back(spec.where + ": units \"" + *spec.units_key +
                              "\" does not apply: a STEP file declares its own unit, and is read "
                              "in mm (converted to the scene's)");
-      if (p.resolution && scene.tolerance)
+      // Under auto nobody chose a tolerance, and each pair's band holds its
+      // parts' coordinate steps.
+      if (p.resolution && scene.tolerance && !scene.auto_tolerance)
         if (auto w = resolution_warning(*scene.tolerance, *p.resolution, units))
           p.warnings.push_back(*w);
     }

@@ -37,6 +37,10 @@
     return a >= 1e5 || a < 1e-3 ? x.toExponential((digits || 4) - 1) : String(+x.toPrecision(digits || 4));
   }
   function len(x) { return x === undefined || x === null ? '—' : num(x) + ' ' + units; }
+  // Under tolerance auto each pair is decided against its own band (its `tolerance`).
+  const autoTol = data.tolerance === 'auto';
+  function tolOf(f) { return autoTol ? f.tolerance : data.tolerance; }
+  const tolText = autoTol ? 'auto (each pair its own band)' : len(data.tolerance);
 
   // ---- Summary ----
   function summary() {
@@ -47,7 +51,7 @@
     $('verdict-headline').textContent = verdict.headline || '';
     $('verdict-counts').textContent = (verdict.counts || '') + (verdict.shard ? ' · ' + verdict.shard : '');
     api.verdict = verdict.state || null;
-    $('scene-line').textContent = 'Scene ' + (data.scene || '?') + ' · tolerance ' + len(data.tolerance) +
+    $('scene-line').textContent = 'Scene ' + (data.scene || '?') + ' · tolerance ' + tolText +
       ' · method ' + ((data.method || {}).name || '?') + ' · run time ' + num(data.seconds, 3) + ' s';
     const tool = data.tool || {};
     $('tool').textContent = (tool.name || 'pdcheck') + ' ' + (tool.version || '');
@@ -55,7 +59,7 @@
       ['interference', s.interference], ['clearance_violation', s.clearance_violation],
       ['undecided', s.undecided], ['false_positive', s.false_positive], ['separated', s.separated], ['error', s.error],
       ['parts', s.parts], ['part_errors', s.part_errors], ['candidate_pairs', s.candidate_pairs],
-      ['culled', s.culled], ['unchecked', s.unchecked], ['tolerance', len(data.tolerance)],
+      ['culled', s.culled], ['unchecked', s.unchecked], ['tolerance', tolText],
       ['units', units], ['method', (data.method || {}).name], ['run time', num(data.seconds, 3) + ' s'],
       ['exit_code', s.exit_code], ['fail_on', s.fail_on], ['failing', s.failing], ['suppressed', s.suppressed]];
     if (s.baseline)
@@ -241,13 +245,14 @@
       dd.append(document.createTextNode(v));
       dl.append(dt, dd);
     };
-    add('status', f.status.replace(/_/g, ' ') + (f.confirmed === false ? ' (unconfirmed: an upper bound)' : ''));
+    add('status', f.status.replace(/_/g, ' ') + (f.confirmed === false ? ' (unconfirmed: an upper bound)' : '') +
+      (f.duplicate ? ', duplicate: the same geometry at the same place (placed twice)' : ''));
     if (f.status === 'error') add('error', f.error || '');
     else {
       // The sentence is pdcheck's own (the one stderr, JUnit and SARIF give):
       // the page only adds the numbers beside it, never a claim of its own.
       if (f.text) add('finding', f.text);
-      add('depth', len(f.depth) + ' (tolerance ' + len(data.tolerance) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
+      add('depth', len(f.depth) + ' (tolerance ' + len(tolOf(f)) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
       if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') + ')');
       add('depth source', f.depth_source || 'hull');
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
@@ -617,9 +622,13 @@
 
   // ---- Histogram ----
   function histogram() {
-    const depths = findings.filter((f) => f.depth > 0).map((f) => f.depth);
+    // Under auto: each depth over its pair's band, against 1.
+    const scaled = (f) => (autoTol ? f.depth / f.tolerance : f.depth);
+    const shown = findings.filter((f) => f.depth > 0 && (!autoTol || f.tolerance > 0));
+    const depths = shown.map(scaled);
+    const lenH = (x) => (autoTol ? num(x) + ' × its band' : len(x));
     const plot = $('histogram-plot');
-    const tol = data.tolerance;
+    const tol = autoTol ? 1 : data.tolerance;
     if (!depths.length) {
       $('histogram-text').textContent = 'No positive depths.';
       return;
@@ -659,21 +668,21 @@
     });
     mk('line', { x1: L, x2: W - 10, y1: H - B, y2: H - B, stroke: '#888' });
     mk('line', { x1: X(tolT), x2: X(tolT), y1: T, y2: H - B, class: 'tol' });
-    mk('text', { x: X(tolT) + 4, y: T + 10 }, 'tolerance ' + len(tol));
+    mk('text', { x: X(tolT) + 4, y: T + 10 }, autoTol ? 'each pair\'s band' : 'tolerance ' + len(tol));
     for (let i = 0; i <= 4; ++i) {
       const t = lo + ((hi - lo) * i) / 4;
       mk('text', { x: X(t), y: H - B + 14, 'text-anchor': 'middle' }, num(logScale ? Math.pow(10, t) : t, 3));
     }
-    mk('text', { x: L, y: H - 2 }, 'depth (' + units + (logScale ? ', log scale' : '') + ')');
+    mk('text', { x: L, y: H - 2 }, (autoTol ? 'depth / the pair\'s band (' : 'depth (' + units) + (logScale ? ', log scale' : '') + ')');
     mk('text', { x: 4, y: T + 10 }, String(max));
-    svg.setAttribute('aria-label', 'Histogram of ' + depths.length + ' depths; tolerance ' + len(tol));
+    svg.setAttribute('aria-label', 'Histogram of ' + depths.length + ' depths; tolerance ' + (autoTol ? 'auto' : len(tol)));
     plot.append(svg);
-    const under = findings.filter((f) => f.depth > 0 && f.depth <= tol);
+    const under = shown.filter((f) => scaled(f) <= tol);
     let text = depths.length + ' positive depths: ' + under.length + ' at or below the tolerance, ' +
       (depths.length - under.length) + ' above it.';
     if (under.length) {
-      const closest = Math.min(...under.map((f) => tol - f.depth));
-      text += ' The closest false positive is ' + len(closest) + ' below the tolerance.';
+      const closest = Math.min(...under.map((f) => tol - scaled(f)));
+      text += ' The closest false positive is ' + lenH(closest) + ' below ' + (autoTol ? 'its band.' : 'the tolerance.');
     }
     $('histogram-text').textContent = text;
   }

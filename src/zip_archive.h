@@ -1,5 +1,6 @@
-// A zip archive made in memory, the same bytes for the same entries: --bcf
-// (BCF is a zip). Written with libzip (Debian's libzip-dev).
+// Zip archives in memory, with libzip (Debian's libzip-dev): made with the
+// same bytes for the same entries (--bcf: BCF is a zip), and read (a 3MF mesh
+// file is a zip, repacked for assimp: scene/mesh_loader.cpp).
 #pragma once
 
 #include <stdexcept>
@@ -14,7 +15,8 @@ struct ZipEntry {
   std::string data;
 };
 
-/// libzip could not build the archive (out of memory): names the entry.
+/// libzip could not build the archive (out of memory; names the entry), or
+/// could not read one (says why: not a zip, truncated, damaged).
 struct ZipError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -25,5 +27,10 @@ struct ZipError : std::runtime_error {
 /// and no archive comment. Equal entries give equal bytes with the same zlib.
 /// Throws ZipError.
 std::string zip_archive(const std::vector<ZipEntry>& entries);
+
+/// The entries of the zip archive `bytes`, in its order (directories with
+/// their '/'), read by libzip: Zip64 fields and any dates are taken as they
+/// are. Throws ZipError with libzip's reason when it is no readable zip.
+std::vector<ZipEntry> zip_entries(const std::string& bytes);
 
 }  // namespace pd

@@ -1,4 +1,4 @@
-#include "report/zip_archive.h"
+#include "zip_archive.h"
 
 #include <sys/stat.h>
 #include <zip.h>
@@ -92,6 +92,38 @@ std::string zip_archive(const std::vector<ZipEntry>& entries) {
     throw ZipError("zip: " + m);
   }
   return source_bytes(src.get());
+}
+
+std::vector<ZipEntry> zip_entries(const std::string& bytes) {
+  zip_error_t error;
+  zip_error_init(&error);
+  zip_source_t* src = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+  if (!src) throw ZipError("zip: " + libzip_message(&error));
+  zip_t* za = zip_open_from_source(src, ZIP_RDONLY | ZIP_CHECKCONS, &error);
+  if (!za) {
+    zip_source_free(src);
+    const std::string m = libzip_message(&error);
+    zip_error_fini(&error);
+    throw ZipError(m);
+  }
+  std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, [](zip_t* z) { zip_discard(z); });
+  std::vector<ZipEntry> out;
+  const zip_int64_t n = zip_get_num_entries(za, 0);
+  for (zip_int64_t k = 0; k < n; ++k) {
+    const auto index = static_cast<zip_uint64_t>(k);
+    const char* name = zip_get_name(za, index, ZIP_FL_ENC_RAW);
+    ZipEntry e{name ? name : "", ""};
+    zip_file_t* f = zip_fopen_index(za, index, 0);
+    if (!f) throw ZipError("entry " + e.name + ": " + zip_strerror(za));
+    char buf[65536];
+    zip_int64_t got;
+    while ((got = zip_fread(f, buf, sizeof buf)) > 0) e.data.append(buf, static_cast<size_t>(got));
+    const std::string why = got < 0 ? zip_file_strerror(f) : "";
+    zip_fclose(f);
+    if (got < 0) throw ZipError("entry " + e.name + ": " + why);
+    out.push_back(std::move(e));
+  }
+  return out;
 }
 
 }  // namespace pd
