@@ -16,7 +16,15 @@
 #include <gp_Sphere.hxx>
 #include <gp_Torus.hxx>
 
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <Geom_BezierSurface.hxx>
+
+#include <optional>
+
 #include "geometry/interpolation_bound.h"
+#include "geometry/spline_bound.h"
 #include "geometry/triangle_tree.h"
 
 namespace pd {
@@ -44,11 +52,94 @@ TrigRange trig_range(double a, double b) {
   return r;
 }
 
+// A non-rational B-spline or Bézier surface's control net, for the bounds of
+// geometry/spline_bound.h; nullopt for a rational one (weights: no such bound).
+std::optional<SplineSurface> spline_of(const BRepAdaptor_Surface& s) {
+  if (s.GetType() == GeomAbs_BezierSurface) {
+    const Handle(Geom_BezierSurface) b = s.Bezier();
+    if (b->IsURational() || b->IsVRational()) return std::nullopt;
+    SplineSurface out;
+    out.nu = b->NbUPoles();
+    out.nv = b->NbVPoles();
+    out.udegree = b->UDegree();
+    out.vdegree = b->VDegree();
+    for (int i = 1; i <= out.nu; ++i)
+      for (int j = 1; j <= out.nv; ++j) {
+        const gp_Pnt& q = b->Pole(i, j);
+        out.poles.emplace_back(q.X(), q.Y(), q.Z());
+      }
+    out.uknots.assign(size_t(out.udegree) + 1, 0.0);
+    out.uknots.resize(2 * (size_t(out.udegree) + 1), 1.0);
+    out.vknots.assign(size_t(out.vdegree) + 1, 0.0);
+    out.vknots.resize(2 * (size_t(out.vdegree) + 1), 1.0);
+    return out;
+  }
+  if (s.GetType() != GeomAbs_BSplineSurface) return std::nullopt;
+  Handle(Geom_BSplineSurface) b = s.BSpline();
+  if (b->IsURational() || b->IsVRational()) return std::nullopt;
+  if (b->IsUPeriodic() || b->IsVPeriodic()) {  // the same surface on a clamped knot vector
+    b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
+    if (b->IsUPeriodic()) b->SetUNotPeriodic();
+    if (b->IsVPeriodic()) b->SetVNotPeriodic();
+  }
+  SplineSurface out;
+  out.nu = b->NbUPoles();
+  out.nv = b->NbVPoles();
+  out.udegree = b->UDegree();
+  out.vdegree = b->VDegree();
+  for (int i = 1; i <= out.nu; ++i)
+    for (int j = 1; j <= out.nv; ++j) {
+      const gp_Pnt& q = b->Pole(i, j);
+      out.poles.emplace_back(q.X(), q.Y(), q.Z());
+    }
+  const TColStd_Array1OfReal& ku = b->UKnotSequence();
+  for (int k = ku.Lower(); k <= ku.Upper(); ++k) out.uknots.push_back(ku(k));
+  const TColStd_Array1OfReal& kv = b->VKnotSequence();
+  for (int k = kv.Lower(); k <= kv.Upper(); ++k) out.vknots.push_back(kv(k));
+  if (out.uknots.size() != size_t(out.nu + out.udegree + 1) ||
+      out.vknots.size() != size_t(out.nv + out.vdegree + 1))
+    return std::nullopt;  // not the layout the bound reads: estimated instead
+  return out;
+}
+
+// The same for an edge's curve.
+std::optional<SplineCurve> spline_of(const BRepAdaptor_Curve& c) {
+  SplineCurve out;
+  if (c.GetType() == GeomAbs_BezierCurve) {
+    const Handle(Geom_BezierCurve) b = c.Bezier();
+    if (b->IsRational()) return std::nullopt;
+    out.degree = b->Degree();
+    for (int i = 1; i <= b->NbPoles(); ++i)
+      out.poles.emplace_back(b->Pole(i).X(), b->Pole(i).Y(), b->Pole(i).Z());
+    out.knots.assign(size_t(out.degree) + 1, 0.0);
+    out.knots.resize(2 * (size_t(out.degree) + 1), 1.0);
+    return out;
+  }
+  if (c.GetType() != GeomAbs_BSplineCurve) return std::nullopt;
+  Handle(Geom_BSplineCurve) b = c.BSpline();
+  if (b->IsRational()) return std::nullopt;
+  if (b->IsPeriodic()) {
+    b = Handle(Geom_BSplineCurve)::DownCast(b->Copy());
+    b->SetNotPeriodic();
+  }
+  out.degree = b->Degree();
+  for (int i = 1; i <= b->NbPoles(); ++i)
+    out.poles.emplace_back(b->Pole(i).X(), b->Pole(i).Y(), b->Pole(i).Z());
+  const TColStd_Array1OfReal& k = b->KnotSequence();
+  for (int i = k.Lower(); i <= k.Upper(); ++i) out.knots.push_back(k(i));
+  if (out.knots.size() != out.poles.size() + size_t(out.degree) + 1) return std::nullopt;
+  return out;
+}
+
 // Bounds of the second derivatives of an analytic surface over the parameter
-// box [u0, u1] × [v0, v1] (OCCT's parametrisations, ElSLib); false for a
-// free-form surface.
-bool analytic_bounds(const BRepAdaptor_Surface& s, double v0, double v1,
-                     SecondDerivativeBounds& m) {
+// box [u0, u1] × [v0, v1] (OCCT's parametrisations, ElSLib), or of a
+// non-rational spline's (`spline`); false for any other surface.
+bool analytic_bounds(const BRepAdaptor_Surface& s, const std::optional<SplineSurface>& spline,
+                     double u0, double u1, double v0, double v1, SecondDerivativeBounds& m) {
+  if (spline) {
+    m = spline_second_derivative_bounds(*spline, u0, u1, v0, v1);
+    return true;
+  }
   switch (s.GetType()) {
     case GeomAbs_Plane:
       m = {};
@@ -117,6 +208,7 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
   const GeomAbs_CurveType type = c.GetType();
   if (type == GeomAbs_Line) return out;
   const bool params = poly->HasParameters();
+  const std::optional<SplineCurve> spline = spline_of(c);
   const gp_Trsf to_world = loc.Transformation();
   for (int k = 1; k < poly->NbNodes(); ++k) {
     const gp_Pnt a = t.Node(poly->Node(k)).Transformed(to_world);
@@ -127,7 +219,11 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
     }
     const double t0 = poly->Parameter(k), t1 = poly->Parameter(k + 1);
     double dev;
-    if (type == GeomAbs_Circle) {
+    if (spline) {
+      dev = segment_interpolation_bound(std::min(t0, t1), std::max(t0, t1),
+                                        spline_second_derivative_bound(*spline, std::min(t0, t1),
+                                                                       std::max(t0, t1)));
+    } else if (type == GeomAbs_Circle) {
       const double r = c.Circle().Radius();
       dev = r * (1.0 - std::cos(0.5 * std::abs(t1 - t0)));
     } else if (type == GeomAbs_Ellipse) {
@@ -153,6 +249,7 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
   BRepAdaptor_Surface s(face);  // placed by the face's location, as the nodes are by `loc`
   const gp_Trsf to_world = loc.Transformation();
   const bool has_uv = t.HasUVNodes();
+  const std::optional<SplineSurface> spline = spline_of(s);
   double triangles = 0.0;
   for (int k = 1; k <= t.NbTriangles(); ++k) {
     int i[3];
@@ -170,6 +267,8 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
     double corner = 0.0;  // the corners as stored against the surface at their parameters
     for (int c = 0; c < 3; ++c)
       corner = std::max(corner, s.Value(uv[c].X(), uv[c].Y()).Distance(p[c]));
+    const double u0 = std::min({uv[0].X(), uv[1].X(), uv[2].X()});
+    const double u1 = std::max({uv[0].X(), uv[1].X(), uv[2].X()});
     const double v0 = std::min({uv[0].Y(), uv[1].Y(), uv[2].Y()});
     const double v1 = std::max({uv[0].Y(), uv[1].Y(), uv[2].Y()});
     SecondDerivativeBounds m;
@@ -184,7 +283,7 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
       const auto v = [](const gp_Pnt& q) { return Vec3(q.X(), q.Y(), q.Z()); };
       const Vec3 near = closest_on_triangle(c, v(p[0]), v(p[1]), v(p[2]));
       dev = std::max(0.0, sphere.Radius() - (near - c).norm());
-    } else if (analytic_bounds(s, v0, v1, m)) {
+    } else if (analytic_bounds(s, spline, u0, u1, v0, v1, m)) {
       dev = triangle_interpolation_bound(
           {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()), Vec2(uv[2].X(), uv[2].Y())}, m);
     } else {

@@ -18,8 +18,9 @@ struct FaceSag {
 /// The chord error of the triangulation `t` (placed by `loc`) of `face`: for
 /// every triangle, the distance between the surface over its parameter
 /// triangle and the flat triangle (triangle_interpolation_bound with the
-/// surface's second derivatives: exact bounds for planes, cylinders, cones,
-/// spheres and tori; sampled at seven points of each triangle otherwise), plus
+/// surface's second derivatives: bounds for planes, cylinders, cones, spheres,
+/// tori and non-rational B-spline and Bézier surfaces (from their control nets,
+/// geometry/spline_bound.h); sampled at seven points of each triangle otherwise), plus
 /// the chord error of the face's boundary edges (the parts of the face outside
 /// every parameter triangle lie between an edge and its polygon), plus how far
 /// the triangle corners lie from the surface (rounding).

@@ -1,0 +1,48 @@
+// Bounds of a non-rational B-spline's second derivatives from its control net,
+// for the certified chord error of its tessellation (geometry/
+// interpolation_bound.h, src/brep/face_sag.cpp).
+//
+// Why they hold (de Boor; Piegl & Tiller, The NURBS Book, 3.3): the derivative
+// of a B-spline of degree p with control points P_i on knots u is a B-spline
+// of degree p − 1 with control points Q_i = p·(P_{i+1} − P_i)/(u_{i+p+1} −
+// u_{i+1}) on basis functions N_{i+1,p−1} (a zero denominator belongs to a
+// basis function that vanishes, and its term to nothing); likewise the second.
+// Basis functions are non-negative and sum to one where they are defined, so a
+// derivative lies in the convex hull of its control points there: its length
+// is at most the longest of those whose basis function's support meets the
+// parameter range. A tensor-product surface takes the same differences along
+// each direction.
+#pragma once
+
+#include <vector>
+
+#include "geometry/interpolation_bound.h"
+#include "geometry/types.h"
+
+namespace pd {
+
+/// A non-rational B-spline curve: poles, its full (flat) knot vector of
+/// poles + degree + 1 values, and its degree.
+struct SplineCurve {
+  std::vector<Vec3> poles;
+  std::vector<double> knots;
+  int degree = 0;
+};
+
+/// A non-rational tensor-product B-spline surface: poles row by row
+/// (pole(i, j) = poles[i · nv + j], i along u), flat knot vectors, degrees.
+struct SplineSurface {
+  int nu = 0, nv = 0;
+  std::vector<Vec3> poles;
+  std::vector<double> uknots, vknots;
+  int udegree = 0, vdegree = 0;
+};
+
+/// An upper bound of |C''(t)| over t in [t0, t1]. Pure.
+double spline_second_derivative_bound(const SplineCurve& c, double t0, double t1);
+
+/// Upper bounds of |S_uu|, |S_uv| and |S_vv| over [u0, u1] × [v0, v1]. Pure.
+SecondDerivativeBounds spline_second_derivative_bounds(const SplineSurface& s, double u0,
+                                                       double u1, double v0, double v1);
+
+}  // namespace pd
