@@ -15,6 +15,7 @@
 #include "geometry/mesh_intersect.h"
 #include "geometry/solid_distance.h"
 #include "parallel_for.h"
+#include "results/certified_decimal.h"
 #include "tolerances.h"
 #include "work_queue.h"
 
@@ -113,8 +114,10 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
   r.confirmed = true;
   // A part thinner than the tolerance pushed deep into another has a thin
   // overlap: the deepest point of its surface inside the other, a lower bound
-  // of any separating move, says it is a clash all the same.
-  if (classify(mesh.vertex_depth, tolerance, pair_size) == Status::kInterference &&
+  // of any separating move, says it is a clash all the same (when deeper than
+  // the coordinates' resolution too: a touching face's rounding is no clash).
+  if (classify(mesh.vertex_depth, std::max(tolerance, t.resolution), pair_size) ==
+          Status::kInterference &&
       t.outcome != Outcome::kAbove) {
     r.status = Status::kInterference;
     r.depth = mesh.vertex_depth;
@@ -124,11 +127,23 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
     r.at = mesh.vertex_at;
   } else if (t.outcome == Outcome::kAbove) {
     r.status = Status::kInterference;
+    r.depth = certified_decimal(t.lower, (*r.depth_bounds)[1]);  // the digits it certifies
   } else if (t.outcome == Outcome::kBelow) {
-    // Touching within rounding is separated, as for convex pairs.
-    r.status = classify(std::min(t.upper, hull.depth), tolerance, pair_size) == Status::kSeparated
-                   ? Status::kSeparated
-                   : Status::kFalsePositive;
+    // Touching to the coordinates' resolution is separated, as for convex
+    // pairs; a false positive is an overlap found above it.
+    const double upper = (*r.depth_bounds)[1];
+    if (upper <= t.resolution || classify(upper, tolerance, pair_size) == Status::kSeparated) {
+      r.status = Status::kSeparated;
+    } else if (t.lower > t.resolution) {
+      r.status = Status::kFalsePositive;
+      r.depth = certified_decimal(t.lower, upper);
+    } else {  // the work ran out before the bracket left the resolution
+      r.status = Status::kFalsePositive;
+      r.depth = upper;
+      r.reason =
+          "the work budget ran out before the bracket came within the coordinates' resolution "
+          "or showed an overlap above it: the depth is its upper end";
+    }
   } else {
     r.status = Status::kUndecided;
     r.confirmed = false;
@@ -144,7 +159,10 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
                  " distance evaluations with the bracket still around the tolerance";
     }
   }
-  if (r.status == Status::kSeparated) r.at.reset();  // a finding's place only
+  if (r.status == Status::kSeparated) {  // touching: depth 0, as for convex pairs
+    r.depth = 0.0;
+    r.at.reset();  // a finding's place only
+  }
   r.margin = tolerance - r.depth;
   return r;
 }
@@ -327,7 +345,9 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
     if (!whole) deepest(-INFINITY);
     return v.vertex_at;
   });
-  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove) deepest(tolerance);
+  // Only a point deeper than the tolerance and the coordinates' resolution decides.
+  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove)
+    deepest(std::max(tolerance, t.resolution));
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();
   return t;
