@@ -345,8 +345,10 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
     if (!whole) deepest(-INFINITY);
     return v.vertex_at;
   });
-  // Only a point deeper than the tolerance and the coordinates' resolution decides.
-  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove)
+  // Only a point deeper than the tolerance and the coordinates' resolution
+  // decides; and an overlap certified within the resolution is touching: a
+  // part thinner than the resolution is not resolved either.
+  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove && !(t.upper <= t.resolution))
     deepest(std::max(tolerance, t.resolution));
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();
