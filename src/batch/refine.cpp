@@ -385,11 +385,20 @@ class Refinement {
              std::vector<PairResult>& results, const RunOptions& options,
              const std::function<PairChecks(int, int)>& checks)
       : parts_(parts), pairs_(pairs), results_(results), options_(options), checks_(checks) {
-    for (size_t k = 0; k < pairs.size(); ++k)
-      if (needs_refinement(results[k], parts[pairs[k].first], parts[pairs[k].second]))
-        flagged_.push_back(k);
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
+      if (!results[k].reused && needs_refinement(results[k], a, b)) flagged_.push_back(k);
+      // A refined pair taken from an earlier report (--reuse) is final; when
+      // its parts' pieces decided it, they are decomposed all the same (from
+      // the cache), so the report's part fields are a full run's.
+      if (results[k].reused && results[k].depth_source != "hull" &&
+          (a.refinable() || b.refinable()) &&
+          (checks(pairs[k].first, pairs[k].second).clearance || a.mode == Pieces::kDecompose ||
+           b.mode == Pieces::kDecompose))
+        reused_pieces_.push_back(k);
+    }
   }
-  bool empty() const { return flagged_.empty(); }
+  bool empty() const { return flagged_.empty() && reused_pieces_.empty(); }
 
   // 0. Pairs refined before with the same parts, placements and settings are
   // taken from the cache (batch/refine_cache.h): none of the steps below runs
@@ -462,6 +471,7 @@ class Refinement {
     for (size_t n : solve_) used[pairs_[flagged_[n]].first] = used[pairs_[flagged_[n]].second] = 1;
     for (const auto& [k, hit] : hits_)
       if (hit.solved) used[pairs_[k].first] = used[pairs_[k].second] = 1;
+    for (size_t k : reused_pieces_) used[pairs_[k].first] = used[pairs_[k].second] = 1;
     std::vector<int> to_decompose;
     for (size_t p = 0; p < parts_.size(); ++p)
       if (used[p] && parts_[p].refinable() && !parts_[p].decomposition)
@@ -532,7 +542,8 @@ class Refinement {
   std::vector<PairResult>& results_;
   const RunOptions& options_;
   const std::function<PairChecks(int, int)>& checks_;
-  std::vector<size_t> flagged_;  ///< indices into pairs_ of the pairs to refine
+  std::vector<size_t> flagged_;        ///< indices into pairs_ of the pairs to refine
+  std::vector<size_t> reused_pieces_;  ///< reused refined pairs whose parts' pieces decided
   std::vector<std::string> keys_;
   std::vector<std::pair<size_t, StoredRefinement>> hits_;
   std::vector<std::shared_ptr<const SolidDistance>> solids_;  ///< per part, steps 1–2
