@@ -21,6 +21,8 @@ Nominal relations, by construction of the exact solids:
                  bore's chords cut up to 5 (1 - cos(pi/24)) = 0.043 mm into the hole, so the meshes
                  overlap by a few hundredths of a millimetre: a false positive at every tolerance
                  above that, an interference below it.
+  tray/lid       a clash: a 60 x 40 lid 1 mm down into an open tray's 2 mm walls, an overlap 1 mm
+                 thick wherever the assembly sits.
 """
 import argparse
 import importlib.util
@@ -46,6 +48,8 @@ PARTS = {
     "bore": "translate([60,0,0]) difference(){ cylinder(r=12, h=10, $fn=48);"
             " translate([0,0,-1]) cylinder(r=5, h=12, $fn=24); }",
     "pin": "translate([60,0,-5]) cylinder(r=5, h=20, $fn=48);",
+    "tray": "translate([-130,-20,0]) difference(){ cube([60,40,30]); translate([2,2,2]) cube([56,36,29]); }",
+    "lid": "translate([-130,-20,29]) cube([60,40,3]);",
 }
 
 EXPECTED = [
@@ -53,6 +57,8 @@ EXPECTED = [
      "note": "hex head seated on the bracket's top face; shank r 4 in an r 4.2 hole"},
     {"a": "bore", "b": "pin", "expect": "overlap",
      "note": "48-segment pin r 5 in a 24-segment bore r 5: bore sag 0.043 mm"},
+    {"a": "tray", "b": "lid", "expect": "clash", "depth": 1.0,
+     "note": "a lid 1 mm down into an open tray's 2 mm walls: a slab 1 mm thick"},
 ]
 
 FAR = (28000.0, -3000.0, 1500.0)

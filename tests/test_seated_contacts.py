@@ -9,7 +9,9 @@ usage: test_seated_contacts.py PDCHECK SOURCE_DIR BINARY_DIR
     at every tolerance;
   - the 48-segment pin in the 24-segment bore (a tessellation overlap of about 0.043 mm) is an
     interference at tolerances below its overlap and a false positive above it, whose depth is an
-    overlap found: > 0, within its bracket, the bracket's lower end > 0.
+    overlap found: > 0, within its bracket, the bracket's lower end > 0;
+  - the lid 1 mm down into the open tray reads the same depth, 1, at both placements and every
+    tolerance, in the report and in its sentence on stderr.
 Exits 77 (skipped) when openscad is not installed.
 """
 import json
@@ -42,7 +44,7 @@ def main():
         scene = os.path.join(out, place, "scene.json")
         touching = {}
         for tolerance in TOLERANCES:
-            p = subprocess.run([pdcheck, scene, "--tolerance", tolerance, "--no-cache", "--quiet"],
+            p = subprocess.run([pdcheck, scene, "--tolerance", tolerance, "--no-cache"],
                                capture_output=True, text=True)
             if p.returncode not in (0, 1):
                 failures.append("%s, tolerance %s: exit %d: %s" % (place, tolerance, p.returncode,
@@ -59,6 +61,12 @@ def main():
                 if e["expect"] == "touching":
                     touching[tolerance] = q["status"]
                     check(q["status"] == "separated" and q["depth"] == 0, what + ": " + got)
+                elif e["expect"] == "clash":
+                    check(q["status"] == "interference" and q["depth"] == e["depth"],
+                          what + ": " + got)
+                    check(q["depth_source"] == "thickness", what + ": " + got)
+                    check(("overlap thickness %g mm > tolerance" % e["depth"]) in p.stderr,
+                          what + ": stderr: " + p.stderr[-500:])
                 else:
                     thick = float(tolerance) < 0.03
                     check(q["status"] == ("interference" if thick else "false_positive"),

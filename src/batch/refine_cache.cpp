@@ -29,10 +29,10 @@ namespace {
 // 13: a box's plane models look at the faces within a margin of the box and
 //     bound min(sd, margin), a hole's feet move along the bisector of its
 //     normals farthest apart when it spreads less: other boxes, other brackets.
-// 14: a bracket with no overlap above the coordinates' resolution narrows
+// 15: a bracket with no overlap above the coordinates' resolution narrows
 //     until it shows one or comes within it (separated); a decided depth is
 //     the shortest decimal in its bracket; stale boxes are bounded again.
-constexpr CacheKind kRefinementCache{"pdcheck-refinement-14", ".pdr"};
+constexpr CacheKind kRefinementCache{"pdcheck-refinement-15", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));

@@ -137,6 +137,8 @@ std::string render_sarif(const ReportInput& in) {
     json props = {{"a", a.id}, {"b", b.id}, {"status", status_name(r.status)}};
     if (r.status != Status::kError) {
       props["depth"] = r.depth;
+      props["depth_source"] = r.depth_source;  // which quantity the depth is
+      if (r.depth_bounds) props["depth_bounds"] = *r.depth_bounds;
       props["tolerance"] = in.context.tolerance;
       props["units"] = in.context.units;
       props["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0, r.direction.z() + 0.0};
