@@ -177,6 +177,21 @@ TEST(OverlapThickness, AContactReadsTheSameAtEveryThreshold) {
   }
 }
 
+TEST(OverlapThickness, AnInterferenceBracketReachesItsStatedWidthUnderASmallThreshold) {
+  // The pin in the coarser bore above, decided thick at once under a small
+  // threshold: the boxes bounded before the overlap was found (their models'
+  // margin a fraction of the threshold) are bounded again once it is, and
+  // the bracket comes within kThicknessBracket (it stayed 15 times wide).
+  const SolidDistance pin(sh::cylinder({0, 0}, 5, -5, 15, 48)),
+      plate(sh::plate_with_hole(40, 10, 5, 24));
+  for (double threshold : {0.001, 0.01}) {
+    const ThicknessResult r = overlap_thickness(pin, plate, threshold);
+    EXPECT_EQ(r.outcome, Outcome::kAbove) << threshold;
+    EXPECT_LE(r.upper, (1 + tol::kThicknessBracket) * r.lower) << threshold << ": " << r.lower;
+    EXPECT_GT(r.lower, 0.04) << threshold;
+  }
+}
+
 TEST(OverlapThickness, BlockPushedIntoAnLBracketLegIsASlab) {
   const Mesh bracket = sh::l_bracket(40, 5, 20);  // inner corner at (5, 5)
   for (double push : {0.0, 0.3, 2.0}) {
