@@ -44,6 +44,8 @@ STORY = {
     "ci_cli": "the nightly CI loop through the binary (baseline, suppressions, JUnit, SARIF)",
     "cli": "the binary end to end: exit codes, messages, reports",
     "cli_mesh_input": "the binary on bad mesh input (hangs, crashes, damaged files)",
+    "convex_float32": "convex float32 parts far from the origin through the binary, against the "
+    "exact reference (parts' convexity, hull stage, report)",
     "cli_numbers": "the binary at the edges of double precision and on malformed text",
     "exact_depth": "the default method against the exact reference (methods, epa, exact step)",
     "exports": "--csv and --bcf through the binary, against the JSON report and BCF schemas",

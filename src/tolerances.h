@@ -253,6 +253,15 @@ inline constexpr long kThicknessMaxEvaluations = 400000;
 /// The wall-clock box per pair, seconds: the users' safety net, never reached on
 /// the benchmark assemblies (their slowest pair stays far below it).
 inline constexpr double kThicknessSeconds = 20.0;
+/// The overlap thickness's resolution, in float32 steps of each part (the
+/// spacing at its largest coordinate, as mesh files store them): a thickness
+/// certified at or below kContactSteps × (step_a + step_b) cannot be told from
+/// two touching surfaces' rounding (each vertex is within half a step per axis
+/// of where it belongs, and each plane model's slack is about a step), so the
+/// pair is touching (`separated`). A pair whose search finds no overlap above
+/// it narrows its bracket until it does or until the upper end is at it,
+/// whatever the tolerance (docs/solver.md, "Overlap thickness").
+inline constexpr double kContactSteps = 2.0;
 /// Once an interference is certified (lower bound > tolerance), the search goes
 /// on until the bracket's upper end is within this fraction of its lower end,
 /// so the reported depth means something (bounded by the same budget).

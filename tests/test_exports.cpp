@@ -130,6 +130,7 @@ TEST(Exports, CsvAndBcfMatchTheReport) {
     EXPECT_EQ(c[col["status"]], p["status"]);
     EXPECT_EQ(c[col["depth"]], number_text(p["depth"]));
     EXPECT_EQ(std::stod(c[col["depth"]]), p["depth"].get<double>());  // round trip
+    EXPECT_EQ(c[col["depth_source"]], p["depth_source"]);
     EXPECT_EQ(c[col["margin"]], number_text(p["margin"]));
     EXPECT_EQ(c[col["tolerance"]], number_text(rep["tolerance"]));
     EXPECT_EQ(c[col["units"]], "mm");

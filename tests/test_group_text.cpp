@@ -18,6 +18,11 @@ TEST(GroupText, ALinePerGroupOfSeveralFindings) {
                                  ": 2 findings (frame, lid <&>, pin): moving lid <&> by 1 mm "
                                  "along (0, 0, 1) clears 2 of them; deepest frame / lid <&>, "
                                  "depth 1 mm\n");
+  // The deepest's depth is named for what it is.
+  for (PairResult& r : f.run.pairs) r.depth_source = "thickness";
+  EXPECT_NE(group_lines(f.input()).find("deepest frame / lid <&>, overlap thickness 1 mm"),
+            std::string::npos)
+      << group_lines(f.input());
   // One finding alone: its own finding line says it all.
   f.run.pairs.erase(f.run.pairs.begin() + 3);
   EXPECT_EQ(group_lines(f.input()), "");

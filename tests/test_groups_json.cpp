@@ -27,6 +27,7 @@ TEST(GroupsJson, MembersPartsDeepestAndMove) {
   EXPECT_EQ(g["parts"], json({"frame", "lid <&>", "pin"}));
   EXPECT_EQ(g["deepest"], lid);
   EXPECT_EQ(g["depth"], 1.0);
+  EXPECT_EQ(g["depth_source"], "hull");
   // Both findings clear by moving the lid up, as far as the deeper one needs.
   EXPECT_EQ(g["move"]["part"], "lid <&>");
   EXPECT_EQ(g["move"]["direction"], json({0.0, 0.0, 1.0}));

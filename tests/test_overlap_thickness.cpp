@@ -110,9 +110,10 @@ TEST(OverlapThickness, ShoulderedPinSeatedOnItsBoreIsThinAndBracketed) {
   // A pin whose head (r 5) rests on the plate around its bore (r 3): at the
   // shoulder the pin's complement is a union of wedges (a shank facet's outer
   // side below the head), which no convex-hole model covers; the slivers run
-  // up into that corner. Turned half a step, far from the origin, float32.
+  // up into that corner. Turned half a step, far from the origin, float32
+  // (at 9,000 mm the resolution, 0.0039, is below the slivers' 0.006).
   const int n = 48;
-  const Vec3 far(21000, -4000, 1500);
+  const Vec3 far(9000, -4000, 1500);
   const Mesh plate = sh::float32(sh::translated(sh::plate_with_hole(40, 6, 3, n), far));
   Mesh pin = sh::stepped_shaft(3, 5, -4, 6, 8, n);
   pin.vertices = Eigen::AngleAxisd(M_PI / n, Vec3::UnitZ()).toRotationMatrix() * pin.vertices;
@@ -125,8 +126,9 @@ TEST(OverlapThickness, ShoulderedPinSeatedOnItsBoreIsThinAndBracketed) {
   EXPECT_TRUE(brackets(r, exact, noise)) << r.lower << " " << exact << " " << r.upper;
   // The shoulder's circle is certified by wedges at a coarse scale, not cell by
   // cell at the tolerance's (a count, not a time: 3,362 with wedges, 40,604
-  // without).
+  // without, at 21,000 mm).
   EXPECT_LT(r.evaluations, 12000);
+  EXPECT_GT(r.lower, r.resolution);  // the slivers are shown
 }
 
 TEST(OverlapThickness, ExactFitPinTouchesOnly) {
@@ -136,6 +138,57 @@ TEST(OverlapThickness, ExactFitPinTouchesOnly) {
   EXPECT_EQ(r.outcome, Outcome::kBelow);
   EXPECT_EQ(r.lower, 0.0);  // no common interior point exists
   EXPECT_LE(r.upper, 0.01);
+}
+
+TEST(OverlapThickness, AContactReadsTheSameAtEveryThreshold) {
+  // A block resting on a plate (turned, float32 far from the origin): no
+  // overlap but the rounding. At every threshold the bracket narrows until
+  // its upper end is within the coordinates' resolution (touching), never
+  // stopping at the threshold with no overlap shown.
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Vec3 far(28000, -3000, 1500);
+  const auto placed = [&](Mesh m) {
+    m.vertices = (turn * m.vertices).colwise() + far;
+    return sh::float32(std::move(m));
+  };
+  const SolidDistance plate(placed(sh::plate_with_hole(40, 6, 4.2, 48)));
+  const SolidDistance block(placed(sh::box(Vec3(-6, -6, 6), Vec3(6, 6, 12))));
+  const double step = 1.0 / 512;  // float32 at 16,384–32,768
+  const double resolution = thickness_resolution(plate, block);
+  EXPECT_EQ(resolution, tol::kContactSteps * 2 * step);
+  for (double threshold : {0.001, 0.01, 0.1}) {
+    const ThicknessResult r = overlap_thickness(plate, block, threshold);
+    EXPECT_EQ(r.outcome, Outcome::kBelow) << threshold;
+    EXPECT_EQ(r.resolution, resolution);
+    EXPECT_LE(r.upper, resolution) << threshold;
+  }
+  // A 48-segment pin in a 24-segment bore of the same radius: the bore's
+  // chords cut 0.043 into the hole. At every threshold above that the overlap
+  // is shown, never a bracket from 0.
+  const Mesh bore = sh::plate_with_hole(40, 10, 5, 24);
+  const SolidDistance pin(sh::cylinder({0, 0}, 5, -5, 15, 48)), plate24(bore);
+  for (double threshold : {0.05, 0.1, 0.5}) {
+    const ThicknessResult r = overlap_thickness(pin, plate24, threshold);
+    EXPECT_EQ(r.outcome, Outcome::kBelow) << threshold;
+    EXPECT_GT(r.lower, r.resolution) << threshold;
+    EXPECT_GT(r.lower, 0.04) << threshold;
+    EXPECT_LT(r.upper, 0.045) << threshold;
+  }
+}
+
+TEST(OverlapThickness, AnInterferenceBracketReachesItsStatedWidthUnderASmallThreshold) {
+  // The pin in the coarser bore above, decided thick at once under a small
+  // threshold: the boxes bounded before the overlap was found (their models'
+  // margin a fraction of the threshold) are bounded again once it is, and
+  // the bracket comes within kThicknessBracket (2,844 evaluations; splitting
+  // them instead left it 8 times wide after 7,848).
+  const SolidDistance pin(sh::cylinder({0, 0}, 5, -3, 9, 48)),
+      plate(sh::plate_with_hole(40, 6, 5, 24));
+  const ThicknessResult r = overlap_thickness(pin, plate, 0.001);
+  EXPECT_EQ(r.outcome, Outcome::kAbove);
+  EXPECT_LE(r.upper, (1 + tol::kThicknessBracket) * r.lower) << r.lower;
+  EXPECT_GT(r.lower, 0.04);
 }
 
 TEST(OverlapThickness, BlockPushedIntoAnLBracketLegIsASlab) {

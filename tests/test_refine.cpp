@@ -56,11 +56,12 @@ MeshVerdict meeting(double vertex_depth) {
   return m;
 }
 
-ThicknessResult bracket(Outcome o, double lower, double upper) {
+ThicknessResult bracket(Outcome o, double lower, double upper, double resolution = 0.001) {
   ThicknessResult t;
   t.outcome = o;
   t.lower = lower;
   t.upper = upper;
+  t.resolution = resolution;
   t.at = Vec3(4, 5, 6);
   t.direction = Vec3::UnitX();
   t.evaluations = 1234;
@@ -169,29 +170,46 @@ TEST(Refine, DecideRefinedTakesThePiecesErrorsAndTheirClearance) {
 TEST(Refine, DecideThicknessSaysWhatTheBracketProves) {
   // Above the tolerance: an interference at the thickest ball, bracketed below
   // the hull depth.
+  // The depth is the number with the fewest digits the bracket holds.
   PairResult r = thickness(meeting(0.01), bracket(Outcome::kAbove, 0.2, 0.4));
   EXPECT_EQ(r.status, Status::kInterference);
   EXPECT_EQ(r.depth_source, "thickness");
-  EXPECT_EQ(r.depth, 0.2);
+  EXPECT_EQ(r.depth, 0.3);
   EXPECT_EQ(r.direction, Vec3::UnitX());
   EXPECT_EQ(r.depth_bounds, (std::array<double, 2>{0.2, 0.4}));
   EXPECT_EQ(r.hull_depth, 3.0);
   EXPECT_EQ(r.at, Vec3(4, 5, 6));
   EXPECT_EQ(r.confirmed, true);
-  EXPECT_EQ(r.margin, 0.05 - 0.2);
+  EXPECT_EQ(r.margin, 0.05 - 0.3);
+  r = thickness(meeting(0.01), bracket(Outcome::kAbove, 0.999849, 1.0084));
+  EXPECT_EQ(r.depth, 1.0);
+  EXPECT_EQ(r.depth_bounds, (std::array<double, 2>{0.999849, 1.0084}));
   EXPECT_EQ(thickness(meeting(0.01), bracket(Outcome::kAbove, 0.2, 5)).depth_bounds,
             (std::array<double, 2>{0.2, 3.0}));
-  // Below: a false positive, or separated when the upper bound is contact.
-  r = thickness(meeting(0.01), bracket(Outcome::kBelow, 0.01, 0.03));
+  // Below: a false positive when an overlap above the coordinates' resolution
+  // was found (its depth > 0), separated when the upper bound is within it.
+  r = thickness(meeting(0.01), bracket(Outcome::kBelow, 0.011, 0.013));
   EXPECT_EQ(r.status, Status::kFalsePositive);
-  EXPECT_EQ(r.depth, 0.01);
+  EXPECT_EQ(r.depth, 0.012);
   EXPECT_EQ(r.confirmed, true);
-  r = thickness(meeting(0.01), bracket(Outcome::kBelow, 0.0, 0.03));
-  EXPECT_EQ(r.status, Status::kFalsePositive);
-  EXPECT_EQ(r.at, Vec3(1, 2, 3));  // no common interior point: the deepest surface point
+  EXPECT_TRUE(r.reason.empty());
   r = thickness(meeting(0.0), bracket(Outcome::kBelow, 0.0, 1e-13));
   EXPECT_EQ(r.status, Status::kSeparated);
   EXPECT_FALSE(r.at);
+  r = thickness(meeting(0.0007), bracket(Outcome::kBelow, 0.0005, 0.0009));
+  EXPECT_EQ(r.status, Status::kSeparated);
+  EXPECT_EQ(r.depth, 0.0);
+  EXPECT_EQ(r.depth_bounds, (std::array<double, 2>{0.0005, 0.0009}));
+  // The work ran out while narrowing: no overlap shown, the upper bound is the depth.
+  r = thickness(meeting(0.01), bracket(Outcome::kBelow, 0.0, 0.03));
+  EXPECT_EQ(r.status, Status::kFalsePositive);
+  EXPECT_EQ(r.depth, 0.03);
+  EXPECT_FALSE(r.reason.empty());
+  EXPECT_EQ(r.at, Vec3(1, 2, 3));  // no common interior point: the deepest surface point
+  // A surface point deeper than the tolerance but within the resolution is no clash.
+  r = thickness(meeting(0.08), bracket(Outcome::kBelow, 0.0, 0.09, 0.1));
+  EXPECT_EQ(r.status, Status::kSeparated);
+  EXPECT_EQ(r.depth_source, "thickness");
   // A thin part pushed deep: the deepest surface point decides.
   r = thickness(meeting(0.2), bracket(Outcome::kBelow, 0.01, 0.03));
   EXPECT_EQ(r.status, Status::kInterference);

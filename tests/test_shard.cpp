@@ -518,17 +518,33 @@ TEST(Reuse, MovingOnePartResolvesExactlyItsPairs) {
   EXPECT_GT(moved, 0);
   EXPECT_GT(reused, 0);
   EXPECT_NE(r.err.find(std::to_string(reused) + " pair(s) reused"), std::string::npos) << r.err;
+  // The summary says how many were reused and why the rest were solved: the
+  // moved part's pairs and the error, as the pairs show.
+  const json counts = got["summary"]["reuse"];
+  EXPECT_EQ(counts["reused"], reused) << counts;
+  EXPECT_EQ(counts["solved"]["part_changed"], moved) << counts;
+  long solved = 0;
+  for (const auto& [why, n] : counts["solved"].items()) solved += n.get<long>();
+  EXPECT_EQ(reused + solved, got["summary"]["candidate_pairs"].get<long>()) << counts;
+  EXPECT_NE(r.err.find(std::to_string(moved) + " with a changed or new part"), std::string::npos)
+      << r.err;
+  got["summary"].erase("reuse");
   expect_same_report(got, read_json(full), "--reuse after moving g2a");
   // Other settings: nothing stands.
   const CliResult t = run(after + " -q --tolerance 0.2 --reuse " + old + " -o " + again);
   const json again_report = read_json(again);  // range-for over a temporary's member dangles
   for (const auto& p : again_report["pairs"]) EXPECT_FALSE(p.value("reused", false)) << p.dump();
+  EXPECT_EQ(again_report["summary"]["reuse"],
+            json({{"reused", 0},
+                  {"solved", {{"settings", again_report["summary"]["candidate_pairs"]}}}}));
   // Shards reuse too, and still merge into the full run's report.
   const auto shards = run_shards(after, 3, "reuse", "--reuse " + old);
   const std::string merged = tmp("reuse_merged.json");
   EXPECT_EQ(run("merge" + joined(shards) + " -o " + merged, "").code, f.code);
   json m = read_json(merged);
   for (auto& p : m["pairs"]) p.erase("reused");
+  EXPECT_EQ(m["summary"]["reuse"], counts) << "the shards' counts, summed";
+  m["summary"].erase("reuse");
   expect_same_report(m, read_json(full), "3 shards with --reuse");
   // A report without content hashes cannot be reused from.
   json stripped = read_json(old);

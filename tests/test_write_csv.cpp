@@ -25,8 +25,9 @@ TEST(WriteCsv, QuotesIdsAsRfc4180Says) {
   ASSERT_EQ(error, "") << csv;
   ASSERT_EQ(rows.size(), 4u) << csv;  // the header, and every pair but the separated one
   const std::vector<std::string> header = {
-      "a",    "b",    "fingerprint", "status", "depth",          "tolerance",   "margin", "units",
-      "at_x", "at_y", "at_z",        "group",  "baseline_state", "suppression", "message"};
+      "a",           "b",      "fingerprint", "status", "depth", "depth_source", "tolerance",
+      "margin",      "units",  "at_x",        "at_y",   "at_z",  "group",        "baseline_state",
+      "suppression", "message"};
   EXPECT_EQ(rows[0], header);
   for (const auto& r : rows) EXPECT_EQ(r.size(), header.size());
   EXPECT_EQ(rows[1][0], "plain");
@@ -35,18 +36,19 @@ TEST(WriteCsv, QuotesIdsAsRfc4180Says) {
   EXPECT_EQ(rows[1][3], "interference");
   // Numbers read back to the same doubles.
   EXPECT_EQ(std::stod(rows[1][4]), 0.3);
-  EXPECT_EQ(std::stod(rows[1][6]), 0.1 - 0.3);
-  EXPECT_EQ(std::stod(rows[1][8]), 1.0 / 3);
-  EXPECT_EQ(std::stod(rows[1][9]), -2.5e-7);
-  EXPECT_EQ(std::stod(rows[1][10]), 1e300);
+  EXPECT_EQ(rows[1][5], "hull");  // which quantity the depth is
+  EXPECT_EQ(std::stod(rows[1][7]), 0.1 - 0.3);
+  EXPECT_EQ(std::stod(rows[1][9]), 1.0 / 3);
+  EXPECT_EQ(std::stod(rows[1][10]), -2.5e-7);
+  EXPECT_EQ(std::stod(rows[1][11]), 1e300);
   EXPECT_EQ(rows[2][0], "quote \"q\"");
   EXPECT_EQ(rows[2][1], "line\nbreak");
   EXPECT_EQ(std::stod(rows[2][4]), 0.1 / 3);
-  EXPECT_EQ(rows[2][8], "");  // no `at`: empty, not invented
+  EXPECT_EQ(rows[2][9], "");  // no `at`: empty, not invented
   EXPECT_EQ(rows[3][3], "error");
   EXPECT_EQ(rows[3][4], "");  // an error has no depth or margin
-  EXPECT_EQ(rows[3][6], "");
-  EXPECT_EQ(rows[3][14], "plain / far: error: worker crashed, signal 11");
+  EXPECT_EQ(rows[3][7], "");
+  EXPECT_EQ(rows[3][15], "plain / far: error: worker crashed, signal 11");
   // Quoted exactly where needed.
   EXPECT_NE(csv.find("\r\nplain,\"comma, id\","), std::string::npos) << csv;
   EXPECT_NE(csv.find("\r\n\"quote \"\"q\"\"\",\"line\nbreak\","), std::string::npos) << csv;

@@ -52,6 +52,10 @@ TEST(WriteSarif, AResultPerFindingAndPairNotDecided) {
   EXPECT_EQ(lid["level"], "error");  // fails the default bar
   EXPECT_EQ(lid["partialFingerprints"]["pdcheckPair/v1"], pair_fingerprint("frame", "lid <&>"));
   EXPECT_EQ(lid["properties"]["depth"], 1.0);
+  EXPECT_EQ(lid["properties"]["depth_source"], "hull");  // which quantity the depth is
+  EXPECT_FALSE(lid["properties"].contains("depth_bounds"));
+  const json undecided = result_of(sarif, "lid <&>", "bolt");
+  EXPECT_EQ(undecided["properties"]["depth_bounds"], json({0.05, 0.2}));
   EXPECT_EQ(lid["properties"]["direction"], json::array({0.0, 0.0, 1.0}));
   EXPECT_EQ(result_of(sarif, "frame", "pin")["level"], "note");      // a false positive
   EXPECT_EQ(result_of(sarif, "lid <&>", "bolt")["level"], "error");  // undecided

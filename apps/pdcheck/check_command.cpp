@@ -178,9 +178,8 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
   if (!a.quiet) {
     say_review(report);
     std::cerr << pd::summary_line(summary, result.seconds) << "\n";
-    if (result.reused)
-      std::cerr << "pdcheck: " << result.reused << " pair(s) reused from " << a.reuse << "\n";
-    else if (config.prior && config.prior->settings_hash != result.settings_hash)
+    if (result.reuse) std::cerr << pd::reuse_line(*result.reuse, a.reuse) << "\n";
+    if (config.prior && config.prior->settings_hash != result.settings_hash)
       say("warning", "--reuse " + a.reuse +
                          ": its settings hash differs from this run's (solver settings, tolerance "
                          "or checks): no pair was reused");

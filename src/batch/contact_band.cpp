@@ -72,7 +72,9 @@ ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance
   const std::optional<Vec3> at = t.lower > 0 ? std::optional<Vec3>(t.at) : surface_at();
   if (!at) return t;  // no place known
   const double local = band->at_contact(*at, contact_reach(t.upper, tolerance)).value;
-  if (!(local < tolerance) || t.upper <= local || t.lower > local) return t;
+  // Touching to the coordinates' resolution is touching against any band.
+  if (!(local < tolerance) || t.upper <= local || t.lower > local || t.upper <= t.resolution)
+    return t;
   ThicknessResult again = overlap_thickness(a, b, local, t.upper);
   again.evaluations += t.evaluations;
   again.cells += t.cells;

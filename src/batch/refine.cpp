@@ -15,6 +15,7 @@
 #include "geometry/mesh_intersect.h"
 #include "geometry/solid_distance.h"
 #include "parallel_for.h"
+#include "results/certified_decimal.h"
 #include "tolerances.h"
 #include "work_queue.h"
 
@@ -115,8 +116,10 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
   r.confirmed = true;
   // A part thinner than the tolerance pushed deep into another has a thin
   // overlap: the deepest point of its surface inside the other, a lower bound
-  // of any separating move, says it is a clash all the same.
-  if (classify(mesh.vertex_depth, tolerance, pair_size) == Status::kInterference &&
+  // of any separating move, says it is a clash all the same (when deeper than
+  // the coordinates' resolution too: a touching face's rounding is no clash).
+  if (classify(mesh.vertex_depth, std::max(tolerance, t.resolution), pair_size) ==
+          Status::kInterference &&
       t.outcome != Outcome::kAbove) {
     r.status = Status::kInterference;
     r.depth = mesh.vertex_depth;
@@ -126,11 +129,23 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
     r.at = mesh.vertex_at;
   } else if (t.outcome == Outcome::kAbove) {
     r.status = Status::kInterference;
+    r.depth = certified_decimal(t.lower, (*r.depth_bounds)[1]);  // the digits it certifies
   } else if (t.outcome == Outcome::kBelow) {
-    // Touching within rounding is separated, as for convex pairs.
-    r.status = classify(std::min(t.upper, hull.depth), tolerance, pair_size) == Status::kSeparated
-                   ? Status::kSeparated
-                   : Status::kFalsePositive;
+    // Touching to the coordinates' resolution is separated, as for convex
+    // pairs; a false positive is an overlap found above it.
+    const double upper = (*r.depth_bounds)[1];
+    if (upper <= t.resolution || classify(upper, tolerance, pair_size) == Status::kSeparated) {
+      r.status = Status::kSeparated;
+    } else if (t.lower > t.resolution) {
+      r.status = Status::kFalsePositive;
+      r.depth = certified_decimal(t.lower, upper);
+    } else {  // the work ran out before the bracket left the resolution
+      r.status = Status::kFalsePositive;
+      r.depth = upper;
+      r.reason =
+          "the work budget ran out before the bracket came within the coordinates' resolution "
+          "or showed an overlap above it: the depth is its upper end";
+    }
   } else {
     r.status = Status::kUndecided;
     r.confirmed = false;
@@ -146,7 +161,10 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
                  " distance evaluations with the bracket still around the tolerance";
     }
   }
-  if (r.status == Status::kSeparated) r.at.reset();  // a finding's place only
+  if (r.status == Status::kSeparated) {  // touching: depth 0, as for convex pairs
+    r.depth = 0.0;
+    r.at.reset();  // a finding's place only
+  }
   r.margin = tolerance - r.depth;
   return r;
 }
@@ -329,7 +347,11 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
     if (!whole) deepest(-INFINITY);
     return v.vertex_at;
   });
-  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove) deepest(tolerance);
+  // Only a point deeper than the tolerance and the coordinates' resolution
+  // decides; and an overlap certified within the resolution is touching: a
+  // part thinner than the resolution is not resolved either.
+  if (!sought && t.outcome != ThicknessResult::Outcome::kAbove && !(t.upper <= t.resolution))
+    deepest(std::max(tolerance, t.resolution));
   r.time_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   why_not = a.closed() ? b.note() : a.note();
   return t;
@@ -365,11 +387,20 @@ class Refinement {
              std::vector<PairResult>& results, const RunOptions& options,
              const std::function<PairChecks(int, int)>& checks)
       : parts_(parts), pairs_(pairs), results_(results), options_(options), checks_(checks) {
-    for (size_t k = 0; k < pairs.size(); ++k)
-      if (needs_refinement(results[k], parts[pairs[k].first], parts[pairs[k].second]))
-        flagged_.push_back(k);
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
+      if (!results[k].reused && needs_refinement(results[k], a, b)) flagged_.push_back(k);
+      // A refined pair taken from an earlier report (--reuse) is final; when
+      // its parts' pieces decided it, they are decomposed all the same (from
+      // the cache), so the report's part fields are a full run's.
+      if (results[k].reused && results[k].depth_source != "hull" &&
+          (a.refinable() || b.refinable()) &&
+          (checks(pairs[k].first, pairs[k].second).clearance || a.mode == Pieces::kDecompose ||
+           b.mode == Pieces::kDecompose))
+        reused_pieces_.push_back(k);
+    }
   }
-  bool empty() const { return flagged_.empty(); }
+  bool empty() const { return flagged_.empty() && reused_pieces_.empty(); }
 
   // 0. Pairs refined before with the same parts, placements and settings are
   // taken from the cache (batch/refine_cache.h): none of the steps below runs
@@ -442,6 +473,7 @@ class Refinement {
     for (size_t n : solve_) used[pairs_[flagged_[n]].first] = used[pairs_[flagged_[n]].second] = 1;
     for (const auto& [k, hit] : hits_)
       if (hit.solved) used[pairs_[k].first] = used[pairs_[k].second] = 1;
+    for (size_t k : reused_pieces_) used[pairs_[k].first] = used[pairs_[k].second] = 1;
     std::vector<int> to_decompose;
     for (size_t p = 0; p < parts_.size(); ++p)
       if (used[p] && parts_[p].refinable() && !parts_[p].decomposition)
@@ -512,7 +544,8 @@ class Refinement {
   std::vector<PairResult>& results_;
   const RunOptions& options_;
   const std::function<PairChecks(int, int)>& checks_;
-  std::vector<size_t> flagged_;  ///< indices into pairs_ of the pairs to refine
+  std::vector<size_t> flagged_;        ///< indices into pairs_ of the pairs to refine
+  std::vector<size_t> reused_pieces_;  ///< reused refined pairs whose parts' pieces decided
   std::vector<std::string> keys_;
   std::vector<std::pair<size_t, StoredRefinement>> hits_;
   std::vector<std::shared_ptr<const SolidDistance>> solids_;  ///< per part, steps 1–2

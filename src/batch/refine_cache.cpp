@@ -30,7 +30,10 @@ namespace {
 //     bound min(sd, margin), a hole's feet move along the bisector of its
 //     normals farthest apart when it spreads less: other boxes, other brackets.
 // 14: a clearance is violated by touching pieces too; pairs carry `duplicate`.
-constexpr CacheKind kRefinementCache{"pdcheck-refinement-14", ".pdr"};
+// 15: a bracket with no overlap above the coordinates' resolution narrows
+//     until it shows one or comes within it (separated); a decided depth is
+//     the shortest decimal in its bracket; stale boxes are bounded again.
+constexpr CacheKind kRefinementCache{"pdcheck-refinement-15", ".pdr"};
 
 void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));

@@ -205,11 +205,12 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
   out.stages.broad_phase = lap(t);
 
   out.pairs.resize(pairs.size());
-  // --reuse: an unchanged pair keeps its old result (nonconvex parts' pairs are
-  // solved again: their refinement runs after the hull stage).
-  const std::vector<size_t> to_solve = reuse_results(
-      parts, pairs, out.part_hashes, out.settings_hash, run_options, out.pairs, pair_checks);
-  out.reused = static_cast<long>(pairs.size() - to_solve.size());
+  // --reuse: an unchanged pair keeps its old result (a nonconvex pair its
+  // refined one, which the refinement then leaves as it is).
+  if (run_options.reuse) out.reuse.emplace();
+  const std::vector<size_t> to_solve =
+      reuse_results(parts, pairs, out.part_hashes, out.settings_hash, run_options, out.pairs,
+                    pair_checks, out.reuse ? &*out.reuse : nullptr);
   solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);

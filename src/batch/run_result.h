@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "results/pair_result.h"
+#include "results/summary.h"
 #include "scene/parts.h"
 #include "scene/rules.h"
 
@@ -72,7 +73,7 @@ struct RunResult {
   std::vector<std::string> simulated;    ///< "interference", then "clearance", "motion" if asked
   std::vector<std::string> part_hashes;  ///< per part: content hash (batch/content_hashes.h)
   std::string scene_hash, settings_hash;
-  long reused = 0;                     ///< pairs taken from --reuse
+  std::optional<ReuseCounts> reuse;    ///< with --reuse: what was taken, why not the rest
   std::optional<ShardManifest> shard;  ///< set by a --shard run
   std::optional<RuleCoverage> rules;   ///< when the run has rules
   std::vector<PartLabels> labels;      ///< per part, when any part has labels or rules

@@ -112,29 +112,49 @@ std::function<PairChecks(int, int)> pair_checks_of(
   };
 }
 
+namespace {
+
+// Whether an old result was decided against the tolerance and clearance the
+// pair has now (both follow from the parts and the settings, but rules can set
+// a pair's own). Under tolerance auto a refined pair was decided again against
+// the band at its contact (batch/contact_band.h), which a decided result gives
+// back unchanged: it is noted again, and must come out as it was.
+bool same_pair_checks(const PairResult& prior, const PairChecks& pc) {
+  if (prior.clearance_min != pc.clearance) return false;
+  if (!pc.tolerance) return !prior.tolerance;
+  PairResult again = prior;
+  note_pair_tolerance(again, pc);
+  return again.tolerance == prior.tolerance && again.status == prior.status &&
+         again.tolerance_basis == prior.tolerance_basis;
+}
+
+}  // namespace
+
 std::vector<size_t> reuse_results(const std::vector<Part>& parts,
                                   const std::vector<std::pair<int, int>>& pairs,
                                   const std::vector<std::string>& part_hashes,
                                   const std::string& settings_hash, const RunOptions& options,
                                   std::vector<PairResult>& results,
-                                  const std::function<PairChecks(int, int)>& checks) {
+                                  const std::function<PairChecks(int, int)>& checks,
+                                  ReuseCounts* counts) {
   std::vector<size_t> to_solve;
   for (size_t k = 0; k < pairs.size(); ++k) {
     const auto [a, b] = pairs[k];
     std::optional<PairResult> prior;
-    if (options.reuse && !parts[a].refinable() && !parts[b].refinable())
+    ReuseMiss why = ReuseMiss::kSettings;
+    if (options.reuse)
       prior = prior_result(*options.reuse, settings_hash, a, parts[a].id, part_hashes[a], b,
-                           parts[b].id, part_hashes[b]);
-    if (prior && checks) {  // decided against another tolerance or clearance: solve again
-      const PairChecks pc = checks(a, b);
-      const std::optional<double> tolerance =
-          pc.tolerance ? std::optional<double>(pc.tolerance->value) : std::nullopt;
-      if (prior->tolerance != tolerance || prior->clearance_min != pc.clearance) prior.reset();
+                           parts[b].id, part_hashes[b], &why);
+    if (prior && checks && !same_pair_checks(*prior, checks(a, b))) {
+      prior.reset();  // decided against another tolerance or clearance: solve again
+      why = ReuseMiss::kPairChecks;
     }
     if (!prior) {
       to_solve.push_back(k);
+      if (counts && options.reuse) ++counts->solved[reuse_miss_key(why)];
       continue;
     }
+    if (counts) ++counts->reused;
     results[k] = *prior;
     if (options.on_pair) options.on_pair(results[k], parts);
   }

@@ -49,17 +49,19 @@ std::function<PairChecks(int, int)> pair_checks_of(
     const std::string& units = "mm");
 
 /// --reuse (options.reuse): each pair whose old result stands (batch/reuse.h;
-/// never a pair of a nonconvex part, which the refinement takes on; never one
-/// whose tolerance or clearance, e.g. from rules, is not the one it was decided
-/// against, as `checks` gives them now) gets it in
-/// `results` (one per pair), reported to options.on_pair. Returns the indices
-/// of the other pairs, in order: those still to solve.
+/// pairs of nonconvex parts too, whose old result is the refined one and is
+/// not refined again; never one whose tolerance or clearance, e.g. from rules,
+/// is not the one it was decided against, as `checks` gives them now) gets it
+/// in `results` (one per pair), reported to options.on_pair. Returns the
+/// indices of the other pairs, in order: those still to solve. `counts`, when
+/// given, gets how many were reused and why the others were not.
 std::vector<size_t> reuse_results(const std::vector<Part>& parts,
                                   const std::vector<std::pair<int, int>>& pairs,
                                   const std::vector<std::string>& part_hashes,
                                   const std::string& settings_hash, const RunOptions& options,
                                   std::vector<PairResult>& results,
-                                  const std::function<PairChecks(int, int)>& checks = {});
+                                  const std::function<PairChecks(int, int)>& checks = {},
+                                  ReuseCounts* counts = nullptr);
 
 /// Solves the pairs `to_solve` (indices into `pairs`) in worker processes into
 /// `results`, largest first (by the work of one support evaluation: no worker

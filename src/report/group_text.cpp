@@ -31,8 +31,9 @@ std::string group_lines(const ReportInput& in) {
            " findings (" + names + "): moving " + parts[g.move.part].id + " by " +
            short_number(g.move.length) + " " + units + " along " + vector_text(g.move.direction) +
            " clears " + std::to_string(g.move.covers.size()) + " of them; deepest " +
-           parts[deepest.a].id + " / " + parts[deepest.b].id + ", depth " +
-           short_number(deepest.depth) + " " + units + "\n";
+           parts[deepest.a].id + " / " + parts[deepest.b].id + ", " +
+           depth_meaning(deepest.depth_source) + " " + short_number(deepest.depth) + " " + units +
+           "\n";
   }
   if (several > kShownGroups)
     out += "pdcheck: … and " + std::to_string(several - kShownGroups) +

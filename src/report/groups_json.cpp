@@ -32,6 +32,7 @@ json groups_json(const FindingGroups& groups, const RunResult& run) {
                    {"parts", parts},
                    {"deepest", fingerprint_of(run, g.deepest)},
                    {"depth", run.pairs[g.deepest].depth},
+                   {"depth_source", run.pairs[g.deepest].depth_source},
                    {"move",
                     {{"part", run.parts[g.move.part].id},
                      {"direction", {d.x() + 0.0, d.y() + 0.0, d.z() + 0.0}},

@@ -273,6 +273,14 @@ Merged merge_shard_reports(const std::vector<ShardReport>& shards, const ReviewO
   Merged out;
   out.run = merged_run(first, parts, entries);
   RunResult& run = out.run;
+  for (const ShardReport& shard : shards) {  // shards run with --reuse: their counts, summed
+    const json& s = shard.doc.at("summary");
+    if (!s.contains("reuse")) continue;
+    if (!run.reuse) run.reuse.emplace();
+    run.reuse->reused += s["reuse"].at("reused").get<long>();
+    for (const auto& [why, n] : s["reuse"].at("solved").items())
+      run.reuse->solved[why] += n.get<long>();
+  }
   const std::optional<json> rules = merged_rules(shards);
   const Summary s = merged_summary(first, run, n, rules);
   const bool listed = first["shard"].value("listed", false);

@@ -26,6 +26,7 @@ Summary summarize(const RunResult& r) {
     s.out_of_scope = r.rules->out_of_scope;
     s.ignored = r.rules->ignored;
   }
+  s.reuse = r.reuse;
   return s;
 }
 
@@ -68,6 +69,7 @@ json summary_json(const Summary& s) {
             {"clearance_violation", s.clearance_violation},
             {"exit_code", s.exit_code()}};
   if (!s.clearance_checked) j.erase("clearance_violation");
+  if (s.reuse) j["reuse"] = {{"reused", s.reuse->reused}, {"solved", s.reuse->solved}};
   if (s.rules_given) {
     // After the culled pairs: the candidates the rules kept out of the check.
     json k;
@@ -194,6 +196,26 @@ json report_json(const ReportContext& ctx, const RunResult& r) {
   doc["parts"] = parts;
   doc["pairs"] = pairs;
   return doc;
+}
+
+std::string reuse_line(const ReuseCounts& c, const std::string& from) {
+  std::string t = "pdcheck: " + std::to_string(c.reused) + " pair(s) reused from " + from;
+  long solved = 0;
+  for (const auto& [why, n] : c.solved) solved += n;
+  if (!solved) return t;
+  t += "; " + std::to_string(solved) + " solved again:";
+  const char* sep = " ";
+  for (const auto& [why, n] : c.solved) {
+    const std::string words = why == "settings"       ? "under other settings"
+                              : why == "part_changed" ? "with a changed or new part"
+                              : why == "new_pair"     ? "not among its pairs"
+                              : why == "error"        ? "an error there"
+                              : why == "pair_checks"  ? "under another pair tolerance or clearance"
+                                                      : why;
+    t += sep + std::to_string(n) + " " + words;
+    sep = ", ";
+  }
+  return t;
 }
 
 std::string summary_line(const Summary& s, double seconds) {

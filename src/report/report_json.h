@@ -36,5 +36,8 @@ nlohmann::ordered_json summary_json(const Summary& s);
 nlohmann::ordered_json method_json(const SolverSettings& s);
 /// One line for stderr: "pdcheck: 12 parts, 7 pairs checked: 1 interference, ...".
 std::string summary_line(const Summary& s, double seconds);
+/// One line for stderr about --reuse FROM: "pdcheck: 4 pair(s) reused from r.json;
+/// 2 solved again: 1 with a changed or new part, 1 not among its pairs".
+std::string reuse_line(const ReuseCounts& c, const std::string& from);
 
 }  // namespace pd

@@ -55,8 +55,8 @@ std::string suppressions_to_write(const ReportInput& in, const std::string& toda
       const auto it = current->by_fingerprint.find(in.review.pairs[k].fingerprint);
       if (it != current->by_fingerprint.end()) keep = &current->entries[it->second];
     }
-    findings.push_back(
-        {in.run.parts[r.a].id, in.run.parts[r.b].id, status_name(r.status), r.depth, keep});
+    findings.push_back({in.run.parts[r.a].id, in.run.parts[r.b].id, status_name(r.status), r.depth,
+                        depth_meaning(r.depth_source), keep});
   }
   return suppressions_file_text(findings, in.context.units, today);
 }

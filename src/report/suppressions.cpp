@@ -103,7 +103,7 @@ std::string suppressions_file_text(const std::vector<FindingToSuppress>& finding
       e = {{"a", f.a},
            {"b", f.b},
            {"reason", ""},
-           {"comment", f.status + ", depth " + depth + " " + units + " on " + today +
+           {"comment", f.status + ", " + f.depth_name + " " + depth + " " + units + " on " + today +
                            ": say why it is accepted in \"reason\"; \"owner\", \"expires\" "
                            "(YYYY-MM-DD) and \"max_depth\" are optional"}};
     }

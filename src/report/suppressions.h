@@ -53,6 +53,7 @@ std::string utc_today();
 struct FindingToSuppress {
   std::string a, b, status;
   double depth = 0.0;
+  std::string depth_name = "depth";  ///< what the depth is (finding_text.h, depth_meaning)
   const Suppression* keep = nullptr;
 };
 std::string suppressions_file_text(const std::vector<FindingToSuppress>& findings,

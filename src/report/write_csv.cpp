@@ -12,9 +12,9 @@ namespace pd {
 
 namespace {
 
-const char* const kColumns[] = {"a",         "b",      "fingerprint",    "status",      "depth",
-                                "tolerance", "margin", "units",          "at_x",        "at_y",
-                                "at_z",      "group",  "baseline_state", "suppression", "message"};
+const char* const kColumns[] = {
+    "a",     "b",    "fingerprint", "status", "depth", "depth_source",   "tolerance",   "margin",
+    "units", "at_x", "at_y",        "at_z",   "group", "baseline_state", "suppression", "message"};
 
 std::string field(const std::string& s) {
   if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
@@ -53,8 +53,9 @@ std::string render_csv(const ReportInput& in) {
     const ExportFinding f = export_finding(in, k);
     const auto at = [&](int d) { return f.at ? number((*f.at)[d]) : std::string(); };
     add_row(out, {f.a, f.b, f.fingerprint, status_name(f.pair->status), number(f.depth),
-                  number(f.tolerance), number(f.margin), in.context.units, at(0), at(1), at(2),
-                  f.group, f.baseline_state, f.suppression, f.message});
+                  f.depth ? f.pair->depth_source : std::string(), number(f.tolerance),
+                  number(f.margin), in.context.units, at(0), at(1), at(2), f.group,
+                  f.baseline_state, f.suppression, f.message});
   }
   return out;
 }

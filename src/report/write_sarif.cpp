@@ -138,6 +138,8 @@ std::string render_sarif(const ReportInput& in) {
     if (r.duplicate) props["duplicate"] = true;
     if (r.status != Status::kError) {
       props["depth"] = r.depth;
+      props["depth_source"] = r.depth_source;  // which quantity the depth is
+      if (r.depth_bounds) props["depth_bounds"] = *r.depth_bounds;
       props["tolerance"] = r.tolerance ? json(*r.tolerance) : tolerance_json(in.context);
       props["units"] = in.context.units;
       props["direction"] = {r.direction.x() + 0.0, r.direction.y() + 0.0, r.direction.z() + 0.0};

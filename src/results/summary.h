@@ -1,10 +1,23 @@
 // A run's counts and the exit code they imply (docs/report-format.md, "summary").
 #pragma once
 
+#include <map>
+#include <optional>
+#include <string>
+
 #include "exit_code.h"
 #include "results/pair_result.h"
 
 namespace pd {
+
+/// --reuse (docs/scale-out.md): the candidate pairs taken from the earlier
+/// report, and for every other one why it was solved again.
+struct ReuseCounts {
+  long reused = 0;
+  /// Pairs solved again, by reason (batch/reuse.h, reuse_miss_key): "settings",
+  /// "part_changed", "new_pair", "error", "pair_checks".
+  std::map<std::string, long> solved;
+};
 
 /// Counts per status, parts that failed, and the exit code they imply.
 struct Summary {
@@ -18,6 +31,7 @@ struct Summary {
   /// those an ignore rule took out. Neither solved, neither culled nor clean.
   long out_of_scope = 0, ignored = 0;
   bool rules_given = false;
+  std::optional<ReuseCounts> reuse;  ///< a run with --reuse
 
   /// Counts one pair of this status.
   void add(Status s);

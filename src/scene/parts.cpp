@@ -107,6 +107,10 @@ struct MeshFile {
   // Pieces auto/decompose: the surface and its nonconvexity, once per file.
   std::shared_ptr<const Mesh> mesh;
   double concavity = 0.0;  ///< file units
+  /// File units: the rounding noise of its stored coordinates (coordinate_noise).
+  /// A concavity within it is the rounding of a convex part (a float32 sphere
+  /// far from the origin), which a hull solves exactly: such a part is convex.
+  double noise = 0.0;
   bool closed = false;
   double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
   int instances = 0;                                 ///< distinct placements of it
@@ -163,7 +167,10 @@ using KeptBudget = std::atomic<long>;
 // lasts (which decides only what is kept, never what is measured).
 StoredConvexity convexity_of(const PartSpec& spec, MeshFile& f, double concavity_tol,
                              const std::string& cache_dir, KeptBudget& budget) {
-  const double tol = concavity_tol / f.max_stretch, stop_above = concavity_tol / f.min_stretch;
+  // Measured until nonconvex for the most lenient instance, whose bar is its
+  // concavity tolerance or the coordinates' noise, whichever is larger.
+  const double tol = concavity_tol / f.max_stretch,
+               stop_above = std::max(concavity_tol / f.min_stretch, f.noise);
   const std::string key = convexity_key(f.hash, tol, stop_above);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
   const Mesh& m = *f.mesh;
@@ -177,16 +184,16 @@ StoredConvexity convexity_of(const PartSpec& spec, MeshFile& f, double concavity
     HullTriangles facets = f.facets;  // turned with the part
     for (Vec3& n : facets.normals) n = (to_scene.topLeftCorner<3, 3>() * n).normalized();
     const HullTriangles* known = facets.triangles.empty() ? nullptr : &facets;
+    const double placed_stop = std::max(concavity_tol, f.noise * f.max_stretch);
     const long n = m.triangles.cols();
     if (budget.fetch_sub(n) >= n) {
       auto solid = std::make_shared<const SolidDistance>(*placed);
-      c = screen_convexity(*placed, solid->mesh(), concavity_tol, concavity_tol, &hull_points,
-                           known);
+      c = screen_convexity(*placed, solid->mesh(), concavity_tol, placed_stop, &hull_points, known);
       f.placed = std::move(placed);
       f.solid = std::move(solid);
     } else {
       budget.fetch_add(n);
-      c = screen_convexity(*placed, concavity_tol, concavity_tol, &hull_points, known);
+      c = screen_convexity(*placed, concavity_tol, placed_stop, &hull_points, known);
     }
     c.concavity.value /= f.max_stretch;  // file units, as the cache keeps it
   } else {
@@ -272,9 +279,7 @@ bool cached_hulls(const PartSpec& spec, MeshFile& f, const PartsCache& cache) {
 // not concave by its rounding). Scene units, at the file's largest stretch.
 double auto_concavity_tol(const MeshFile& f, const AutoTolerance& a) {
   const double s = f.sag->concave * f.max_stretch;
-  double noise = 0.0;
-  for (const Points& p : f.reduced) noise = std::max(noise, coordinate_noise(p));
-  noise *= f.max_stretch;
+  const double noise = f.noise * f.max_stretch;
   return tol::kConcavityFraction * a.band(s, s, noise, noise);
 }
 
@@ -307,6 +312,8 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     if (store && !f.hash.empty())  // one entry per file: its hulls, and its sag under auto
       write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
                          {f.counts, f.reduced, f.warnings, f.sag});
+    f.noise = 0.0;  // the hull's points hold the largest coordinate and span the box
+    for (const Points& p : f.reduced) f.noise = std::max(f.noise, coordinate_noise(p));
     if (auto_tol) concavity_tol = auto_concavity_tol(f, *auto_tol);
     f.concavity_tol = concavity_tol;
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
@@ -434,7 +441,10 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
       part.sag = std::move(sag);
     }
     if (file && file->mesh) {
-      part.convex = file->concavity * stretch(placement(spec)) <= file->concavity_tol;
+      // Convex within the concavity tolerance, or within the rounding of the
+      // coordinates as stored (docs/numerics.md, kConcavityFraction).
+      const double k = stretch(placement(spec));
+      part.convex = file->concavity * k <= std::max(file->concavity_tol, file->noise * k);
       part.surface = surface_of(spec, *file, *part.convex);
     }
   } catch (const std::exception& e) {

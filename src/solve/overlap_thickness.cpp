@@ -8,6 +8,7 @@
 #include <queue>
 #include <vector>
 
+#include "geometry/coordinate_resolution.h"
 #include "solve/max_min_affine.h"
 
 namespace pd {
@@ -28,6 +29,12 @@ struct Cell {
   double upper;  ///< bound of φ over the cell
   int depth;
   std::shared_ptr<const Models> models;  ///< this cell's, else its nearest ancestor's; may be null
+  /// What settled a box (Search::enough) when `upper` was computed: its models
+  /// looked at the faces within a margin of twice that.
+  double level = 0.0;
+  /// The upper distance bounds at its centre, when it was probed.
+  bool probed = false;
+  double centre_a = INFINITY, centre_b = INFINITY;
 };
 
 struct ByUpper {
@@ -164,6 +171,9 @@ class Search {
   /// Below this a cell's bound needs no model of its own: it is below the
   /// best point found, or below half the threshold, where it is never split.
   double enough() const { return std::max(best, settled_); }
+  /// Once the bracket is below the threshold, the search narrows it against
+  /// the resolution: half of it is then what settles a box.
+  void settle_at(double h) { settled_ = h; }
 
   // The cell's inherited models' bound alone (no probe of its centre).
   double inherited_bound(const Cell& cell) const {
@@ -262,11 +272,23 @@ std::vector<Cell> split(const Cell& c) {
 
 }  // namespace
 
+double thickness_resolution(const SolidDistance& a, const SolidDistance& b) {
+  const auto step = [](const SolidDistance& s) {
+    const Eigen::AlignedBox3d& box = s.box();
+    return coordinate_step(
+        std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff()), true);
+  };
+  return tol::kContactSteps * (step(a) + step(b));
+}
+
 ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b, double threshold,
                                   double upper_hint, const ThicknessLimits& limits) {
   using Outcome = ThicknessResult::Outcome;
   ThicknessResult res;
+  res.resolution = thickness_resolution(a, b);
   const double cap = 0.5 * upper_hint;  // on h
+  // An interference's overlap is above the threshold and the resolution alike.
+  const double bar = std::max(threshold, res.resolution);
   if (!a.closed() || !b.closed()) {
     res.outcome = Outcome::kNoInside;
     res.upper = upper_hint;
@@ -327,11 +349,16 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
     const double lower = 2 * std::max(0.0, s.best), upper = 2 * std::max(0.0, std::min(top, cap));
     res.lower = lower;
     res.upper = std::max(lower, upper);
-    if (upper <= threshold) {
+    // Thin: touching to the coordinates' resolution, or an overlap found above
+    // it and within the threshold. Below the threshold with neither, the
+    // bracket narrows on against the resolution, so that a contact reads the
+    // same at every tolerance.
+    if (upper <= res.resolution || (upper <= threshold && lower > res.resolution)) {
       res.outcome = Outcome::kBelow;
       break;
     }
-    if (lower > threshold && decided_at < 0) decided_at = s.evaluations;
+    if (upper <= threshold) s.settle_at(0.5 * res.resolution);
+    if (lower > bar && decided_at < 0) decided_at = s.evaluations;
     // Decided thick: the bracket is tightened for the report, with at most as
     // much work again as deciding took (a union's lower bound may never come
     // within the ratio: its shared faces hide the distance from inside).
@@ -348,14 +375,31 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
                              res.cells >= limits.max_evaluations || open.empty();
     const bool out_of_time = res.cells % 64 == 0 && Clock::now() > deadline;
     if (out_of_work || out_of_time) {
-      res.outcome = lower > threshold ? Outcome::kAbove
-                    : out_of_time     ? Outcome::kTime
-                                      : Outcome::kBudget;
+      res.outcome = upper <= threshold ? Outcome::kBelow  // thin, not narrowed to the end
+                    : lower > bar      ? Outcome::kAbove
+                    : out_of_time      ? Outcome::kTime
+                                       : Outcome::kBudget;
       break;
     }
     const Cell cell = open.top();
     open.pop();
     if (!(cell.upper > s.best)) continue;
+    // A box bounded while far less settled a box (before the overlap was
+    // found, its models' margin a fraction of today's) is bounded again with
+    // models of today's margin before it is split: one model instead of up to
+    // eight probes and models.
+    if (cell.depth >= 2 && cell.level < 0.5 * s.enough() && cell.probed) {
+      Cell again = cell;
+      again.level = s.enough();
+      Probe p;
+      p.a.upper = cell.centre_a;
+      p.b.upper = cell.centre_b;
+      again.upper = std::min(cell.upper, s.bound(again, p, true));
+      if (again.upper < cell.upper) {
+        if (again.upper > s.best) open.push(again);
+        continue;
+      }
+    }
     double step = 0.0;
     for (const Cell& child : split(cell)) {
       step = 0.5 * (child.hi - child.lo).norm();
@@ -363,6 +407,8 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
       Cell next = child;
       // The parent's models hold over the child: where they settle it, its
       // centre is not probed (two distance queries saved, the common case).
+      next.level = s.enough();
+      next.probed = false;
       if (child.depth >= 2 && cell.models) {
         next.upper = std::min(cell.upper, s.inherited_bound(next));
         if (next.upper <= s.enough()) {
@@ -371,6 +417,9 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
         }
       }
       const Probe p = s.probe(0.5 * (child.lo + child.hi));
+      next.probed = true;
+      next.centre_a = p.a.upper;
+      next.centre_b = p.b.upper;
       next.upper = std::min(cell.upper, s.bound(next, p, child.depth >= 2));
       if (next.upper > s.best) open.push(next);
     }

@@ -31,7 +31,11 @@ struct ThicknessLimits {
 
 struct ThicknessResult {
   enum class Outcome {
-    kBelow,     ///< upper ≤ threshold: thin (or no) overlap
+    /// upper ≤ threshold: thin or no overlap. The search has then narrowed the
+    /// bracket until lower > resolution (an overlap found) or upper ≤
+    /// resolution (touching, as far as the coordinates tell), unless its
+    /// budget ran out first.
+    kBelow,
     kAbove,     ///< lower > threshold: a thick overlap
     kBudget,    ///< the evaluation budget ran out with the bracket straddling it
     kTime,      ///< the time box ran out likewise
@@ -44,11 +48,23 @@ struct ThicknessResult {
   /// Unit: from `at` towards a's nearest surface point; moving b that way
   /// thins the overlap there (a local escape, not a separating move).
   Vec3 direction = Vec3::UnitZ();
+  /// The thickness the parts' coordinates resolve (thickness_resolution): an
+  /// upper bound at or below it is touching.
+  double resolution = 0.0;
   long evaluations = 0;  ///< distance evaluations (each of one part at one point)
   long cells = 0;        ///< boxes bounded
 };
 
-/// The thickness T = 2h of a ∩ b, decided against `threshold` (the tolerance).
+/// The thickness below which an overlap of a and b cannot be told from the
+/// rounding of their coordinates: tol::kContactSteps float32 steps at each
+/// part's largest coordinate.
+double thickness_resolution(const SolidDistance& a, const SolidDistance& b);
+
+/// The thickness T = 2h of a ∩ b, decided against `threshold` (the tolerance)
+/// and against thickness_resolution(a, b): an interference has lower >
+/// max(threshold, resolution); otherwise the bracket narrows until it shows an
+/// overlap above the resolution or its upper end is at the resolution, so that
+/// whether a thin pair touches does not depend on the threshold.
 /// `upper_hint` is a known upper bound of T (the hulls' penetration depth: T is a
 /// lower bound of the parts' depth, which the hulls' bounds from above).
 ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b, double threshold,

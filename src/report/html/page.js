@@ -41,6 +41,11 @@
   const autoTol = data.tolerance === 'auto';
   function tolOf(f) { return autoTol ? f.tolerance : data.tolerance; }
   const tolText = autoTol ? 'auto (each pair its own band)' : len(data.tolerance);
+  // What a depth of this source is (report/finding_text.cpp, depth_meaning).
+  function depthMeaning(source) {
+    return { thickness: 'overlap thickness', vertex: 'deepest vertex depth', surface: 'deepest surface point depth',
+      pieces: 'piece depth', exact: 'overlap thickness of the exact solids' }[source] || 'depth';
+  }
 
   // ---- Summary ----
   function summary() {
@@ -93,7 +98,11 @@
       const st = el('td', { class: 'status ' + f.status }, f.status.replace(/_/g, ' '));
       if (f.suppressed) st.append(el('span', { class: 'tag', title: f.suppressed.reason || '' }, 'suppressed'));
       if (f.confirmed === false) st.append(el('span', { class: 'tag', title: 'rests on an upper bound' }, 'unconfirmed'));
-      tr.append(st, el('td', { class: 'num' }, f.status === 'error' ? '—' : num(f.depth)),
+      // What the depth is, beside it: the hulls' penetration depth, or another quantity.
+      const depth = el('td', { class: 'num', title: depthMeaning(f.depth_source) }, f.status === 'error' ? '—' : num(f.depth));
+      if (f.status !== 'error' && f.depth_source && f.depth_source !== 'hull')
+        depth.append(el('span', { class: 'tag' }, f.depth_source));
+      tr.append(st, depth,
         el('td', { class: 'num' }, f.status === 'error' ? '—' : num(f.margin)),
         el('td', { class: 'id', title: f.a }, f.a), el('td', { class: 'id', title: f.b }, f.b),
         el('td', {}, f.baseline_state || ''), el('td', { class: 'fp', title: f.fingerprint }, f.fingerprint.slice(0, 8) + '…'),
@@ -119,7 +128,7 @@
     const m = g.move || {};
     return g.members.length + (g.members.length === 1 ? ' finding' : ' findings') + ' · move ' + m.part + ' by ' +
       len(m.length) + ' along (' + (m.direction || []).map((x) => num(x, 3)).join(', ') + ') clears ' +
-      (m.covers || []).length + ' · deepest ' + num(g.depth) + ' ' + units;
+      (m.covers || []).length + ' · deepest ' + depthMeaning(g.depth_source) + ' ' + num(g.depth) + ' ' + units;
   }
   function buildGroups() {
     if (!groups.length) return;
@@ -252,7 +261,7 @@
       // The sentence is pdcheck's own (the one stderr, JUnit and SARIF give):
       // the page only adds the numbers beside it, never a claim of its own.
       if (f.text) add('finding', f.text);
-      add('depth', len(f.depth) + ' (tolerance ' + len(tolOf(f)) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
+      add(depthMeaning(f.depth_source), len(f.depth) + ' (tolerance ' + len(tolOf(f)) + ', margin ' + len(f.margin) + ')', COLORS.arrow);
       if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') + ')');
       add('depth source', f.depth_source || 'hull');
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
