@@ -2,17 +2,22 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Interface_Static.hxx>
 #include <STEPCAFControl_Controller.hxx>
 #include <STEPCAFControl_Writer.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
@@ -67,6 +72,17 @@ TopoDS_Shape make(const BrepSolid& s) {
       const TopoDS_Shape box = BRepPrimAPI_MakeBox(p[0], p[1], p[2]).Shape();
       TopExp_Explorer x(box, TopAbs_SHELL);
       return x.Current();
+    }
+    case BrepSolid::Kind::kWavySlab: {
+      TColgp_Array2OfPnt grid(1, 7, 1, 7);
+      for (int i = 1; i <= 7; ++i)
+        for (int j = 1; j <= 7; ++j) {
+          const double x = p[0] * (i - 1) / 6.0, y = p[0] * (j - 1) / 6.0;
+          grid(i, j) = gp_Pnt(x, y, 0.5 * std::sin(x) * std::cos(y));
+        }
+      const Handle(Geom_BSplineSurface) s = GeomAPI_PointsToBSplineSurface(grid).Surface();
+      const TopoDS_Face f = BRepBuilderAPI_MakeFace(s, 1e-7).Face();
+      return BRepPrimAPI_MakePrism(f, gp_Vec(0, 0, p[1])).Shape();
     }
     case BrepSolid::Kind::kTilted: {
       gp_Trsf a, b;

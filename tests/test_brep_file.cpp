@@ -95,9 +95,13 @@ TEST(BrepFile, EveryFaceLiesWithinTheSagBoundOfTheMesh) {
   std::vector<BrepCasePart> parts = mixed_parts();
   parts.push_back({"ball", {Kind::kSphere, {7.0}}, Vec3(0, 50, 0)});
   parts.push_back({"shaft", {Kind::kShaftWithGroove, {5.0, 20.0, 1.0, 8.0}}, Vec3(0, 80, 0)});
+  parts.push_back({"wave", {Kind::kWavySlab, {6.0, 3.0}}, Vec3(0, 120, 0)});
   pd_test::write_step_assembly(path, parts);
   for (double deflection : {0.2, 0.01}) {
     const pd::NodeMeshes m = pd::load_brep_meshes(path, deflection, true);
+    // A non-rational B-spline face and its extrusion sides carry bounds too.
+    EXPECT_EQ(m.tessellations.back().basis, pd::SagBasis::kBound);
+    EXPECT_GT(m.tessellations.back().sag, 0.0);
     const std::vector<pd::Points> samples = pd_test::leaf_face_samples(path, 24);
     ASSERT_EQ(samples.size(), m.meshes.size());
     for (size_t k = 0; k < m.meshes.size(); ++k) {
@@ -108,9 +112,15 @@ TEST(BrepFile, EveryFaceLiesWithinTheSagBoundOfTheMesh) {
         worst = std::max(worst, mesh.unsigned_distance(samples[k].col(s), nullptr, nullptr));
       EXPECT_LE(worst, m.tessellations[k].sag + 1e-9)
           << m.nodes[k] << " at deflection " << deflection;
-      // And the bound is of the error's size, not a loose cap.
-      if (worst > 0) {
-        EXPECT_LE(m.tessellations[k].sag, 6.0 * worst) << m.nodes[k];
+      // And the bound is of the error's size, not a loose cap; on the
+      // free-form part only at the coarse deflection. A triangle's bound also
+      // counts how unevenly the parameter runs along the surface (here along
+      // the straight boundary of the B-spline face, meshed as one segment,
+      // and the flat side extruded from it), which moves no point off the
+      // triangle: at the fine deflection that is what the bound reads.
+      const bool wave = m.nodes[k] == "wave";
+      if (worst > 0 && (!wave || deflection > 0.1)) {
+        EXPECT_LE(m.tessellations[k].sag, (wave ? 15.0 : 6.0) * worst) << m.nodes[k];
       }
     }
   }

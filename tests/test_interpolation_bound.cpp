@@ -6,6 +6,7 @@
 #include <random>
 
 #include "geometry/interpolation_bound.h"
+#include "geometry/types.h"
 
 namespace {
 

@@ -13,12 +13,12 @@ using namespace pd;
 namespace {
 
 // The regular tetrahedron's corners of the cube [−1, 1]³, then its centre.
-const std::vector<double> kTetrahedron = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1, 0, 0, 0};
+const std::vector<double> kTetrahedronPoints = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1, 0, 0, 0};
 
 }  // namespace
 
 TEST(QhullSession, ATetrahedronHasFourFacetsAndItsCornersAsVertices) {
-  QhullSession s(3, kTetrahedron, "qhull");
+  QhullSession s(3, kTetrahedronPoints, "qhull");
   ASSERT_TRUE(s.ok()) << s.error();
   EXPECT_TRUE(s.error().empty());
   EXPECT_EQ(s.qh()->num_facets, 4);
@@ -41,7 +41,7 @@ TEST(QhullSession, FlatInputIsRefusedWithQhullsMessage) {
 }
 
 TEST(QhullSession, SessionsAliveAtOnceKeepTheirOwnResults) {
-  QhullSession tetra(3, kTetrahedron, "qhull");
+  QhullSession tetra(3, kTetrahedronPoints, "qhull");
   std::vector<double> cube;
   for (int k = 0; k < 8; ++k)
     for (int bit : {1, 2, 4}) cube.push_back(k & bit ? 1.0 : -1.0);

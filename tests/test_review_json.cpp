@@ -10,7 +10,7 @@
 
 using namespace pd;
 using namespace pd::test;
-using json = nlohmann::ordered_json;
+using ojson = nlohmann::ordered_json;
 
 namespace {
 
@@ -38,20 +38,20 @@ struct Reviewed {
 TEST(ReviewJson, PairsCarryTheirStateSuppressionAndGroup) {
   Reviewed r;
   const Review& rv = r.f.review;
-  json lid = {{"a", "frame"}, {"group", "stale"}};
+  ojson lid = {{"a", "frame"}, {"group", "stale"}};
   add_pair_review(lid, rv.pairs[0]);
   EXPECT_EQ(lid["baseline_state"], "new");
   EXPECT_FALSE(lid.contains("suppressed"));
-  json pin = json::object();
+  ojson pin = ojson::object();
   add_pair_review(pin, rv.pairs[3]);  // lid / pin: suppressed, as its entry says
   EXPECT_EQ(pin["suppressed"],
-            json({{"reason", "press fit"}, {"owner", "kim"}, {"max_depth", 0.5}}));
-  json fp = json::object();
+            ojson({{"reason", "press fit"}, {"owner", "kim"}, {"max_depth", 0.5}}));
+  ojson fp = ojson::object();
   add_pair_review(fp, rv.pairs[1]);  // frame / pin: an interference before, a false positive now
   EXPECT_EQ(fp["baseline_state"], "updated");
   // A group is set when the review found one, and cleared when not (a shard's
   // own group does not survive a merge's review).
-  json clean = {{"group", "from a shard"}};
+  ojson clean = {{"group", "from a shard"}};
   add_pair_review(clean, rv.pairs[2]);
   EXPECT_FALSE(clean.contains("group"));
   EXPECT_FALSE(clean.contains("baseline_state"));  // separated: no finding, no state
@@ -59,8 +59,8 @@ TEST(ReviewJson, PairsCarryTheirStateSuppressionAndGroup) {
 
 TEST(ReviewJson, TheRunsCountsAndSections) {
   Reviewed r;
-  json doc = json::object();
-  json summary = {{"exit_code", 0}};
+  ojson doc = ojson::object();
+  ojson summary = {{"exit_code", 0}};
   add_run_review(doc, summary, r.f.review, r.f.options);
   EXPECT_EQ(summary["fail_on"], "interference");
   EXPECT_EQ(summary["failing"], 1);  // frame / lid; lid / pin is suppressed
@@ -78,7 +78,7 @@ TEST(ReviewJson, TheRunsCountsAndSections) {
   // Without either file: neither section, no suppressed count.
   ReportFixture plain = every_status();
   plain.input();
-  json doc2 = json::object(), summary2 = json::object();
+  ojson doc2 = ojson::object(), summary2 = ojson::object();
   add_run_review(doc2, summary2, plain.review, plain.options);
   EXPECT_TRUE(doc2.empty());
   EXPECT_FALSE(summary2.contains("suppressed"));

@@ -1,5 +1,6 @@
 #include "brep/face_sag.h"
 
+#include <Adaptor3d_Curve.hxx>
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
@@ -15,16 +16,10 @@
 #include <gp_Elips.hxx>
 #include <gp_Sphere.hxx>
 #include <gp_Torus.hxx>
-
-#include <Geom_BSplineCurve.hxx>
-#include <Geom_BSplineSurface.hxx>
-#include <Geom_BezierCurve.hxx>
-#include <Geom_BezierSurface.hxx>
-
 #include <optional>
 
+#include "brep/spline_net.h"
 #include "geometry/interpolation_bound.h"
-#include "geometry/spline_bound.h"
 #include "geometry/triangle_tree.h"
 
 namespace pd {
@@ -52,92 +47,33 @@ TrigRange trig_range(double a, double b) {
   return r;
 }
 
-// A non-rational B-spline or Bézier surface's control net, for the bounds of
-// geometry/spline_bound.h; nullopt for a rational one (weights: no such bound).
-std::optional<SplineSurface> spline_of(const BRepAdaptor_Surface& s) {
-  if (s.GetType() == GeomAbs_BezierSurface) {
-    const Handle(Geom_BezierSurface) b = s.Bezier();
-    if (b->IsURational() || b->IsVRational()) return std::nullopt;
-    SplineSurface out;
-    out.nu = b->NbUPoles();
-    out.nv = b->NbVPoles();
-    out.udegree = b->UDegree();
-    out.vdegree = b->VDegree();
-    for (int i = 1; i <= out.nu; ++i)
-      for (int j = 1; j <= out.nv; ++j) {
-        const gp_Pnt& q = b->Pole(i, j);
-        out.poles.emplace_back(q.X(), q.Y(), q.Z());
-      }
-    out.uknots.assign(size_t(out.udegree) + 1, 0.0);
-    out.uknots.resize(2 * (size_t(out.udegree) + 1), 1.0);
-    out.vknots.assign(size_t(out.vdegree) + 1, 0.0);
-    out.vknots.resize(2 * (size_t(out.vdegree) + 1), 1.0);
-    return out;
-  }
-  if (s.GetType() != GeomAbs_BSplineSurface) return std::nullopt;
-  Handle(Geom_BSplineSurface) b = s.BSpline();
-  if (b->IsURational() || b->IsVRational()) return std::nullopt;
-  if (b->IsUPeriodic() || b->IsVPeriodic()) {  // the same surface on a clamped knot vector
-    b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-    if (b->IsUPeriodic()) b->SetUNotPeriodic();
-    if (b->IsVPeriodic()) b->SetVNotPeriodic();
-  }
-  SplineSurface out;
-  out.nu = b->NbUPoles();
-  out.nv = b->NbVPoles();
-  out.udegree = b->UDegree();
-  out.vdegree = b->VDegree();
-  for (int i = 1; i <= out.nu; ++i)
-    for (int j = 1; j <= out.nv; ++j) {
-      const gp_Pnt& q = b->Pole(i, j);
-      out.poles.emplace_back(q.X(), q.Y(), q.Z());
-    }
-  const TColStd_Array1OfReal& ku = b->UKnotSequence();
-  for (int k = ku.Lower(); k <= ku.Upper(); ++k) out.uknots.push_back(ku(k));
-  const TColStd_Array1OfReal& kv = b->VKnotSequence();
-  for (int k = kv.Lower(); k <= kv.Upper(); ++k) out.vknots.push_back(kv(k));
-  if (out.uknots.size() != size_t(out.nu + out.udegree + 1) ||
-      out.vknots.size() != size_t(out.nv + out.vdegree + 1))
-    return std::nullopt;  // not the layout the bound reads: estimated instead
-  return out;
-}
-
-// The same for an edge's curve.
-std::optional<SplineCurve> spline_of(const BRepAdaptor_Curve& c) {
-  SplineCurve out;
-  if (c.GetType() == GeomAbs_BezierCurve) {
-    const Handle(Geom_BezierCurve) b = c.Bezier();
-    if (b->IsRational()) return std::nullopt;
-    out.degree = b->Degree();
-    for (int i = 1; i <= b->NbPoles(); ++i)
-      out.poles.emplace_back(b->Pole(i).X(), b->Pole(i).Y(), b->Pole(i).Z());
-    out.knots.assign(size_t(out.degree) + 1, 0.0);
-    out.knots.resize(2 * (size_t(out.degree) + 1), 1.0);
-    return out;
-  }
-  if (c.GetType() != GeomAbs_BSplineCurve) return std::nullopt;
-  Handle(Geom_BSplineCurve) b = c.BSpline();
-  if (b->IsRational()) return std::nullopt;
-  if (b->IsPeriodic()) {
-    b = Handle(Geom_BSplineCurve)::DownCast(b->Copy());
-    b->SetNotPeriodic();
-  }
-  out.degree = b->Degree();
-  for (int i = 1; i <= b->NbPoles(); ++i)
-    out.poles.emplace_back(b->Pole(i).X(), b->Pole(i).Y(), b->Pole(i).Z());
-  const TColStd_Array1OfReal& k = b->KnotSequence();
-  for (int i = k.Lower(); i <= k.Upper(); ++i) out.knots.push_back(k(i));
-  if (out.knots.size() != out.poles.size() + size_t(out.degree) + 1) return std::nullopt;
-  return out;
-}
+// The spline nets a face's bounds read: its surface's, or its extrusion's basis curve's.
+struct SplineNets {
+  std::optional<SurfaceNetBounds> surface;
+  std::optional<CurveNetBounds> basis;
+};
 
 // Bounds of the second derivatives of an analytic surface over the parameter
 // box [u0, u1] × [v0, v1] (OCCT's parametrisations, ElSLib), or of a
-// non-rational spline's (`spline`); false for any other surface.
-bool analytic_bounds(const BRepAdaptor_Surface& s, const std::optional<SplineSurface>& spline,
-                     double u0, double u1, double v0, double v1, SecondDerivativeBounds& m) {
-  if (spline) {
-    m = spline_second_derivative_bounds(*spline, u0, u1, v0, v1);
+// non-rational spline's (`nets`: the face's own, or an extrusion's basis
+// curve's), or of an extrusion C(u) + v·D (only S_uu = C''(u): lines, circles
+// and non-rational splines); false for any other surface.
+bool analytic_bounds(const BRepAdaptor_Surface& s, const SplineNets& nets, double u0, double u1,
+                     double v0, double v1, SecondDerivativeBounds& m) {
+  if (nets.surface) {
+    m = nets.surface->over(u0, u1, v0, v1);
+    return true;
+  }
+  if (s.GetType() == GeomAbs_SurfaceOfExtrusion) {
+    const Handle(Adaptor3d_Curve) c = s.BasisCurve();
+    m = {};
+    if (c->GetType() == GeomAbs_Line) return true;
+    if (c->GetType() == GeomAbs_Circle) {
+      m.uu = c->Circle().Radius();
+      return true;
+    }
+    if (!nets.basis) return false;
+    m.uu = nets.basis->over(u0, u1);
     return true;
   }
   switch (s.GetType()) {
@@ -171,6 +107,26 @@ bool analytic_bounds(const BRepAdaptor_Surface& s, const std::optional<SplineSur
     default:
       return false;
   }
+}
+
+// The nets of a face's spline surface or extrusion basis over the parameter
+// range its triangles cover.
+SplineNets spline_nets(const BRepAdaptor_Surface& s, const Poly_Triangulation& t) {
+  SplineNets out;
+  const bool spline = s.GetType() == GeomAbs_BSplineSurface || s.GetType() == GeomAbs_BezierSurface;
+  const bool extrusion = s.GetType() == GeomAbs_SurfaceOfExtrusion;
+  if (!spline && !extrusion) return out;
+  double u0 = HUGE_VAL, u1 = -HUGE_VAL, v0 = HUGE_VAL, v1 = -HUGE_VAL;
+  for (int k = 1; k <= t.NbNodes(); ++k) {
+    const gp_Pnt2d q = t.UVNode(k);
+    u0 = std::min(u0, q.X());
+    u1 = std::max(u1, q.X());
+    v0 = std::min(v0, q.Y());
+    v1 = std::max(v1, q.Y());
+  }
+  if (spline) out.surface = SurfaceNetBounds::of(s, u0, u1, v0, v1);
+  if (extrusion) out.basis = CurveNetBounds::of(*s.BasisCurve(), u0, u1);
+  return out;
 }
 
 // The distance between the surface and the flat triangle sampled at seven
@@ -208,7 +164,8 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
   const GeomAbs_CurveType type = c.GetType();
   if (type == GeomAbs_Line) return out;
   const bool params = poly->HasParameters();
-  const std::optional<SplineCurve> spline = spline_of(c);
+  std::optional<CurveNetBounds> spline;
+  if (params) spline = CurveNetBounds::of(c, poly->Parameter(1), poly->Parameter(poly->NbNodes()));
   const gp_Trsf to_world = loc.Transformation();
   for (int k = 1; k < poly->NbNodes(); ++k) {
     const gp_Pnt a = t.Node(poly->Node(k)).Transformed(to_world);
@@ -218,11 +175,13 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
       continue;
     }
     const double t0 = poly->Parameter(k), t1 = poly->Parameter(k + 1);
+    const Vec3 chord(b.X() - a.X(), b.Y() - a.Y(), b.Z() - a.Z());
     double dev;
-    if (spline) {
-      dev = segment_interpolation_bound(std::min(t0, t1), std::max(t0, t1),
-                                        spline_second_derivative_bound(*spline, std::min(t0, t1),
-                                                                       std::max(t0, t1)));
+    if (spline && std::isfinite(dev = segment_interpolation_bound(
+                                    std::min(t0, t1), std::max(t0, t1),
+                                    spline->across(std::min(t0, t1), std::max(t0, t1),
+                                                   t0 < t1 ? chord : Vec3(-chord))))) {
+      // bounded (a crease inside the segment leaves it unbounded: estimated below)
     } else if (type == GeomAbs_Circle) {
       const double r = c.Circle().Radius();
       dev = r * (1.0 - std::cos(0.5 * std::abs(t1 - t0)));
@@ -249,7 +208,7 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
   BRepAdaptor_Surface s(face);  // placed by the face's location, as the nodes are by `loc`
   const gp_Trsf to_world = loc.Transformation();
   const bool has_uv = t.HasUVNodes();
-  const std::optional<SplineSurface> spline = spline_of(s);
+  const SplineNets nets = has_uv ? spline_nets(s, t) : SplineNets{};
   double triangles = 0.0;
   for (int k = 1; k <= t.NbTriangles(); ++k) {
     int i[3];
@@ -283,9 +242,12 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
       const auto v = [](const gp_Pnt& q) { return Vec3(q.X(), q.Y(), q.Z()); };
       const Vec3 near = closest_on_triangle(c, v(p[0]), v(p[1]), v(p[2]));
       dev = std::max(0.0, sphere.Radius() - (near - c).norm());
-    } else if (analytic_bounds(s, spline, u0, u1, v0, v1, m)) {
-      dev = triangle_interpolation_bound(
-          {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()), Vec2(uv[2].X(), uv[2].Y())}, m);
+    } else if (analytic_bounds(s, nets, u0, u1, v0, v1, m) &&
+               std::isfinite(dev = triangle_interpolation_bound(
+                                 {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()),
+                                  Vec2(uv[2].X(), uv[2].Y())},
+                                 m))) {
+      // bounded (a spline's crease inside the triangle leaves it unbounded)
     } else {
       out.bound = false;
       dev = sampled_deviation(s, uv, p);

@@ -19,8 +19,10 @@ struct FaceSag {
 /// every triangle, the distance between the surface over its parameter
 /// triangle and the flat triangle (triangle_interpolation_bound with the
 /// surface's second derivatives: bounds for planes, cylinders, cones, spheres,
-/// tori and non-rational B-spline and Bézier surfaces (from their control nets,
-/// geometry/spline_bound.h); sampled at seven points of each triangle otherwise), plus
+/// tori, extrusions of lines, circles and splines, and non-rational B-spline
+/// and Bézier surfaces (from the control nets of small pieces,
+/// brep/spline_net.h); sampled at seven points of each triangle otherwise,
+/// and so across a spline's crease), plus
 /// the chord error of the face's boundary edges (the parts of the face outside
 /// every parameter triangle lie between an edge and its polygon), plus how far
 /// the triangle corners lie from the surface (rounding).

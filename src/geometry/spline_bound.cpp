@@ -1,6 +1,7 @@
 #include "geometry/spline_bound.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace pd {
 
@@ -28,28 +29,73 @@ bool meets(const std::vector<double>& k, size_t first, int degree, double a, dou
   return k[first] <= b && k[last] >= a;
 }
 
+// Whether a knot of multiplicity ≥ degree (where the spline is only C0: a
+// crease, its second derivative a Dirac mass) lies strictly inside (a, b).
+bool crease_inside(const std::vector<double>& k, int degree, double a, double b) {
+  if (degree < 1) return false;
+  for (size_t i = 0; i < k.size();) {
+    size_t j = i;
+    while (j < k.size() && k[j] == k[i]) ++j;
+    if (k[i] > a && k[i] < b && j - i >= size_t(degree)) return true;
+    i = j;
+  }
+  return false;
+}
+
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
 }  // namespace
 
-double spline_second_derivative_bound(const SplineCurve& c, double t0, double t1) {
-  if (c.degree < 2) return 0.0;
+CurveDerivativeNets spline_derivative_nets(const SplineCurve& c, double t0, double t1) {
+  CurveDerivativeNets out;
+  out.crease = crease_inside(c.knots, c.degree, t0, t1);
+  if (c.degree < 1) return out;
   const std::vector<Vec3> d1 = derivative(c.poles, c.knots, c.degree);
+  for (size_t i = 0; i < d1.size(); ++i)
+    if (meets(c.knots, i + 1, c.degree - 1, t0, t1)) out.first.push_back(d1[i]);
+  if (c.degree < 2) return out;
   // The first derivative's knots are the same vector shifted by one: its
   // control point i sits on N_{i+1,p−1}, so its own derivative uses k_{i+1}….
   const std::vector<double> shifted(c.knots.begin() + 1, c.knots.end());
   const std::vector<Vec3> d2 = derivative(d1, shifted, c.degree - 1);
-  double m = 0.0;
   for (size_t i = 0; i < d2.size(); ++i)
-    if (meets(c.knots, i + 2, c.degree - 2, t0, t1)) m = std::max(m, d2[i].norm());
+    if (meets(c.knots, i + 2, c.degree - 2, t0, t1)) out.second.push_back(d2[i]);
+  return out;
+}
+
+double chord_second_derivative(const CurveDerivativeNets& n, const Vec3& chord) {
+  if (n.crease) return kUnbounded;
+  double whole = 0.0, across = 0.0;
+  const double length = chord.norm();
+  const Vec3 d = length > 0 ? Vec3(chord / length) : Vec3::Zero();
+  bool forward = length > 0;
+  for (const Vec3& q : n.first) forward = forward && q.dot(d) > 0;
+  for (const Vec3& q : n.second) {
+    whole = std::max(whole, q.norm());
+    across = std::max(across, (q - q.dot(d) * d).norm());
+  }
+  return forward ? across : whole;
+}
+
+double spline_second_derivative_bound(const SplineCurve& c, double t0, double t1) {
+  const CurveDerivativeNets n = spline_derivative_nets(c, t0, t1);
+  if (n.crease) return kUnbounded;
+  double m = 0.0;
+  for (const Vec3& q : n.second) m = std::max(m, q.norm());
   return m;
 }
 
-SecondDerivativeBounds spline_second_derivative_bounds(const SplineSurface& s, double u0,
-                                                       double u1, double v0, double v1) {
+SecondDerivativeBounds spline_second_derivative_bounds(const SplineSurface& s, double u0, double u1,
+                                                       double v0, double v1) {
   using Row = std::vector<Vec3>;
   const auto pole = [&](int i, int j) { return s.poles[size_t(i) * size_t(s.nv) + size_t(j)]; };
   const std::vector<double> ushift(s.uknots.begin() + 1, s.uknots.end());
   const std::vector<double> vshift(s.vknots.begin() + 1, s.vknots.end());
   SecondDerivativeBounds m;
+  // A crease across u makes S_uu a Dirac mass; S_v stays continuous across
+  // it, so S_uv keeps its bound (likewise in v).
+  if (crease_inside(s.uknots, s.udegree, u0, u1)) m.uu = kUnbounded;
+  if (crease_inside(s.vknots, s.vdegree, v0, v1)) m.vv = kUnbounded;
   // Along u: per column j, the first and second differences in i.
   std::vector<Row> du(size_t(s.nv));  // du[j][i]: first u-derivative's control points
   for (int j = 0; j < s.nv; ++j) {

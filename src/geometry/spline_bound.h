@@ -11,7 +11,10 @@
 // derivative lies in the convex hull of its control points there: its length
 // is at most the longest of those whose basis function's support meets the
 // parameter range. A tensor-product surface takes the same differences along
-// each direction.
+// each direction. The second derivative may jump at a knot where the spline is
+// still C1 (the interpolation bound holds across it); at a knot of
+// multiplicity ≥ degree the spline is only C0, and a range straddling that
+// crease has no second-derivative bound: infinity.
 #pragma once
 
 #include <vector>
@@ -38,11 +41,32 @@ struct SplineSurface {
   int udegree = 0, vdegree = 0;
 };
 
-/// An upper bound of |C''(t)| over t in [t0, t1]. Pure.
+/// An upper bound of |C''(t)| over t in [t0, t1]; infinity when a crease
+/// (a C0 knot) lies strictly inside. Pure.
 double spline_second_derivative_bound(const SplineCurve& c, double t0, double t1);
 
-/// Upper bounds of |S_uu|, |S_uv| and |S_vv| over [u0, u1] × [v0, v1]. Pure.
-SecondDerivativeBounds spline_second_derivative_bounds(const SplineSurface& s, double u0,
-                                                       double u1, double v0, double v1);
+/// The control points of C' and C'' whose basis functions' supports meet
+/// [t0, t1] (C' and C'' lie in their convex hulls there), and whether a crease
+/// lies strictly inside. Pure.
+struct CurveDerivativeNets {
+  std::vector<Vec3> first, second;
+  bool crease = false;
+};
+CurveDerivativeNets spline_derivative_nets(const SplineCurve& c, double t0, double t1);
+
+/// The second-derivative length that bounds how far a curve piece lies from
+/// its chord (`chord` = C(t1) − C(t0)), for segment_interpolation_bound:
+/// the part of C'' across the chord when the piece runs forward along it
+/// (every C' control point has a positive component along the chord: no point
+/// projects beyond the chord's ends, so only the across part moves the curve
+/// off it); else |C''|. A parametrisation that speeds up and slows down along
+/// a straight line has a large |C''| and none of it across. Infinity across a
+/// crease. Pure.
+double chord_second_derivative(const CurveDerivativeNets& n, const Vec3& chord);
+
+/// Upper bounds of |S_uu|, |S_uv| and |S_vv| over [u0, u1] × [v0, v1];
+/// infinite |S_uu| (|S_vv|) when a u (v) crease lies strictly inside. Pure.
+SecondDerivativeBounds spline_second_derivative_bounds(const SplineSurface& s, double u0, double u1,
+                                                       double v0, double v1);
 
 }  // namespace pd
