@@ -34,7 +34,8 @@ Scored per mechanism on the cold runs' reports (the last run; the cached reports
   ratio      pdcheck asm-cold / freecad, whole processes
 FreeCAD's answers are scored too (right: a contact at distance 0 with no common volume above
 1e-6 mm^3, a clearance at a distance > 0, an interference with a common volume).
-Ends with Markdown tables (for docs/performance.md); OUT/results.json keeps every number. A run that
+Ends with Markdown tables (for docs/performance.md); OUT/results.json keeps every number,
+OUT/reports/NAME-MODE.json the last run's pdcheck reports, OUT/freecad-NAME.json FreeCAD's. A run that
 fails (pdcheck exit other than 0, 1 or 3, no report, or past --timeout) is reported and the
 benchmark goes on. Python 3 stdlib.
 """
@@ -270,6 +271,11 @@ def main():
                     reports[mode] = rep
             print("%s run %d: %s" % (name, r + 1, ", ".join("%s %.2f s" % (m, times[m][-1]) for m in MODES)),
                   file=sys.stderr)
+        os.makedirs(os.path.join(out, "reports"), exist_ok=True)
+        for mode, rep in reports.items():  # the last run's, for a closer look
+            if mode != "freecad":
+                with open(os.path.join(out, "reports", "%s-%s.json" % (name, mode)), "w") as f:
+                    json.dump(rep, f, indent=1)
         m = {k: med(v) for k, v in times.items()}
         row = {"name": name, "description": expected["description"], "parts": len(expected["parts"]),
                "faces": sum(p["faces"] for p in expected["parts"].values()),
