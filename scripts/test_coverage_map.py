@@ -54,6 +54,7 @@ STORY = {
     "report_outputs": "the binary's report against its schema and the fields CI keys on",
     "run_control": "the binary under signals, a closed reader and process limits",
     "settings_hashes": "every setting against every hash (content_hashes, refine_cache, report)",
+    "step_assemblies": "STEP assemblies through the binary: reading, meshing, the exact check",
 }
 
 

@@ -11,6 +11,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <Interface_Static.hxx>
+#include <STEPCAFControl_Controller.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
@@ -22,7 +23,6 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Pnt.hxx>
-
 #include <stdexcept>
 
 #include "brep/quiet_stdout.h"
@@ -88,6 +88,7 @@ gp_Trsf placement(const BrepCasePart& part) {
 }
 
 void write(const std::string& path, const Handle(TDocStd_Document) & doc, const std::string& unit) {
+  STEPCAFControl_Controller::Init();  // registers the statics set below
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   Interface_Static::SetCVal("write.step.unit", unit == "in" ? "INCH" : "MM");
   STEPCAFControl_Writer w;
@@ -126,9 +127,8 @@ void write_step_assembly(const std::string& path, const std::vector<BrepCasePart
 void write_step_part(const std::string& path, const BrepCasePart& part, const std::string& unit) {
   Handle(TDocStd_Document) doc = new_document();
   Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  const TDF_Label product =
-      tool->AddShape(BRepBuilderAPI_Transform(make(part.solid), placement(part), true).Shape(),
-                     false);
+  const TDF_Label product = tool->AddShape(
+      BRepBuilderAPI_Transform(make(part.solid), placement(part), true).Shape(), false);
   TDataStd_Name::Set(product, part.name.c_str());
   write(path, doc, unit);
   XCAFApp_Application::GetApplication()->Close(doc);

@@ -38,9 +38,9 @@ struct BrepSolid {
 struct BrepCasePart {
   std::string name;
   BrepSolid solid;
-  Vec3 at = Vec3::Zero();          ///< the instance's translation (mm)
-  Vec3 axis = Vec3::UnitZ();       ///< its rotation's axis
-  double angle = 0.0;              ///< and angle (radians)
+  Vec3 at = Vec3::Zero();     ///< the instance's translation (mm)
+  Vec3 axis = Vec3::UnitZ();  ///< its rotation's axis
+  double angle = 0.0;         ///< and angle (radians)
 };
 
 /// Writes `parts` as one STEP assembly (one product per part, named, placed by

@@ -1,7 +1,5 @@
 // brep/brep_file.h and the scene's B-rep meshes (scene/mesh_loader.h) on STEP
 // and .brep files made with Open CASCADE's primitives (tests/brep_cases.h).
-#include "brep/brep_file.h"
-
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,6 +7,7 @@
 #include <fstream>
 #include <map>
 
+#include "brep/brep_file.h"
 #include "brep_cases.h"
 #include "geometry/mesh_intersect.h"
 #include "scene/mesh_loader.h"
@@ -56,7 +55,8 @@ long odd_edges(const Mesh& m) {
 TEST(BrepFile, AnAssemblyIsOneMeshPerLeafNamedByItsInstance) {
   const pd::NodeMeshes m = pd::load_brep_meshes(assembly_file("mixed.step"), 0.05, true);
   ASSERT_EQ(m.meshes.size(), 6u);
-  EXPECT_EQ(m.nodes, (std::vector<std::string>{"pin", "plate", "o-ring", "clip", "cover", "tilted"}));
+  EXPECT_EQ(m.nodes,
+            (std::vector<std::string>{"pin", "plate", "o-ring", "clip", "cover", "tilted"}));
   ASSERT_EQ(m.leaf_errors.size(), 6u);
   for (size_t k = 0; k < 6; ++k) {
     if (m.nodes[k] == "cover") {  // a surface model: the part's error names it
@@ -118,8 +118,9 @@ TEST(BrepFile, EveryFaceLiesWithinTheSagBoundOfTheMesh) {
 
 TEST(BrepFile, AFileInInchesIsReadInMillimetres) {
   const std::string path = pd_test::process_dir() + "inch.step";
-  pd_test::write_step_assembly(path, {{"block", {Kind::kBox, {25.4, 50.8, 12.7}}, Vec3(254, 0, 0)},
-                                      {"peg", {Kind::kCylinder, {2.54, 25.4}}}},
+  pd_test::write_step_assembly(path,
+                               {{"block", {Kind::kBox, {25.4, 50.8, 12.7}}, Vec3(254, 0, 0)},
+                                {"peg", {Kind::kCylinder, {2.54, 25.4}}}},
                                "in");
   std::ifstream in(path);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -175,8 +176,8 @@ TEST(BrepFile, ADamagedFileIsAnErrorNamingItAndPrintsNothing) {
   std::fclose(f);
   EXPECT_NE(error.find(path), std::string::npos) << error;
   std::ifstream printed(out);
-  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(printed)), std::istreambuf_iterator<char>()),
-            "");
+  EXPECT_EQ(
+      std::string((std::istreambuf_iterator<char>(printed)), std::istreambuf_iterator<char>()), "");
 }
 
 }  // namespace

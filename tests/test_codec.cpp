@@ -280,6 +280,7 @@ TEST(ResultsCodec, TheReportEntryKeepsItsLayout) {
                                             "reason",
                                             "clearance",
                                             "motion",
+                                            "exact",
                                             "method",
                                             "fallback",
                                             "warnings",
@@ -319,10 +320,11 @@ TEST(ResultsCodec, APartSurvivesTheReportAndItsReaders) {
   EXPECT_EQ(listed(pd::part_from_report(j)), listed(p));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{
-                      "id", "source", "vertices", "hull_vertices", "pieces", "warnings",
-                      "resolution", "box", "content_hash", "convex", "sag", "decomposition_seconds",
-                      "cached", "decomposition_note", "tags", "group", "sets", "error"}));
+  EXPECT_EQ(keys,
+            (std::vector<std::string>{"id", "source", "vertices", "hull_vertices", "pieces",
+                                      "warnings", "resolution", "box", "content_hash", "convex",
+                                      "sag", "tessellation", "decomposition_seconds", "cached",
+                                      "decomposition_note", "tags", "group", "sets", "error"}));
   EXPECT_EQ(j["box"].size(), 2u);
   EXPECT_EQ(j["sag"].size(), 3u);
 }

@@ -1,11 +1,11 @@
 // geometry/interpolation_bound.h against dense samples of exact surfaces.
-#include "geometry/interpolation_bound.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 #include <random>
+
+#include "geometry/interpolation_bound.h"
 
 namespace {
 
@@ -55,38 +55,44 @@ TEST(InterpolationBound, HoldsAndIsTightOnAnalyticSurfaces) {
     };
     const Case cases[] = {
         {"cylinder", [&](double u, double v) { return Vec3(r * std::cos(u), r * std::sin(u), v); },
-         [&](double, double) { return SecondDerivativeBounds{r, 0, 0}; }},
+         [&](double, double) {
+           return SecondDerivativeBounds{r, 0, 0};
+         }},
         {"cone",
          [&](double u, double v) {
            const double rho = r + v * std::sin(alpha);
            return Vec3(rho * std::cos(u), rho * std::sin(u), v * std::cos(alpha));
          },
          [&](double v0, double v1) {
-           return SecondDerivativeBounds{std::max(std::abs(r + v0 * std::sin(alpha)),
-                                                  std::abs(r + v1 * std::sin(alpha))),
-                                         std::sin(alpha), 0};
+           return SecondDerivativeBounds{
+               std::max(std::abs(r + v0 * std::sin(alpha)), std::abs(r + v1 * std::sin(alpha))),
+               std::sin(alpha), 0};
          }},
         {"sphere",
          [&](double u, double v) {
            return Vec3(r * std::cos(v) * std::cos(u), r * std::cos(v) * std::sin(u),
                        r * std::sin(v));
          },
-         [&](double, double) { return SecondDerivativeBounds{r, r, r}; }},
+         [&](double, double) {
+           return SecondDerivativeBounds{r, r, r};
+         }},
         {"torus",
          [&](double u, double v) {
            const double rho = R + r * std::cos(v);
            return Vec3(rho * std::cos(u), rho * std::sin(u), r * std::sin(v));
          },
-         [&](double, double) { return SecondDerivativeBounds{R + r, r, r}; }},
+         [&](double, double) {
+           return SecondDerivativeBounds{R + r, r, r};
+         }},
     };
     for (const Case& c : cases)
       for (int k = 0; k < 40; ++k) {
         // Triangles as meshers make them: steps of a few degrees, lengths to scale.
-        const double du = 0.02 + 0.3 * unit(rng), dv = (0.02 + 0.3 * unit(rng)) *
-                                                      (std::string(c.name) == "cylinder" ||
-                                                               std::string(c.name) == "cone"
-                                                           ? r
-                                                           : 1.0);
+        const double du = 0.02 + 0.3 * unit(rng),
+                     dv =
+                         (0.02 + 0.3 * unit(rng)) *
+                         (std::string(c.name) == "cylinder" || std::string(c.name) == "cone" ? r
+                                                                                             : 1.0);
         const double u = 6.0 * unit(rng), v = unit(rng);
         const std::array<Vec2, 3> uv = {Vec2(u, v), Vec2(u + du, v + dv * unit(rng)),
                                         Vec2(u + du * unit(rng), v + dv)};

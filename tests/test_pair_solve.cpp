@@ -161,3 +161,34 @@ TEST(PairSolve, UnderAutoThePairsOwnBandDecides) {
   EXPECT_EQ(noted.tolerance, 0.05);
   EXPECT_EQ(noted.tolerance_basis, "narrower");
 }
+
+// A pair the refinement decides on the parts (a nonconvex part) needs no
+// sampling once the hulls' certified overlap is above the tolerance: the
+// bracket's upper end is its hull depth, an upper bound, with no Ipopt solve.
+// Below the tolerance, or for convex parts, the hull stage runs as before.
+TEST(PairSolve, APairTheRefinementDecidesStopsAtTheBracketAboveTheTolerance) {
+  // A ball of 400 vertices (sampling would be needed) deep in the cube.
+  Points ball(3, 400);
+  for (int k = 0; k < 400; ++k) {
+    const double z = 1.0 - (2.0 * k + 1.0) / 400.0, r = std::sqrt(1.0 - z * z);
+    const double t = 2.399963229728653 * k;  // golden angle
+    ball.col(k) = Vec3(0.7 + 0.25 * r * std::cos(t), 0.5 + 0.25 * r * std::sin(t), 0.5 + 0.25 * z);
+  }
+  Part nonconvex = inline_part("b", ball);
+  nonconvex.mode = Pieces::kAuto;
+  nonconvex.convex = false;
+  nonconvex.surface.emplace();  // refinable: decided on its surface after the hull stage
+  ASSERT_TRUE(nonconvex.refinable());
+  const PairResult early = solve(nonconvex, 0.05);
+  EXPECT_EQ(early.status, Status::kInterference);
+  EXPECT_EQ(early.stats.stop_reason, StopReason::kAboveTolerance);
+  EXPECT_EQ(early.stats.ipopt_calls, 0);
+  const PairResult full = solve(inline_part("b", ball), 0.05);
+  EXPECT_NE(full.stats.stop_reason, StopReason::kAboveTolerance);
+  EXPECT_GE(early.depth, full.depth - 1e-12);  // an upper bound of the hull depth
+  EXPECT_LE(early.depth, full.depth + 0.01);
+  // Against a tolerance the bracket does not clear, the hull stage decides as before.
+  const PairResult shallow = solve(nonconvex, 10.0);
+  EXPECT_EQ(shallow.status, Status::kFalsePositive);
+  EXPECT_NE(shallow.stats.stop_reason, StopReason::kAboveTolerance);
+}

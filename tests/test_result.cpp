@@ -12,10 +12,25 @@ TEST(Result, StopReasonNamesAreDistinct) {
   std::set<std::string> names;
   for (const StopReason r : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
                              StopReason::kEpaCertificate, StopReason::kCertificate,
-                             StopReason::kBayesian, StopReason::kCap})
+                             StopReason::kBayesian, StopReason::kCap,
+                             StopReason::kAboveTolerance})
     EXPECT_TRUE(names.insert(stop_reason_name(r)).second) << stop_reason_name(r);
   EXPECT_STREQ(stop_reason_name(StopReason::kProvenSeparated), "proven_separated");
   EXPECT_STREQ(stop_reason_name(StopReason::kCap), "cap");
+  EXPECT_STREQ(stop_reason_name(StopReason::kAboveTolerance), "above_tolerance");
+}
+
+TEST(Result, AboveToleranceIsNoLessConclusiveThanTheCertificateItRestsOn) {
+  SolveStats capped, above;
+  capped.stop_reason = StopReason::kCap;
+  above.stop_reason = StopReason::kAboveTolerance;
+  SolveStats sum = above;
+  sum += capped;
+  EXPECT_EQ(sum.stop_reason, StopReason::kCap);
+  SolveStats epa;
+  epa.stop_reason = StopReason::kEpaCertificate;
+  epa += above;
+  EXPECT_EQ(epa.stop_reason, StopReason::kAboveTolerance);
 }
 
 TEST(Result, StatsAddUpAndKeepTheLeastConclusiveReason) {

@@ -27,9 +27,8 @@ TEST(SceneJson, ErrorsNameFileAndJsonPath) {
   EXPECT_EQ(
       error_of(
           R"({"tolerance": 1, "parts": [{"id": "a", "vertices": [[0,0,0]], "transfrom": []}]})"),
-      "s.json: parts[0].transfrom: unknown key (allowed: group, id, mesh, motion, pieces, sag, "
-      "split, "
-      "tags, transform, units, vertices)");
+      "s.json: parts[0].transfrom: unknown key (allowed: deflection, group, id, mesh, motion, "
+      "pieces, sag, split, tags, transform, units, vertices)");
   EXPECT_EQ(error_of(R"({"tolerance": "1", "parts": []})"),
             "s.json: tolerance: expected a number > 0, \"auto\" or {\"auto\": true, ...}, got "
             "\"1\"");

@@ -120,8 +120,8 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
         e.reason = m.common_error;
       } else {
         std::snprintf(why, sizeof why,
-                      "the solids' thickness is within [%.6g, %.6g], which holds the tolerance",
-                      lo, hi);
+                      "the solids' thickness is within [%.6g, %.6g], which holds the tolerance", lo,
+                      hi);
         e.reason = why;
       }
       if (!std::isfinite(hi)) e.depth_bounds.reset();
@@ -173,8 +173,11 @@ json encode(const std::optional<double>& hull_distance, const std::optional<Exac
   json j = json::object();
   if (hull_distance) j["hull_distance"] = *hull_distance;
   if (!m) return j;
-  json x = {{"ok", m->ok},        {"error", m->error},   {"lower", m->lower},
-            {"seconds", m->seconds}, {"timed_out", m->common_timed_out},
+  json x = {{"ok", m->ok},
+            {"error", m->error},
+            {"lower", m->lower},
+            {"seconds", m->seconds},
+            {"timed_out", m->common_timed_out},
             {"common_error", m->common_error}};
   if (m->distance) x["distance"] = *m->distance;
   if (m->upper) x["upper"] = *m->upper;
@@ -203,9 +206,9 @@ double hull_gap(const Part& a, const Part& b, const SolverSettings& s, IpoptLoca
   double gap = INFINITY;
   for (const Hull& p : a.pieces)
     for (const Hull& q : b.pieces)
-      gap = std::min(gap, std::max(0.0, -signed_distance(p.vertices, q.vertices, s, ipopt,
-                                                         std::nullopt)
-                                              .value));
+      gap = std::min(
+          gap,
+          std::max(0.0, -signed_distance(p.vertices, q.vertices, s, ipopt, std::nullopt).value));
   return gap;
 }
 
@@ -260,8 +263,9 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
   if (to_measure.empty()) return;
 
   Progress progress(to_measure.size(), options.quiet, "exact solids");
-  const double seconds = options.pair_timeout > 0 ? std::min(options.pair_timeout, tol::kExactSeconds)
-                                                  : tol::kExactSeconds;
+  const double seconds = options.pair_timeout > 0
+                             ? std::min(options.pair_timeout, tol::kExactSeconds)
+                             : tol::kExactSeconds;
   std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
   auto task = [&](size_t k) {
     const auto [a, b] = pairs[k];
@@ -292,8 +296,9 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     try {
       if (!ok) throw std::runtime_error(payload);
       const json j = json::parse(payload);
-      const std::optional<double> gap =
-          j.contains("hull_distance") ? std::optional(j["hull_distance"].get<double>()) : std::nullopt;
+      const std::optional<double> gap = j.contains("hull_distance")
+                                            ? std::optional(j["hull_distance"].get<double>())
+                                            : std::nullopt;
       if (!j.contains("measure")) {
         r.exact = certify_by_bound(r, mesh[k], c, gap);
         if (!r.exact) throw std::runtime_error("the hulls' gap certified nothing");

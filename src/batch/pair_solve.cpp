@@ -11,7 +11,9 @@
 #include "batch/motion_sweep.h"
 #include "batch/piece_pairs.h"
 #include "geometry/depth_witness.h"
+#include "solve/epa.h"
 #include "solve/methods.h"
+#include "solve/objective.h"
 #include "solve/signed_distance.h"
 #include "tolerances.h"
 
@@ -37,10 +39,35 @@ struct WitnessInputs {
 };
 
 // The static check: the deepest piece pair counts (combine_piece_outcomes).
+// A piece pair whose GJK + EPA bracket is above `above` (world units) needs
+// nothing more of the hull stage when the refinement decides the pair on the
+// parts anyway: the bracket's upper end is its depth, an upper bound, as the
+// refinement uses the hull depth. nullopt: the bracket does not get that far.
+std::optional<DepthSolution> above_tolerance(const Points& a, const Points& b, double above) {
+  const PairProblem pr(a, b);
+  const DepthBracket br = epa_bracket(pr, tol::kEpaMaxIterations);
+  const double lower = pr.frame().length_to_world(br.lower);
+  const double upper = pr.frame().length_to_world(br.upper);
+  if (br.separated || !std::isfinite(upper) || !(lower > above)) return std::nullopt;
+  DepthSolution d;
+  d.depth = upper;
+  d.direction = br.direction;
+  d.stats.alpha_evaluations = pr.evaluations();
+  d.stats.stop_reason = StopReason::kAboveTolerance;
+  return d;
+}
+
+// `refined_above`: the tolerance of a pair the refinement decides when its hull
+// depth exceeds it (above_tolerance).
 WitnessInputs solve_static(const Part& a, const Part& b, const SolverSettings& s,
-                           IpoptLocalSolver& ipopt, PairResult& r) {
+                           IpoptLocalSolver& ipopt, PairResult& r,
+                           std::optional<double> refined_above = std::nullopt) {
   const PiecePairsResult c = solve_piece_pairs(piece_boxes(a), piece_boxes(b), [&](int i, int j) {
-    const DepthSolution d = solve_convex_pair(a.pieces[i].vertices, b.pieces[j].vertices, s, ipopt);
+    std::optional<DepthSolution> early;
+    if (refined_above && s.method == Method::kMlsl)
+      early = above_tolerance(a.pieces[i].vertices, b.pieces[j].vertices, *refined_above);
+    const DepthSolution d =
+        early ? *early : solve_convex_pair(a.pieces[i].vertices, b.pieces[j].vertices, s, ipopt);
     PieceOutcome o = make_outcome(i, j, d.depth, d.direction, d.distance);
     o.stats = d.stats;
     o.fallback = d.fallback;
@@ -167,7 +194,12 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
       r.stats += sw.stats;
       r.at = sw.at;  // the deepest step's (else the closest step's)
     } else {
-      witness = solve_static(a, b, s, ipopt, r);
+      // A pair with a nonconvex part is decided on the parts once its hulls
+      // overlap by more than the tolerance (batch/refine.h): the hull stage
+      // need not pin its depth down past that.
+      const bool refined = (a.refinable() || b.refinable()) && !checks.clearance;
+      witness = solve_static(a, b, s, ipopt, r,
+                             refined ? std::optional<double>(tolerance) : std::nullopt);
     }
     // Rounding scale of the pair: input coordinates were rounded at their absolute
     // magnitude, so the box's distance from the origin counts as well as its size.

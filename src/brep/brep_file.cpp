@@ -1,8 +1,8 @@
 #include "brep/brep_file.h"
 
-#include <Standard_Failure.hxx>
 #include <unistd.h>
 
+#include <Standard_Failure.hxx>
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -30,7 +30,7 @@ Tessellation combine(const Tessellation& a, const Tessellation& b) {
   out.deflection = std::max(a.deflection, b.deflection);
   out.sag = std::max(a.sag, b.sag);
   out.basis = a.basis == SagBasis::kBound && b.basis == SagBasis::kBound ? SagBasis::kBound
-                                                                        : SagBasis::kEstimate;
+                                                                         : SagBasis::kEstimate;
   out.faces = a.faces + b.faces;
   out.free_form = a.free_form + b.free_form;
   out.tolerance = std::max(a.tolerance, b.tolerance);
@@ -85,8 +85,8 @@ BrepFile read_brep_file(const std::string& path, double deflection) {
       if (l.error) l.error = "B-rep file " + path + ": " + *l.error;
     return out;
   } catch (const Standard_Failure& e) {
-    throw std::runtime_error("B-rep file " + path + ": Open CASCADE failed: " +
-                             e.GetMessageString());
+    throw std::runtime_error("B-rep file " + path +
+                             ": Open CASCADE failed: " + e.GetMessageString());
   } catch (const std::runtime_error& e) {
     throw std::runtime_error("B-rep file " + path + ": " + e.what());
   }

@@ -34,8 +34,8 @@ struct Tessellation {
   /// (file units): a bound or an estimate as `basis` says.
   double sag = 0.0;
   SagBasis basis = SagBasis::kBound;
-  long faces = 0;         ///< faces meshed
-  long free_form = 0;     ///< of them, faces whose sag is only estimated
+  long faces = 0;          ///< faces meshed
+  long free_form = 0;      ///< of them, faces whose sag is only estimated
   double tolerance = 0.0;  ///< the largest tolerance of the shape's faces, edges and vertices
 };
 

@@ -18,15 +18,15 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Solid.hxx>
-#include <gp_Ax3.hxx>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <gp_Ax3.hxx>
 #include <map>
 #include <memory>
 
 #include "brep/shape_tree.h"
+#include "tolerances.h"
 
 namespace pd {
 
@@ -54,7 +54,8 @@ class Deadline : public Message_ProgressIndicator {
 const ShapeTree& tree_of(const std::string& file) {
   static std::map<std::string, std::unique_ptr<ShapeTree>> trees;
   auto it = trees.find(file);
-  if (it == trees.end()) it = trees.emplace(file, std::make_unique<ShapeTree>(read_shape_tree(file))).first;
+  if (it == trees.end())
+    it = trees.emplace(file, std::make_unique<ShapeTree>(read_shape_tree(file))).first;
   return *it->second;
 }
 
@@ -69,9 +70,9 @@ struct PlacedSolids {
 gp_Trsf to_trsf(const Mat4& m, double to_mm) {
   gp_Trsf t;
   // SetValues accepts a rotation times a uniform scale, and throws otherwise.
-  t.SetValues(to_mm * m(0, 0), to_mm * m(0, 1), to_mm * m(0, 2), to_mm * m(0, 3),
-              to_mm * m(1, 0), to_mm * m(1, 1), to_mm * m(1, 2), to_mm * m(1, 3),
-              to_mm * m(2, 0), to_mm * m(2, 1), to_mm * m(2, 2), to_mm * m(2, 3));
+  t.SetValues(to_mm * m(0, 0), to_mm * m(0, 1), to_mm * m(0, 2), to_mm * m(0, 3), to_mm * m(1, 0),
+              to_mm * m(1, 1), to_mm * m(1, 2), to_mm * m(1, 3), to_mm * m(2, 0), to_mm * m(2, 1),
+              to_mm * m(2, 2), to_mm * m(2, 3));
   return t;
 }
 
@@ -103,7 +104,8 @@ PlacedSolids placed_solids(const ExactPart& p, double to_mm) {
       TopoDS_Compound shells;
       BRep_Builder builder;
       builder.MakeCompound(shells);
-      for (TopExp_Explorer sh(solid, TopAbs_SHELL); sh.More(); sh.Next()) builder.Add(shells, sh.Current());
+      for (TopExp_Explorer sh(solid, TopAbs_SHELL); sh.More(); sh.Next())
+        builder.Add(shells, sh.Current());
       out.shells.push_back(shells);
     }
   }
@@ -242,16 +244,15 @@ void common_bound(const PlacedSolids& a, const PlacedSolids& b, Clock::time_poin
 
 ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const ExactRequest& r) {
   const auto t0 = Clock::now();
-  const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(
-                                 std::chrono::duration<double>(r.seconds));
+  const auto deadline =
+      t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(r.seconds));
   ExactMeasure m;
   const double to_mm = r.mm_per_unit, to_scene = 1.0 / r.mm_per_unit;
   try {
     const PlacedSolids a = placed_solids(pa, to_mm), b = placed_solids(pb, to_mm);
     m.solids_a = int(a.solids.size());
     m.solids_b = int(b.solids.size());
-    if (a.solids.empty() || b.solids.empty())
-      throw std::runtime_error("a part has no solid");
+    if (a.solids.empty() || b.solids.empty()) throw std::runtime_error("a part has no solid");
     double d = INFINITY;
     for (size_t i = 0; i < a.solids.size(); ++i)
       for (size_t j = 0; j < b.solids.size(); ++j) {
@@ -264,8 +265,12 @@ ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const 
     m.distance = d * to_scene;
     if (d <= r.touch * to_mm) {
       std::vector<gp_Pnt> starts;
-      for (const Vec3& s : r.starts) starts.emplace_back(s.x() * to_mm, s.y() * to_mm, s.z() * to_mm);
-      lower_bound(a, b, starts, deadline, m);
+      for (const Vec3& s : r.starts)
+        starts.emplace_back(s.x() * to_mm, s.y() * to_mm, s.z() * to_mm);
+      const auto lower_deadline =
+          t0 + std::chrono::duration_cast<Clock::duration>(
+                   std::chrono::duration<double>(tol::kExactLowerShare * r.seconds));
+      lower_bound(a, b, starts, lower_deadline, m);
       m.lower *= to_scene;
       if (m.lower_at) m.lower_at = *m.lower_at * to_scene;
       if (r.common) {

@@ -43,17 +43,17 @@ struct ExactRequest {
 
 /// What was measured (scene units). A field without a value was not measured.
 struct ExactMeasure {
-  bool ok = false;     ///< the solids were read and measured
-  std::string error;   ///< why not, when !ok
+  bool ok = false;    ///< the solids were read and measured
+  std::string error;  ///< why not, when !ok
   int solids_a = 0, solids_b = 0;
   /// The smallest distance between a solid of A and one of B (0: they touch
   /// or overlap; Open CASCADE's solid distance, so containment counts).
   std::optional<double> distance;
-  double lower = 0.0;  ///< certified lower bound of the thickness T
+  double lower = 0.0;            ///< certified lower bound of the thickness T
   std::optional<Vec3> lower_at;  ///< the point that gave `lower`
   /// Upper bound of T from the common solid; 0 when it is empty.
   std::optional<double> upper;
-  std::optional<double> volume;  ///< of the common solid
+  std::optional<double> volume;   ///< of the common solid
   bool common_timed_out = false;  ///< the Boolean stopped at the time box
   std::string common_error;       ///< the Boolean failed (Open CASCADE's reason)
   double seconds = 0.0;

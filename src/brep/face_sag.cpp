@@ -6,16 +6,15 @@
 #include <Poly_PolygonOnTriangulation.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <gp_Circ.hxx>
 #include <gp_Cone.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Elips.hxx>
 #include <gp_Sphere.hxx>
 #include <gp_Torus.hxx>
-
-#include <algorithm>
-#include <array>
-#include <cmath>
 
 #include "geometry/interpolation_bound.h"
 #include "geometry/triangle_tree.h"
@@ -88,9 +87,13 @@ bool analytic_bounds(const BRepAdaptor_Surface& s, double v0, double v1,
 // an estimate for free-form faces.
 double sampled_deviation(const BRepAdaptor_Surface& s, const std::array<gp_Pnt2d, 3>& uv,
                          const std::array<gp_Pnt, 3>& p) {
-  static const double kWeights[7][3] = {{1 / 3., 1 / 3., 1 / 3.}, {.5, .5, 0}, {0, .5, .5},
-                                        {.5, 0, .5},              {2 / 3., 1 / 6., 1 / 6.},
-                                        {1 / 6., 2 / 3., 1 / 6.}, {1 / 6., 1 / 6., 2 / 3.}};
+  static const double kWeights[7][3] = {{1 / 3., 1 / 3., 1 / 3.},
+                                        {.5, .5, 0},
+                                        {0, .5, .5},
+                                        {.5, 0, .5},
+                                        {2 / 3., 1 / 6., 1 / 6.},
+                                        {1 / 6., 2 / 3., 1 / 6.},
+                                        {1 / 6., 1 / 6., 2 / 3.}};
   double worst = 0.0;
   for (const auto& w : kWeights) {
     const double u = w[0] * uv[0].X() + w[1] * uv[1].X() + w[2] * uv[2].X();
@@ -107,7 +110,8 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
   // Polygons of an edge are found by the triangulation they lie on.
   FaceSag out;
   if (BRep_Tool::Degenerated(e)) return out;
-  const Handle(Poly_PolygonOnTriangulation)& poly = BRep_Tool::PolygonOnTriangulation(e, handle, loc);
+  const Handle(Poly_PolygonOnTriangulation)& poly =
+      BRep_Tool::PolygonOnTriangulation(e, handle, loc);
   if (poly.IsNull() || poly->NbNodes() < 2) return out;
   BRepAdaptor_Curve c(e);
   const GeomAbs_CurveType type = c.GetType();
@@ -181,9 +185,8 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
       const Vec3 near = closest_on_triangle(c, v(p[0]), v(p[1]), v(p[2]));
       dev = std::max(0.0, sphere.Radius() - (near - c).norm());
     } else if (analytic_bounds(s, v0, v1, m)) {
-      dev = triangle_interpolation_bound({Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()),
-                                          Vec2(uv[2].X(), uv[2].Y())},
-                                         m);
+      dev = triangle_interpolation_bound(
+          {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()), Vec2(uv[2].X(), uv[2].Y())}, m);
     } else {
       out.bound = false;
       dev = sampled_deviation(s, uv, p);

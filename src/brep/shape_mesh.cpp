@@ -11,7 +11,6 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
-
 #include <algorithm>
 #include <map>
 #include <utility>

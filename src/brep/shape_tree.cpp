@@ -14,7 +14,6 @@
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
-
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
@@ -92,7 +91,8 @@ void read_step(const std::string& path, ShapeTree& out) {
     QuietStdout quiet;  // a reader's own prints, past the messenger
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw std::runtime_error("not a STEP file Open CASCADE can read");
-    if (!reader.Transfer(doc)) throw std::runtime_error("Open CASCADE could not transfer its shapes");
+    if (!reader.Transfer(doc))
+      throw std::runtime_error("Open CASCADE could not transfer its shapes");
   }
   out.unit = "mm";
   Walker w{out};

@@ -17,9 +17,8 @@
 // takes the best of a range of scalings of u.
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 namespace pd {
 

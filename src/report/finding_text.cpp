@@ -16,7 +16,38 @@ std::string depth_meaning(const std::string& depth_source) {
   if (depth_source == "vertex") return "deepest vertex depth";
   if (depth_source == "surface") return "deepest surface point depth";
   if (depth_source == "pieces") return "piece depth";
+  if (depth_source == "exact") return "overlap thickness of the exact solids";
   return "depth";
+}
+
+std::string exact_text(const ExactCheck& e, const std::string& depth_source,
+                       const std::string& units) {
+  const std::string how = exact_sentence(e);
+  // Measured on the solids, the bracket is of their overlap thickness; widened
+  // from the meshes, of what the mesh stage's depth is.
+  const std::string what = e.basis == ExactBasis::kSolids || depth_source == "exact"
+                               ? "overlap thickness"
+                               : depth_meaning(depth_source);
+  switch (e.verdict) {
+    case ExactVerdict::kSkipped:
+      return how;
+    case ExactVerdict::kTouching:
+      return "the exact solids touch (" + how + ")";
+    case ExactVerdict::kSeparated:
+      return "the exact solids are apart" +
+             (e.distance ? " by " + short_number(*e.distance) + " " + units : std::string()) +
+             " (" + how + ")";
+    case ExactVerdict::kInterference:
+    case ExactVerdict::kFalsePositive:
+      if (!e.depth_bounds) return how;
+      if (short_number((*e.depth_bounds)[0]) == short_number((*e.depth_bounds)[1]))
+        return "the exact solids' " + what + " is " + short_number((*e.depth_bounds)[0]) + " " +
+               units + " (" + how + ")";
+      return "the exact solids' " + what + " is between " + short_number((*e.depth_bounds)[0]) +
+             " and " + short_number((*e.depth_bounds)[1]) + " " + units + " (" + how + ")";
+    default:
+      return how;
+  }
 }
 
 std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
@@ -69,6 +100,8 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
     if (r.depth_source == "hull")
       t += "; moving " + b + " by the depth along " + dir + " separates the pair";
   }
+  // B-rep pairs: what the verdict rests on, on the exact solids.
+  if (r.exact) t += "; " + exact_text(*r.exact, r.depth_source, units);
   // Under tolerance auto, say what the band rests on: a false positive is
   // explained by the features whose tessellation can make that much overlap.
   if (r.tolerance && r.tolerance_source == "rule") {

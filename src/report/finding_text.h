@@ -26,6 +26,14 @@ std::string finding_text(const PairResult& r, const std::vector<Part>& parts,
 /// What a depth of this source is: "depth", "overlap thickness", "deepest vertex depth", …
 std::string depth_meaning(const std::string& depth_source);
 
+/// A B-rep pair's exact check in words: what the solids showed and what that
+/// rests on ("the exact solids touch (confirmed on the exact solids)", "the
+/// exact solids' overlap thickness is between 0.98 and 1.02 mm (certified by
+/// the deflection bound)", "not confirmed on the exact solids (why)").
+/// `depth_source` is the pair's: what a bracket widened from the meshes is of.
+std::string exact_text(const ExactCheck& e, const std::string& depth_source,
+                       const std::string& units);
+
 /// Shortest round-trip-ish decimal for messages (%.6g).
 std::string short_number(double x);
 

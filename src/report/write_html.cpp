@@ -168,7 +168,7 @@ json finding_row(const json& p, const json& report) {
   for (const char* key :
        {"depth", "direction", "margin", "depth_source", "pieces", "confirmed", "error",
         "baseline_state", "suppressed", "warnings", "hull_depth", "depth_bounds", "distance",
-        "clearance", "motion", "at", "reason", "group"})
+        "clearance", "motion", "at", "reason", "group", "exact"})
     if (p.contains(key)) row[key] = p[key];
   if (row.contains("motion")) row["motion"].erase("series");
   row["text"] = pair_sentence(p, report.value("units", ""), report.value("tolerance", 0.0));

@@ -18,7 +18,7 @@ namespace {
 StopReason stop_reason_from_name(const std::string& name) {
   for (StopReason r : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
                        StopReason::kEpaCertificate, StopReason::kCertificate, StopReason::kBayesian,
-                       StopReason::kCap})
+                       StopReason::kCap, StopReason::kAboveTolerance})
     if (name == stop_reason_name(r)) return r;
   throw std::invalid_argument("unknown stop_reason \"" + name + "\"");
 }
@@ -167,7 +167,7 @@ struct Reader {
                                         : status_from_name(j.get<std::string>());
   }
   void read(const json& j, StopReason& s) const {
-    s = encoding == Encoding::kComplete ? enum_from_value(j, StopReason::kCap, "stop reason")
+    s = encoding == Encoding::kComplete ? enum_from_value(j, StopReason::kAboveTolerance, "stop reason")
                                         : stop_reason_from_name(j.get<std::string>());
   }
   template <class T>
@@ -177,8 +177,9 @@ struct Reader {
     v = std::move(x);
   }
   void read(const json& j, ExactVerdict& v) const {
-    v = encoding == Encoding::kComplete ? enum_from_value(j, ExactVerdict::kTimeout, "exact verdict")
-                                        : exact_verdict_from_name(j.get<std::string>());
+    v = encoding == Encoding::kComplete
+            ? enum_from_value(j, ExactVerdict::kTimeout, "exact verdict")
+            : exact_verdict_from_name(j.get<std::string>());
   }
   void read(const json& j, ExactBasis& b) const {
     b = encoding == Encoding::kComplete ? enum_from_value(j, ExactBasis::kSolids, "exact basis")

@@ -15,7 +15,8 @@ namespace {
 // when it is a leaf itself (a part file).
 std::vector<std::string> leaf_paths(const BrepFile& f) {
   std::vector<std::vector<int>> children(f.nodes.size() + 1);  // [0]: the roots
-  for (size_t k = 0; k < f.nodes.size(); ++k) children[size_t(f.nodes[k].parent + 1)].push_back(int(k));
+  for (size_t k = 0; k < f.nodes.size(); ++k)
+    children[size_t(f.nodes[k].parent + 1)].push_back(int(k));
   std::vector<std::string> segment(f.nodes.size());
   for (const std::vector<int>& siblings : children) {
     std::vector<std::string> names;

@@ -131,8 +131,10 @@ LoadedMeshes decode(const std::string& payload) {
   out.warnings = r.strings();
   out.nodes = r.strings();
   const auto tessellations = r.get<std::uint64_t>();
-  if (tessellations > payload.size()) throw std::runtime_error("malformed answer from the loader process");
-  for (std::uint64_t k = 0; k < tessellations; ++k) out.tessellations.push_back(r.get<Tessellation>());
+  if (tessellations > payload.size())
+    throw std::runtime_error("malformed answer from the loader process");
+  for (std::uint64_t k = 0; k < tessellations; ++k)
+    out.tessellations.push_back(r.get<Tessellation>());
   out.leaf_errors = r.strings();
   return out;
 }

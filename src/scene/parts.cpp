@@ -22,6 +22,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/setup_warnings.h"
 #include "scene/split_nodes.h"
+#include "scene/units.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -295,8 +296,8 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
       store = true;
     }
     if (auto_tol && !f.sag) {
-      f.sag = file_sag(meshes, f.tessellation ? CoordinateStorage::kDouble
-                                              : CoordinateStorage::kFloat32);
+      f.sag = file_sag(meshes,
+                       f.tessellation ? CoordinateStorage::kDouble : CoordinateStorage::kFloat32);
       store = true;
     }
     if (store && !f.hash.empty())  // one entry per file: its hulls, and its sag under auto
@@ -529,8 +530,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       requested[it->second].push_back(f);
       continue;
     }
-    requests.push_back({*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes, false, false,
-                        deflection});
+    requests.push_back(
+        {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes, false, false, deflection});
     requested.push_back({f});
   }
   for (size_t u = 0; u < unique.size(); ++u)
@@ -577,6 +578,12 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     p.motion = scene.parts[k].motion;
     if (!p.error) {
       if (auto w = non_rigid_placement(scene.parts[k].transform)) p.warnings.push_back(*w);
+      const PartSpec& spec = scene.parts[k];
+      if (spec.units_key && spec.mesh && format_unit(*spec.mesh) == "mm" &&
+          is_brep_path(*spec.mesh) && *spec.units_key != "mm")
+        p.warnings.push_back(spec.where + ": units \"" + *spec.units_key +
+                             "\" does not apply: a STEP file declares its own unit, and is read "
+                             "in mm (converted to the scene's)");
       if (p.resolution && scene.tolerance)
         if (auto w = resolution_warning(*scene.tolerance, *p.resolution, units))
           p.warnings.push_back(*w);

@@ -63,10 +63,10 @@ struct PartSag {
 /// A B-rep part (STEP, .brep): where its exact solids are, how they were
 /// meshed and the error that mesh carries.
 struct PartBrep {
-  std::string file;              ///< the B-rep file
-  int leaf = -1;                 ///< its leaf instance in the file (BrepFile::leaves); -1: all
+  std::string file;                   ///< the B-rep file
+  int leaf = -1;                      ///< its leaf instance in the file (BrepFile::leaves); -1: all
   Mat4 placement = Mat4::Identity();  ///< file units → scene units (units, then transform)
-  Tessellation tessellation;     ///< in scene units (deflection, sag)
+  Tessellation tessellation;          ///< in scene units (deflection, sag)
 };
 
 struct Part {
@@ -86,7 +86,7 @@ struct Part {
   /// (float32 for mesh files, as assimp stores them; double inline), carried by
   /// its placement (geometry/coordinate_resolution.h). Set for usable parts.
   std::optional<double> resolution;
-  std::optional<PartSag> sag;  ///< under tolerance auto
+  std::optional<PartSag> sag;    ///< under tolerance auto
   std::optional<PartBrep> brep;  ///< B-rep parts
 
   /// Whether a pair flagged by the hull stage must look past this part's hull.

@@ -254,8 +254,8 @@ void walk_ascii(std::string_view bytes, size_t pos, std::vector<Element>& elemen
         if (p.count.size) {
           const double n = number(token(el, i), el, i);
           if (!(n >= 0 && n <= 1e15) || n != std::floor(n))
-            fail(where(el, i) + ": list " + ply_quoted(p.name) + " has length " + std::to_string(n) +
-                 ", not a whole number >= 0");
+            fail(where(el, i) + ": list " + ply_quoted(p.name) + " has length " +
+                 std::to_string(n) + ", not a whole number >= 0");
           items = std::uint64_t(n);
         }
         for (std::uint64_t j = 0; j < items; ++j) {
@@ -292,7 +292,8 @@ Element element_of(const std::vector<std::string_view>& w, std::string_view line
   if (w.size() != 3 ||
       std::from_chars(w[2].data(), w[2].data() + w[2].size(), n).ptr != w[2].data() + w[2].size())
     fail(at + "expected \"element <name> <count>\"");
-  if (n > std::uint64_t(INT32_MAX)) fail(at + "element count " + ply_quoted(w[2]) + " is too large");
+  if (n > std::uint64_t(INT32_MAX))
+    fail(at + "element count " + ply_quoted(w[2]) + " is too large");
   return {std::string(w[1]), n, {}, {std::string(line)}, 0, 0};
 }
 
@@ -385,8 +386,9 @@ void check_counts(const Header& h, size_t data_bytes) {
     for (const Property& p : e.properties)
       least += *h.format == Format::kAscii ? 2 : (p.count.size ? p.count.size : p.type.size);
     if (least > 0 && e.count > data_bytes / least)
-      fail("data cut short: element " + ply_quoted(e.name) + " declares " + std::to_string(e.count) +
-           " instances, the data holds at most " + std::to_string(data_bytes / least));
+      fail("data cut short: element " + ply_quoted(e.name) + " declares " +
+           std::to_string(e.count) + " instances, the data holds at most " +
+           std::to_string(data_bytes / least));
   }
 }
 

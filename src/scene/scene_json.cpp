@@ -201,8 +201,7 @@ PartSpec part(const Ctx& c, const json& j, const std::string& at, const std::str
     p.split_nodes = p.split_auto = true;
   }
   if (j.contains("deflection")) {
-    if (!brep)
-      c.fail(at + ".deflection", "applies to B-rep files (.step, .stp, .brep) only");
+    if (!brep) c.fail(at + ".deflection", "applies to B-rep files (.step, .stp, .brep) only");
     p.deflection = positive(c, j["deflection"], at + ".deflection");
   }
   return p;
@@ -399,10 +398,9 @@ void tolerance(const Ctx& c, const json& j, SceneSpec& s) {
 /// part's conversion needs (units, checks.motion) are read first.
 SceneSpec scene_fields(const Ctx& c, const json& doc, const std::optional<std::string>& units) {
   if (!doc.is_object()) c.fail("", "a scene is a JSON object");
-  only_keys(
-      c, doc, "",
-      {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks", "rules",
-       "deflection"});
+  only_keys(c, doc, "",
+            {"$schema", "version", "units", "tolerance", "parts", "pairs", "solver", "checks",
+             "rules", "deflection"});
   SceneSpec s;
   s.path = c.file;
   if (doc.contains("version") && (!doc["version"].is_number_integer() || doc["version"] != 1))

@@ -50,6 +50,8 @@ const char* stop_reason_name(StopReason r) {
       return "bayesian";
     case StopReason::kCap:
       return "cap";
+    case StopReason::kAboveTolerance:
+      return "above_tolerance";
   }
   return "none";
 }

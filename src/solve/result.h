@@ -19,7 +19,19 @@ enum class StopReason {
   kCertificate,      ///< the certificate proved the best direction global (sampling stopped early)
   kBayesian,         ///< the Bayesian rule stopped the sampling (then certified)
   kCap,              ///< a cap on iterations, local solves or time stopped the sampling
+  /// The GJK + EPA bracket's lower end is above the tolerance of a pair the
+  /// refinement decides on the parts (a nonconvex part): its upper end is the
+  /// depth, an upper bound, and no sampling was needed. Appended last: the
+  /// worker encoding stores the value.
+  kAboveTolerance,
 };
+
+/// How little a stop reason proves, for keeping the least conclusive of several
+/// solves: the enum's order, with kAboveTolerance (appended) beside the
+/// EPA certificate it rests on.
+constexpr int stop_rank(StopReason r) {
+  return r == StopReason::kAboveTolerance ? 3 : 2 * static_cast<int>(r);
+}
 
 /// The report's name of a stop reason ("proven_separated", …).
 const char* stop_reason_name(StopReason r);
@@ -36,7 +48,7 @@ struct SolveStats {
   StopReason stop_reason = StopReason::kNone;
 
   SolveStats& operator+=(const SolveStats& s) {
-    stop_reason = std::max(stop_reason, s.stop_reason);
+    if (stop_rank(s.stop_reason) > stop_rank(stop_reason)) stop_reason = s.stop_reason;
     alpha_evaluations += s.alpha_evaluations;
     local_solves += s.local_solves;
     distinct_optima += s.distinct_optima;

@@ -245,6 +245,14 @@
       if (f.direction) add('direction', '(' + f.direction.map((x) => num(x, 4)).join(', ') + ')');
       add('depth source', f.depth_source || 'hull');
       if (f.depth_bounds) add('depth bounds', f.depth_bounds.map(len).join(' … '));
+      if (f.exact) {
+        const e = f.exact;
+        const by = e.by === 'deflection-bound' ? 'certified by the deflection bound'
+          : e.by === 'exact-solids' ? 'confirmed on the exact solids' : e.reason || '';
+        add('exact solids', e.verdict.replace(/_/g, ' ') + (by ? ' (' + by + ')' : '') +
+          (e.depth_bounds ? ', thickness ' + e.depth_bounds.map(len).join(' … ') : '') +
+          (e.distance !== undefined ? ', distance ' + len(e.distance) : ''));
+      }
       if (f.at) add('at', '(' + f.at.map((x) => num(x, 7)).join(', ') + '), the marked point', COLORS.at);
       if (f.group && groupIndex.has(f.group)) {
         const g = groups[groupIndex.get(f.group)];

@@ -1,0 +1,156 @@
+// STEP assemblies through the binary: mechanisms made with Open CASCADE's
+// primitives and Booleans (tests/brep_cases.h), written as one assembly file,
+// as one file per part and as a part list, every nominal relation known by
+// construction; each finding says how it was made sure of.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "brep_cases.h"
+#include "cli_support.h"
+
+namespace {
+
+using nlohmann::json;
+using pd::Vec3;
+using pd::test::pdcheck;
+using pd_test::BrepCasePart;
+using Kind = pd_test::BrepSolid::Kind;
+
+// Fits of a 4 mm pin in a plate's 4 mm bore, a box sunk 1 mm into a plate, a
+// ball buried in a housing, an O-ring in its groove (the same torus cut from
+// the shaft: tangent faces), a two-solid clip on a block; each pair apart
+// from the others by 100 mm, the whole turned and far from the origin.
+std::vector<BrepCasePart> mechanisms() {
+  std::vector<BrepCasePart> p = {
+      {"plate-exact", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+      {"pin-exact", {Kind::kCylinder, {4, 15}}, Vec3(10, 10, -5)},
+      {"plate-press", {Kind::kPlateWithHole, {20, 20, 5, 4}}, Vec3(100, 0, 0)},
+      {"pin-press", {Kind::kCylinder, {4.0001, 15}}, Vec3(110, 10, -5)},
+      {"plate-clear", {Kind::kPlateWithHole, {20, 20, 5, 4}}, Vec3(200, 0, 0)},
+      {"pin-clear", {Kind::kCylinder, {3.9, 15}}, Vec3(210, 10, -5)},
+      {"plate-sunk", {Kind::kBox, {30, 30, 5}}, Vec3(300, 0, 0)},
+      {"box-sunk", {Kind::kBox, {5, 5, 5}}, Vec3(310, 10, 4)},
+      {"housing", {Kind::kBox, {30, 30, 30}}, Vec3(400, 0, 0)},
+      {"buried", {Kind::kSphere, {3}}, Vec3(415, 15, 15)},
+      {"shaft", {Kind::kShaftWithGroove, {5, 20, 1, 10}}, Vec3(500, 0, 0)},
+      {"o-ring", {Kind::kTorus, {5, 1}}, Vec3(500, 0, 10)},
+      {"block", {Kind::kBox, {10, 10, 10}}, Vec3(600, 0, 0)},
+      {"clip", {Kind::kTwoBoxes, {3, 2, 1}}, Vec3(601, 1, 10)},
+  };
+  for (BrepCasePart& x : p) {  // the whole assembly turned and moved, as a part of a larger one
+    const Eigen::AngleAxisd turn(0.3, Vec3(1, 2, 3).normalized());
+    x.at = turn * x.at + Vec3(2e4, -1e4, 3e4);
+    x.axis = Vec3(1, 2, 3).normalized();
+    x.angle = 0.3;
+  }
+  return p;
+}
+
+// The nominal relation of each pair (by part names), and the exact verdicts
+// it allows.
+const std::map<std::pair<std::string, std::string>, std::pair<std::string, std::string>> kExpected =
+    {
+        {{"plate-exact", "pin-exact"}, {"contact", "touching"}},
+        {{"plate-press", "pin-press"}, {"contact", "false_positive"}},
+        {{"plate-clear", "pin-clear"}, {"clearance", "separated"}},
+        {{"plate-sunk", "box-sunk"}, {"interference", "interference"}},
+        {{"housing", "buried"}, {"interference", "interference"}},
+        {{"shaft", "o-ring"}, {"contact", "touching"}},
+        {{"block", "clip"}, {"contact", "touching"}},
+};
+
+std::string name_of(const std::string& id) {
+  return id.substr(id.find('/') + 1);
+}
+
+// Every pair of the report right, each with a decisive exact verdict its
+// relation allows.
+void expect_relations(const json& report, const std::string& what) {
+  size_t seen = 0;
+  for (const json& p : report["pairs"]) {
+    const std::string a = name_of(p["a"]), b = name_of(p["b"]);
+    const auto it = kExpected.find({a, b});
+    ASSERT_NE(it, kExpected.end()) << what << ": unexpected pair " << a << " " << b;
+    ++seen;
+    const auto& [relation, verdict] = it->second;
+    const std::string status = p["status"];
+    if (relation == "interference")
+      EXPECT_EQ(status, "interference") << what << " " << a << " " << b;
+    else if (relation == "clearance")
+      EXPECT_EQ(status, "separated") << what << " " << a << " " << b;
+    else
+      EXPECT_TRUE(status == "separated" || status == "false_positive")
+          << what << " " << a << " " << b << ": " << status;
+    ASSERT_TRUE(p.contains("exact")) << what << " " << a << " " << b;
+    // A contact's exact answer may be certified as a false positive (within the
+    // tolerance) or found touching on the solids: both are right.
+    const std::string got = p["exact"]["verdict"];
+    if (relation == "contact")
+      EXPECT_TRUE(got == verdict || got == "false_positive" || got == "touching")
+          << what << " " << a << " " << b << ": " << p["exact"].dump();
+    else
+      EXPECT_EQ(got, verdict) << what << " " << a << " " << b << ": " << p["exact"].dump();
+    EXPECT_TRUE(p["exact"].contains("by")) << p["exact"].dump();
+  }
+  EXPECT_EQ(seen, kExpected.size()) << what;
+  EXPECT_EQ(report["summary"]["undecided"], 0) << what;
+}
+
+json run_json(const std::string& args, const std::string& stdin_text = "") {
+  const auto r = pdcheck(args + " --no-cache -q", stdin_text);
+  EXPECT_EQ(r.code, 1) << r.err;  // the interferences
+  EXPECT_EQ(r.err, "");
+  return json::parse(r.out);
+}
+
+TEST(StepAssemblies, OneAssemblyFileEveryRelationConfirmed) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(dir + "mechanisms.step", mechanisms());
+  std::ofstream(dir + "assembly.json")
+      << R"({"units": "mm", "tolerance": 0.01, "parts": [{"id": "m", "mesh": "mechanisms.step"}]})";
+  const json report = run_json(dir + "assembly.json");
+  ASSERT_EQ(report["parts"].size(), 14u);
+  for (const json& part : report["parts"]) {
+    EXPECT_EQ(part["tessellation"]["basis"], "bound") << part.dump();
+    EXPECT_DOUBLE_EQ(part["tessellation"]["deflection"].get<double>(), 0.0025);
+  }
+  expect_relations(report, "assembly");
+}
+
+TEST(StepAssemblies, OneFilePerPartAndAPartList) {
+  const std::string dir = pd_test::process_dir();
+  std::string list;
+  json scene = {{"units", "mm"}, {"tolerance", 0.01}, {"parts", json::array()}};
+  for (const BrepCasePart& p : mechanisms()) {
+    const std::string file = dir + p.name + ".step";
+    pd_test::write_step_part(file, p);
+    scene["parts"].push_back({{"id", "x/" + p.name}, {"mesh", p.name + ".step"}});
+    list += "x/" + p.name + "\t" + file + "\n";
+  }
+  std::ofstream(dir + "parts.json") << scene.dump();
+  expect_relations(run_json(dir + "parts.json"), "one file per part");
+  expect_relations(run_json("- --tolerance 0.01", list), "part list");
+}
+
+TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(dir + "surface.step",
+                               {{"body", {Kind::kBox, {10, 10, 10}}},
+                                {"label", {Kind::kBoxShell, {5, 5, 5}}, Vec3(2, 2, 8)}});
+  std::ofstream(dir + "surface.json")
+      << R"({"units": "mm", "tolerance": 0.05, "parts": [{"id": "s", "mesh": "surface.step"}]})";
+  const auto r = pdcheck(dir + "surface.json --no-cache -q");
+  EXPECT_EQ(r.code, 3) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_EQ(report["parts"].size(), 2u);
+  EXPECT_FALSE(report["parts"][0].contains("error") && !report["parts"][0]["error"].is_null());
+  EXPECT_NE(
+      report["parts"][1]["error"].get<std::string>().find("\"assembly/label\" holds no solid"),
+      std::string::npos)
+      << report["parts"][1].dump();
+}
+
+}  // namespace
