@@ -6,7 +6,8 @@ usage: test_step_assemblies.py PDCHECK SOURCE_DIR BINARY_DIR
 Generates the quick mechanism (pcb_board with short headers: exact, press and clearance fits, a
 sunk chip, a buried part, a multi-solid header) into BINARY_DIR/step_assemblies_quick and checks
 the files (STEP, one product per part file, the assembly's instances) and, from the assembly file
-and from the part files alike, pdcheck's answers as scripts/bench_step_assemblies.py scores them:
+(in a scene and in a part list) and from the part files alike, pdcheck's answers as
+scripts/bench_step_assemblies.py scores them:
 every nominal relation right, no undecided pair, every finding with a decisive exact verdict,
 none contradicting its relation, and exit 1 (the sunk and buried parts). Exits 77 (skipped) when
 freecadcmd is not installed.
@@ -63,8 +64,12 @@ def main():
         check(any(p["solids"] > 1 for p in exp["parts"].values()), "%s: a multi-solid part" % name)
         kinds = {e["expect"] for e in exp["pairs"]}
         check(kinds == {"contact", "clearance", "interference"}, "%s: every kind of relation" % name)
-        for scene in ("scene-assembly.json", "scene-parts.json"):
-            run = subprocess.run([pdcheck, os.path.join(d, scene), "--quiet", "--no-cache"], capture_output=True,
+        runs = {"scene-assembly.json": ([os.path.join(d, "scene-assembly.json")], None),
+                "scene-parts.json": ([os.path.join(d, "scene-parts.json")], None),
+                "a part list of the assembly file": (["-", "--tolerance", str(exp["tolerance"]), "--units", "mm"],
+                                                     os.path.join(d, "assembly.step") + "\n")}
+        for scene, (args, stdin) in runs.items():
+            run = subprocess.run([pdcheck] + args + ["--quiet", "--no-cache"], input=stdin or "", capture_output=True,
                                  text=True, timeout=120)
             if not check(run.returncode == 1, "%s %s: exit 1 (got %d: %s)" % (name, scene, run.returncode,
                                                                              run.stderr[-500:])):
