@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Counts the include edges between pdcheck's layers and fails on any that runs
-back up them (README, "Layout"; the build enforces the same order with one
+back up them (docs/contributing.md, "Layout"; the build enforces the same order with one
 library and one include view per layer, CMakeLists.txt).
 
     utilities -> geometry -> solve -> scene -> batch -> report -> apps/pdcheck

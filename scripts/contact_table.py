@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints docs/performance.md's contact table from pdbench's JSON (one run):
+"""Prints a contact table from pdbench's JSON (one run; docs/performance.md, "Contacts"):
 exact and the default mlsl side by side on the same pairs, wall and CPU time.
 
 usage: contact_table.py build/accuracy/corpus.json [mlsl method name]

@@ -1,17 +1,30 @@
 #!/usr/bin/env bash
 # Shared set-up for demo.sh and test.sh: install what is missing, configure, build (Release).
+#   scripts/setup.sh demo   the build's dependencies only, and only the pdcheck binary
+#   scripts/setup.sh        (test.sh) everything the tests need too, and every target
 # Idempotent: a second run installs nothing and rebuilds incrementally.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+MODE="${1:-all}"
+case "$MODE" in
+  demo | all) ;;
+  *) echo "usage: scripts/setup.sh [demo|all]" >&2; exit 2 ;;
+esac
 
+# What building pdcheck needs (and --html: three.js, inlined into the page).
 PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
-          nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev libgtest-dev
-          libcgal-dev libgmp-dev libmpfr-dev python3 python3-jsonschema libxml2-utils parallel
+          nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev
+          libcgal-dev libgmp-dev libmpfr-dev
           libocct-data-exchange-dev libtbb-dev  # STEP and .brep input (Open CASCADE 7.6)
-          libzip-dev unzip  # --bcf writes a zip (libzip); its tests list and unpack it
-          clang libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, symbolizer
-          libjs-three chromium  # the HTML report: three.js inlined in it; its browser test
-          openscad)  # scripts/make_cad_assemblies.py: CAD test assemblies (and their ctest)
+          libzip-dev  # --bcf writes a zip
+          libjs-three)  # --html inlines three.js
+if [ "$MODE" = all ]; then
+  PACKAGES+=(libgtest-dev python3 python3-jsonschema libxml2-utils parallel
+             unzip  # the --bcf tests list and unpack its zip
+             clang libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, symbolizer
+             chromium  # the HTML report's browser test
+             openscad)  # scripts/make_cad_assemblies.py: CAD test assemblies (and their ctest)
+fi
 # Callers may need more (accuracy_vs_time.sh: python3-matplotlib for its plot).
 read -r -a EXTRA <<<"${EXTRA_PACKAGES:-}"
 PACKAGES+=("${EXTRA[@]}")
@@ -28,5 +41,14 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 JOBS="$(nproc 2>/dev/null || echo 2)"
-cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$ROOT/build" -j "$JOBS" >&2
+if [ "$MODE" = demo ]; then
+  # A build directory configured before (by test.sh) keeps its tests; a new one
+  # is configured without them (GoogleTest is not installed for the demo).
+  TESTING=()
+  [ -f "$ROOT/build/CMakeCache.txt" ] || TESTING=(-DBUILD_TESTING=OFF)
+  cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release "${TESTING[@]}" >/dev/null
+  cmake --build "$ROOT/build" -j "$JOBS" --target pdcheck >&2
+else
+  cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
+  cmake --build "$ROOT/build" -j "$JOBS" >&2
+fi

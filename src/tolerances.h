@@ -250,8 +250,8 @@ inline constexpr long kThicknessBracketMinEvaluations = 5000;
 /// and bound min(sd, margin) (geometry/solid_distance.h, local_planes).
 /// Effort, not accuracy: a model is sound at any margin, and a bound at or
 /// above the margin is dropped. A smaller margin sees fewer faces, but its
-/// bound must come below it; on the CAD assemblies (docs/performance.md) 2
-/// took the least time per pair, 1.25, 1.5, 3 and 4 more.
+/// bound must come below it; on the CAD assemblies (bench_cad_assemblies.py)
+/// 2 took the least time per pair, 1.25, 1.5, 3 and 4 more.
 inline constexpr double kThicknessModelMargin = 2.0;
 /// Effort, not accuracy: the most points one surface is sampled at for the
 /// deepest-surface-point bound (geometry/solid_distance.h). Any sample is a
@@ -264,7 +264,7 @@ inline constexpr long kSurfaceDepthSamples = 2000;
 /// (batch/refine.cpp): only a point deeper than the tolerance decides there
 /// (a thin part pushed deep), and the deepest pieces come first, so a quarter
 /// of the budget; on the CAD assemblies it took a fifth of a refined pair's
-/// time at 2000 (docs/performance.md).
+/// time at 2000 (bench_cad_assemblies.py).
 inline constexpr long kSurfaceDepthGuardSamples = 500;
 
 /// Numerical care, not accuracy: how far taking a point or a box corner into
@@ -309,6 +309,10 @@ inline constexpr size_t kHtmlPageTriangles = 300000;
 /// The most parts of the rest of the assembly a finding's view shows around
 /// its pair (as faint boxes, the nearest first).
 inline constexpr size_t kHtmlContextParts = 24;
+/// The most inside tests one finding's drawn overlap of nonconvex parts may
+/// cost (report/html_geometry.h, solid_overlap_web_mesh): a few tenths of a
+/// second; past it the view shows the finding's `at` and its thickness alone.
+inline constexpr long kHtmlOverlapProbes = 200000;
 /// BCF viewpoints (--bcf, report/bcf_view.h): the perspective camera's vertical
 /// field of view (degrees; it just holds the finding's ball) and the aspect
 /// ratio it is written with (a 16:9 screen). Display only.
@@ -416,5 +420,11 @@ inline constexpr double kExactSeconds = 10.0;
 /// The share of that box the search for a point deep inside both solids (the
 /// thickness's lower bound) may use before the Boolean runs.
 inline constexpr double kExactLowerShare = 0.3;
+/// Effort: the exact distance of two solids measures face pairs nearest box
+/// first; past this many, faces whose boxes are apart bound the distance from
+/// below instead (a certified "apart by at least"). Face distances on free-form
+/// faces cost up to 0.1 s each: a 375-face frame against a 337-face part took
+/// 33 s to measure exactly at 70 mm apart.
+inline constexpr long kExactFacePairs = 16;
 
 }  // namespace pd::tol

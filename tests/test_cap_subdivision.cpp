@@ -1,6 +1,6 @@
 // The subdivided cap search (solve/cap_subdivision.h) against the one-hull
 // search of the same cap, and its stops at a resting contact. The suite keeps
-// its name (Contacts, where these tests began: docs/performance.md cites them).
+// its name (Contacts, where these tests began).
 #include <gtest/gtest.h>
 
 #include "corpus/contacts.h"

@@ -1,5 +1,7 @@
 // The pdcheck binary end to end: exit codes, messages, reports.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -27,6 +29,34 @@ std::map<std::string, std::string> statuses(const json& report) {
   for (const auto& p : report["pairs"])
     s[p["a"].get<std::string>() + ":" + p["b"].get<std::string>()] = p["status"];
   return s;
+}
+
+// pdcheck with `args` and its stdout on a pseudo-terminal, as a person runs it
+// (stderr to /dev/null); what the terminal got, its "\r\n" read as "\n".
+CliRun pdcheck_on_terminal(const std::vector<std::string>& args) {
+  CliRun r;
+  int master = -1;
+  const pid_t pid = forkpty(&master, nullptr, nullptr, nullptr);
+  if (pid < 0) return r;
+  if (pid == 0) {
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, STDERR_FILENO);
+    dup2(null, STDIN_FILENO);
+    std::vector<char*> argv = {const_cast<char*>(PDCHECK_BINARY)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  char buf[4096];
+  for (ssize_t n; (n = read(master, buf, sizeof buf)) > 0;)  // EIO once the child has gone
+    for (ssize_t k = 0; k < n; ++k)
+      if (buf[k] != '\r') r.out += buf[k];
+  close(master);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
 }
 
 json without_timings(json r) {
@@ -294,4 +324,31 @@ TEST(Cli, AMeshFileForASceneSuggestsAPartList) {
   const CliRun j = pdcheck(write_temp("bad.json", "{,}") + " -q");
   EXPECT_EQ(j.code, 2);
   EXPECT_EQ(j.err.find("mesh file"), std::string::npos) << j.err;
+}
+
+TEST(Cli, ATerminalGetsATableAndAPipeGetsJson) {
+  // Standard output on a terminal, no -o: the verdict and the findings.
+  const CliRun table = pdcheck_on_terminal({kDemo, "-q"});
+  EXPECT_EQ(table.code, 1) << table.out;
+  EXPECT_EQ(table.out.rfind("pdcheck: " + kDemo + ": FAIL: 1 interference (exit code 1)\n", 0), 0u)
+      << table.out;
+  EXPECT_NE(table.out.find("\ninterference "), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("cover / bracket"), std::string::npos) << table.out;
+  EXPECT_EQ(table.out.find('{'), std::string::npos) << table.out;
+  // Asked for, JSON on a terminal too; with -o nothing but the file.
+  const CliRun asked = pdcheck_on_terminal({kDemo, "-q", "--format", "json"});
+  EXPECT_EQ(asked.code, 1);
+  EXPECT_TRUE(json::parse(asked.out, nullptr, false).is_object()) << asked.out;
+  const std::string file = pd::test::process_dir() + "terminal.json";
+  const CliRun to_file = pdcheck_on_terminal({kDemo, "-q", "-o", file});
+  EXPECT_EQ(to_file.code, 1);
+  EXPECT_EQ(to_file.out, "");
+  EXPECT_TRUE(json::parse(pd::test::read_text(file), nullptr, false).is_object());
+  // Through a pipe (as every other test here reads it): the JSON report.
+  const CliRun piped = pdcheck(kDemo + " -q");
+  EXPECT_EQ(piped.code, 1);
+  EXPECT_TRUE(json::parse(piped.out, nullptr, false).is_object()) << piped.out;
+  // And the table through a pipe when asked for.
+  const CliRun piped_table = pdcheck(kDemo + " -q --format table");
+  EXPECT_EQ(piped_table.out, table.out);
 }

@@ -64,6 +64,61 @@ TEST(HtmlCli, BaselineStatesAndAMovedReport) {
   EXPECT_FALSE(moved["findings"][0]["view"]["a"].is_null());
 }
 
+TEST(HtmlCli, AReportMovedAwayFromItsSceneSaysWhereItLookedAndTakesScene) {
+  // The run in demo/ names its scene "scene.json"; the report then travels
+  // alone (a CI artefact) to ci/.
+  const std::string dir = scratch_dir("html_cli_scene");
+  const ShellRun run = shell(dir,
+                             "cp -r \"$(dirname \"$DEMO\")\" demo && cd demo && \"$PDCHECK\" "
+                             "scene.json -q -o r.json; cd .. && mkdir ci && mv demo/r.json ci/");
+  EXPECT_EQ(run.code, 0) << run.err;
+  const ShellRun lost = shell(dir, "\"$PDCHECK\" html ci/r.json -o p.html");
+  EXPECT_EQ(lost.code, 2) << lost.err;
+  EXPECT_NE(lost.err.find("ci/r.json: its scene \"scene.json\" is not found: not at scene.json "
+                          "(as the run named it, from the working directory) nor ci/scene.json "
+                          "(beside the report); say where it is with --scene PATH"),
+            std::string::npos)
+      << lost.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/p.html"));
+  const ShellRun found =
+      shell(dir, "\"$PDCHECK\" html ci/r.json --scene demo/scene.json -o p.html");
+  EXPECT_EQ(found.code, 0) << found.err;
+  const nlohmann::json data = page_data(pd_test::read_text(dir + "/p.html"));
+  ASSERT_TRUE(data.is_object());
+  EXPECT_TRUE(data["notes"].empty()) << data["notes"];
+  for (const auto& f : data["findings"]) EXPECT_FALSE(f["view"]["a"].is_null());
+  const ShellRun wrong = shell(dir, "\"$PDCHECK\" html ci/r.json --scene nowhere.json -o p.html");
+  EXPECT_EQ(wrong.code, 2);
+  EXPECT_NE(wrong.err.find("--scene nowhere.json: no such file (the scene of ci/r.json)"),
+            std::string::npos)
+      << wrong.err;
+}
+
+TEST(HtmlCli, AMergeOfMovedShardsTakesScene) {
+  // Shards run in demo/, their reports gathered in ci/ (CI artefacts): the
+  // merge's --html finds the scene where --scene says.
+  const std::string dir = scratch_dir("html_cli_merge_scene");
+  const ShellRun shards =
+      shell(dir,
+            "cp -r \"$(dirname \"$DEMO\")\" demo && cd demo && for k in 1 2; do \"$PDCHECK\" "
+            "scene.json -q --shard $k/2 -o shard-$k.json; done; cd .. && mkdir ci && mv "
+            "demo/shard-*.json ci/");
+  EXPECT_EQ(shards.code, 0) << shards.err;
+  const ShellRun lost =
+      shell(dir, "\"$PDCHECK\" merge ci/shard-1.json ci/shard-2.json -q -o r.json --html p.html");
+  EXPECT_EQ(lost.code, 2) << lost.err;
+  EXPECT_NE(lost.err.find("say where it is with --scene PATH"), std::string::npos) << lost.err;
+  const ShellRun found =
+      shell(dir,
+            "\"$PDCHECK\" merge ci/shard-1.json ci/shard-2.json -q -o r.json --html p.html "
+            "--scene demo/scene.json");
+  EXPECT_EQ(found.code, 1) << found.err;  // the demo's interference
+  const nlohmann::json data = page_data(pd_test::read_text(dir + "/p.html"));
+  ASSERT_TRUE(data.is_object());
+  EXPECT_EQ(data["verdict"]["state"], "fail");
+  for (const auto& f : data["findings"]) EXPECT_FALSE(f["view"]["a"].is_null());
+}
+
 TEST(HtmlCli, UnreadablePartsAreNamedAndTheRestIsShown) {
   const std::string dir = scratch_dir("html_cli_missing");
   const ShellRun r = shell(dir,

@@ -8,6 +8,7 @@
 
 #include "box_points.h"
 #include "geometry/hull.h"
+#include "l_prism.h"
 #include "page_data.h"
 #include "report/html_geometry.h"
 
@@ -88,6 +89,61 @@ TEST(HtmlGeometry, ApartOrTouchingHullsHaveNoOverlap) {
       overlap_web_mesh(box_points({0, 0, 0}, {1, 1, 1}), box_points({2, 0, 0}, {3, 1, 1}), 100));
   EXPECT_FALSE(
       overlap_web_mesh(box_points({0, 0, 0}, {1, 1, 1}), box_points({1, 0, 0}, {2, 1, 1}), 100));
+}
+
+TEST(HtmlGeometry, ANonconvexPairsOverlapIsThePartsOwnNotTheirHulls) {
+  // An L-shaped tray (arms 4 wide) and a block over its inner corner: they
+  // share two strips along the arms; their hulls share most of the block.
+  const Part tray = pd_test::l_prism_part("tray");
+  Part block;
+  block.id = "block";
+  block.pieces.push_back(convex_hull(box_points({2, 2, -1}, {30, 30, 11})));
+  block.box = {Vec3(2, 2, -1), Vec3(30, 30, 11)};
+  block.convex = true;
+  const SolidOverlap solid = solid_overlap_web_mesh(tray, block, 4000);
+  ASSERT_TRUE(solid.mesh) << solid.note;
+  EXPECT_LE(solid.mesh->triangles.size(), 4000u);
+  const Points p = mesh_points(*solid.mesh);
+  const double step = 1.0;  // a triangle is kept by its centre: its corners may be a split away
+  for (long k = 0; k < p.cols(); ++k) {
+    const Vec3 x = p.col(k);
+    EXPECT_TRUE(x.x() > 2 - step && x.x() < 30 + step && x.y() > 2 - step && x.y() < 30 + step &&
+                x.z() > -step && x.z() < 10 + step && (x.x() < 4 + step || x.y() < 4 + step))
+        << "a point of the drawn overlap outside the tray and the block: " << x.transpose();
+  }
+  // It reaches along both arms to the block's far faces, and holds the tray's
+  // top face where the block covers it (two large triangles whose corners all
+  // lie outside the block).
+  EXPECT_NEAR(p.row(0).maxCoeff(), 30, step);
+  EXPECT_NEAR(p.row(1).maxCoeff(), 30, step);
+  bool on_the_top_face = false;
+  for (long k = 0; k < p.cols(); ++k)
+    on_the_top_face |= std::fabs(p(2, k) - 10) < 1e-3 && p(0, k) > 10 && p(0, k) < 25 &&
+                       p(1, k) > 2 && p(1, k) < 4;
+  EXPECT_TRUE(on_the_top_face);
+  // The hulls' overlap (what the page drew before) fills the corner between the arms.
+  const auto hulls = overlap_web_mesh(part_vertices(tray), part_vertices(block), 4000);
+  ASSERT_TRUE(hulls);
+  const Points q = mesh_points(*hulls);
+  bool between_the_arms = false;
+  for (long k = 0; k < q.cols(); ++k) between_the_arms |= q(0, k) > 10 && q(1, k) > 10;
+  EXPECT_TRUE(between_the_arms);
+
+  // Apart: nothing, and nothing to explain. An open mesh: nothing, and why.
+  Part far = block;
+  far.pieces = {convex_hull(box_points({100, 0, 0}, {110, 10, 10}))};
+  far.box = {Vec3(100, 0, 0), Vec3(110, 10, 10)};
+  const SolidOverlap apart = solid_overlap_web_mesh(tray, far, 4000);
+  EXPECT_FALSE(apart.mesh);
+  EXPECT_EQ(apart.note, "");
+  Part open = pd_test::l_prism_part("open tray");
+  auto cut = std::make_shared<Mesh>(*open.surface->mesh);
+  cut->triangles.conservativeResize(3, cut->triangles.cols() - 1);
+  open.surface->mesh = cut;
+  const SolidOverlap not_solid = solid_overlap_web_mesh(open, block, 4000);
+  EXPECT_FALSE(not_solid.mesh);
+  EXPECT_NE(not_solid.note.find("\"open tray\" is an open mesh"), std::string::npos)
+      << not_solid.note;
 }
 
 TEST(HtmlGeometry, LargeHullsAreCappedAndSayHow) {

@@ -12,8 +12,7 @@ TEST(Result, StopReasonNamesAreDistinct) {
   std::set<std::string> names;
   for (const StopReason r : {StopReason::kNone, StopReason::kProvenSeparated, StopReason::kContact,
                              StopReason::kEpaCertificate, StopReason::kCertificate,
-                             StopReason::kBayesian, StopReason::kCap,
-                             StopReason::kAboveTolerance})
+                             StopReason::kBayesian, StopReason::kCap, StopReason::kAboveTolerance})
     EXPECT_TRUE(names.insert(stop_reason_name(r)).second) << stop_reason_name(r);
   EXPECT_STREQ(stop_reason_name(StopReason::kProvenSeparated), "proven_separated");
   EXPECT_STREQ(stop_reason_name(StopReason::kCap), "cap");

@@ -11,6 +11,7 @@
 
 #include "box_points.h"
 #include "geometry/hull.h"
+#include "l_prism.h"
 #include "page_data.h"
 #include "report/write_html.h"
 #include "shell_run.h"
@@ -79,6 +80,63 @@ TEST(HtmlPage, IdsCannotBreakOutOfThePageAndNothingIsFetched) {
     std::memcpy(&q, raw.data() + 2 * k, 2);
     const double x = overlap["o"][k % 3].get<double>() + q * overlap["s"].get<double>();
     EXPECT_TRUE(std::fabs(x - 1) < 1e-4 || std::fabs(x - 2) < 1e-4) << x;
+  }
+}
+
+TEST(HtmlPage, ANonconvexPairShowsItsOwnOverlapAndTheVerdictBanner) {
+  // A thickness-decided pair of an L-shaped tray and a block over its inner
+  // corner, in a run that could not check everything (exit 3).
+  nlohmann::ordered_json report = {{"scene", "tray.json"},
+                                   {"units", "mm"},
+                                   {"tolerance", 0.1},
+                                   {"summary",
+                                    {{"parts", 3},
+                                     {"part_errors", 1},
+                                     {"candidate_pairs", 1},
+                                     {"separated", 0},
+                                     {"false_positive", 0},
+                                     {"interference", 1},
+                                     {"error", 0},
+                                     {"undecided", 0},
+                                     {"unchecked", 2},
+                                     {"exit_code", 3}}},
+                                   {"pairs",
+                                    {{{"a", "tray"},
+                                      {"b", "block"},
+                                      {"fingerprint", "00ff"},
+                                      {"status", "interference"},
+                                      {"depth", 2.0},
+                                      {"depth_source", "thickness"},
+                                      {"depth_bounds", {2.0, 2.0}},
+                                      {"direction", {0, 1, 0}},
+                                      {"at", {16, 3, 5}},
+                                      {"margin", -1.9}}}}};
+  Part block;
+  block.id = "block";
+  block.pieces.push_back(convex_hull(box_points({2, 2, -1}, {30, 30, 11})));
+  block.box = {Vec3(2, 2, -1), Vec3(30, 30, 11)};
+  block.convex = true;
+  const nlohmann::json data =
+      page_data(render_html(report, {pd_test::l_prism_part("tray"), block}));
+  ASSERT_TRUE(data.is_object());
+  EXPECT_EQ(data["verdict"]["state"], "incomplete");
+  EXPECT_EQ(data["verdict"]["headline"].get<std::string>().rfind("INCOMPLETE", 0), 0u)
+      << data["verdict"];
+  const auto& view = data["findings"][0]["view"];
+  EXPECT_EQ(view["overlap_of"], "the parts themselves") << view;
+  ASSERT_TRUE(view["overlap"].is_number()) << view;
+  const auto& overlap = data["meshes"][view["overlap"].get<int>()];
+  const std::string raw = unbase64(overlap["v"]);
+  ASSERT_GT(raw.size(), 0u);
+  for (size_t k = 0; k + 2 < raw.size() / 2; k += 3) {  // each vertex, decoded as the page does
+    double x[3];
+    for (int d = 0; d < 3; ++d) {
+      std::int16_t q;
+      std::memcpy(&q, raw.data() + 2 * (k + d), 2);
+      x[d] = overlap["o"][d].get<double>() + q * overlap["s"].get<double>();
+    }
+    EXPECT_TRUE(x[0] < 5 || x[1] < 5)
+        << "a drawn overlap point between the tray's arms: " << x[0] << ", " << x[1];
   }
 }
 

@@ -14,11 +14,12 @@ TEST(Writer, TheFormatsAndTheirRenderers) {
     EXPECT_EQ(find_report_format(f.name), &f);
     EXPECT_NE(std::string(f.description), "");
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"json", "jsonl", "junit", "sarif"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"json", "jsonl", "junit", "sarif", "table"}));
   EXPECT_EQ(find_report_format("json")->render, &render_json);
   EXPECT_EQ(find_report_format("jsonl")->render, &render_jsonl);
   EXPECT_EQ(find_report_format("junit")->render, &render_junit);
   EXPECT_EQ(find_report_format("sarif")->render, &render_sarif);
+  EXPECT_EQ(find_report_format("table")->render, &render_table);
   // The exports are files of their own options, not formats of the report.
   EXPECT_EQ(find_report_format("csv"), nullptr);
   EXPECT_EQ(find_report_format("bcf"), nullptr);

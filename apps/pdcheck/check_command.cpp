@@ -1,5 +1,7 @@
 #include "check_command.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -63,8 +65,10 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
   std::vector<std::string> format_names;
   for (const auto& f : pd::report_formats()) format_names.push_back(f.name);
   app.add_option("--format", a.format,
-                 "report format: json (one document), jsonl (a line per pair as it finishes, "
-                 "then a summary), junit or sarif")
+                 "report format: json (one document; the default, but for a terminal), jsonl (a "
+                 "line per pair as it finishes, then a summary), junit, sarif, or table (the "
+                 "verdict and a short table of the findings: the default when stdout is a "
+                 "terminal and there is no -o)")
       ->check(CLI::IsMember(format_names));
   app.add_option(
          "-j,--jobs", a.jobs,
@@ -113,6 +117,11 @@ int CheckCommand::run(const pd::FaultHooks& faults) {
     throw pd::UserError(
         "a scene is required (a scene JSON file, or - for standard input); see --help");
   if (app_.count("--output")) a.output = output_;
+  // For people at a terminal, a table; for programs (stdout piped or
+  // redirected, as gh and ls decide) the JSON report, as when asked for.
+  if (!app_.count("--format") && !app_.count("--output") && !app_.count("--shard") &&
+      isatty(STDOUT_FILENO))
+    a.format = "table";
   if (app_.count("--shard")) a.shard = shard_;
   a.extra = extra_output_paths(app_, ci_);
   a.review = ci_.review;

@@ -14,5 +14,5 @@ class HtmlCommand {
 
  private:
   CLI::App* cmd_;
-  std::string report_, page_;
+  std::string report_, page_, scene_;
 };

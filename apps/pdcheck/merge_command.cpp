@@ -18,6 +18,9 @@ MergeCommand::MergeCommand(CLI::App& app) {
   cmd_->add_option("-o,--output", output_,
                    "write the merged report to this file (atomically) instead of stdout");
   add_ci_options(*cmd_, ci_);
+  cmd_->add_option("--scene", scene_,
+                   "--html: the scene file the shards checked, where their reports' path to it "
+                   "no longer leads");
   cmd_->add_flag("-q,--quiet", quiet_, "no review and no summary line on stderr");
   cmd_->add_flag("--allow-empty", allow_empty_,
                  "exit by the findings even when every part failed (else exit 2)");
@@ -57,7 +60,8 @@ int MergeCommand::run(int jobs, double load_timeout, bool quiet) const {
     pd::write_extra_outputs(extra, report, [&] {
       const pd::SavedReportPage page = pd::html_from_report_document(
           nlohmann::json::parse(text), to_file ? output_ : inputs_.front(),
-          scene_parts_loader(jobs, load_timeout));
+          scene_parts_loader(jobs, load_timeout),
+          cmd_->count("--scene") ? std::optional<std::string>(scene_) : std::nullopt);
       page_problems = page.problems;
       return page.html;
     });

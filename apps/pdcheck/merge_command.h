@@ -20,7 +20,7 @@ class MergeCommand {
  private:
   CLI::App* cmd_;
   std::vector<std::string> inputs_;
-  std::string output_;
+  std::string output_, scene_;
   bool quiet_ = false;
   bool allow_empty_ = false;
   CiOptions ci_;

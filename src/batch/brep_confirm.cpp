@@ -72,7 +72,7 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
     r.exact = e;
     return;
   }
-  e.distance = m.distance;
+  if (m.distance_exact) e.distance = m.distance;
   const double touch = touch_of(c);
   // The mesh bracket widened by the sags: certified when they are bounds;
   // against estimates the solids are held to twice their width.
@@ -93,6 +93,11 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
     }
     e.verdict = ExactVerdict::kSeparated;
     e.depth_bounds = {{0.0, 0.0}};
+    if (!m.distance_exact) {
+      std::snprintf(why, sizeof why, "apart by at least %.6g (the boxes of their faces)",
+                    *m.distance);
+      e.reason = why;
+    }
   } else {
     double lo = m.lower, hi = m.upper ? *m.upper : INFINITY;
     if (c.bounds) hi = std::min(hi, mesh[1] + 2.0 * c.sag);  // certified already
@@ -149,7 +154,7 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
       break;
     default:  // touching or apart: depth 0
       set(Status::kSeparated, 0.0);
-      if (e.verdict == ExactVerdict::kSeparated) r.distance = m.distance;
+      if (e.verdict == ExactVerdict::kSeparated && m.distance_exact) r.distance = m.distance;
       r.at.reset();
       break;
   }
@@ -180,6 +185,7 @@ json encode(const std::optional<double>& hull_distance, const std::optional<Exac
             {"timed_out", m->common_timed_out},
             {"common_error", m->common_error}};
   if (m->distance) x["distance"] = *m->distance;
+  x["distance_exact"] = m->distance_exact;
   if (m->upper) x["upper"] = *m->upper;
   if (m->volume) x["volume"] = *m->volume;
   j["measure"] = x;
@@ -195,6 +201,7 @@ ExactMeasure measure_of(const json& x) {
   m.common_timed_out = x.at("timed_out").get<bool>();
   m.common_error = x.at("common_error").get<std::string>();
   if (x.contains("distance")) m.distance = x["distance"].get<double>();
+  m.distance_exact = x.at("distance_exact").get<bool>();
   if (x.contains("upper")) m.upper = x["upper"].get<double>();
   if (x.contains("volume")) m.volume = x["volume"].get<double>();
   if (m.ok && !m.distance) m.ok = false, m.error = "no distance measured";
@@ -286,6 +293,7 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     q.seconds = seconds;
     q.touch = std::max(touch_of(c), tol::kExactTouchMm / mm);
     q.mm_per_unit = mm;
+    q.measure_within = c.clearance.value_or(0.0);
     return encode(gap, measure_exact_pair({pa.brep->file, pa.brep->leaf, pa.brep->placement},
                                           {pb.brep->file, pb.brep->leaf, pb.brep->placement}, q))
         .dump();

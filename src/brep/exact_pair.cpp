@@ -64,7 +64,15 @@ const ShapeTree& tree_of(const std::string& file) {
 struct PlacedSolids {
   std::vector<TopoDS_Solid> solids;
   std::vector<Bnd_Box> boxes;
-  std::vector<TopoDS_Shape> shells;  ///< per solid, its boundary (no inside to classify)
+  /// Per solid, its faces and each face's box from its exact geometry
+  /// (BRepBndLib::Add without the triangulation: a free-form face's box holds
+  /// its control net, which holds the face): distances are sought only
+  /// between faces whose boxes can hold a nearer pair.
+  struct Face {
+    TopoDS_Face face;
+    Bnd_Box box;
+  };
+  std::vector<std::vector<Face>> faces;
 };
 
 gp_Trsf to_trsf(const Mat4& m, double to_mm) {
@@ -76,7 +84,7 @@ gp_Trsf to_trsf(const Mat4& m, double to_mm) {
   return t;
 }
 
-PlacedSolids placed_solids(const ExactPart& p, double to_mm) {
+PlacedSolids place_solids(const ExactPart& p, double to_mm) {
   const ShapeTree& tree = tree_of(p.file);
   if (p.leaf >= int(tree.leaves.size()))
     throw std::runtime_error("the file has no leaf " + std::to_string(p.leaf) +
@@ -99,17 +107,31 @@ PlacedSolids placed_solids(const ExactPart& p, double to_mm) {
       const TopoDS_Solid solid = TopoDS::Solid(x.Current());
       out.solids.push_back(solid);
       Bnd_Box b;
-      BRepBndLib::Add(solid, b);
+      std::vector<PlacedSolids::Face> faces;
+      for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) {
+        Bnd_Box fb;
+        BRepBndLib::Add(f.Current(), fb, Standard_False);
+        fb.Enlarge(BRep_Tool::Tolerance(TopoDS::Face(f.Current())));
+        b.Add(fb);
+        faces.push_back({TopoDS::Face(f.Current()), fb});
+      }
       out.boxes.push_back(b);
-      TopoDS_Compound shells;
-      BRep_Builder builder;
-      builder.MakeCompound(shells);
-      for (TopExp_Explorer sh(solid, TopAbs_SHELL); sh.More(); sh.Next())
-        builder.Add(shells, sh.Current());
-      out.shells.push_back(shells);
+      out.faces.push_back(std::move(faces));
     }
   }
   return out;
+}
+
+// A part's placed solids, made once per process (a worker measures its pairs
+// one after another; a part's pairs run together).
+const PlacedSolids& placed_solids(const ExactPart& p, double to_mm) {
+  static std::map<std::string, std::unique_ptr<PlacedSolids>> placed;
+  std::string key = p.file + '\0' + std::to_string(p.leaf) + '\0' + std::to_string(to_mm);
+  key.append(reinterpret_cast<const char*>(p.placement.data()), sizeof(double) * 16);
+  auto it = placed.find(key);
+  if (it == placed.end())
+    it = placed.emplace(key, std::make_unique<PlacedSolids>(place_solids(p, to_mm))).first;
+  return *it->second;
 }
 
 // Which of `s` holds `p` strictly inside (-1: none).
@@ -123,13 +145,81 @@ int inside(const PlacedSolids& s, const gp_Pnt& p, long& calls) {
   return -1;
 }
 
+// The smallest distance between a shape and some faces (each with its exact
+// box), and the nearest point on them: faces are measured nearest box first,
+// until no box is nearer than the best distance found (a box holds its face,
+// so no face beyond it can be nearer). `box` is the shape's own.
+double nearest_face(const TopoDS_Shape& shape, const Bnd_Box& box,
+                    const std::vector<PlacedSolids::Face>& faces, gp_Pnt* nearest, long& calls,
+                    double stop_below = 0.0) {
+  std::vector<std::pair<double, size_t>> order;
+  for (size_t k = 0; k < faces.size(); ++k) order.emplace_back(box.Distance(faces[k].box), k);
+  std::sort(order.begin(), order.end());
+  double best = INFINITY;
+  for (const auto& [gap, k] : order) {
+    if (gap >= best || best <= stop_below) break;
+    ++calls;
+    BRepExtrema_DistShapeShape d(shape, faces[k].face);
+    if (!d.IsDone() || d.NbSolution() < 1) continue;
+    if (d.Value() < best) {
+      best = d.Value();
+      if (nearest) *nearest = d.PointOnShape2(1);
+    }
+  }
+  return best;
+}
+
 // The distance from `p` to a solid's boundary and its nearest boundary point.
-double to_boundary(const TopoDS_Shape& shells, const gp_Pnt& p, gp_Pnt& nearest, long& calls) {
-  ++calls;
-  BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(p).Vertex(), shells);
-  if (!d.IsDone() || d.NbSolution() < 1) return 0.0;
-  nearest = d.PointOnShape2(1);
-  return d.Value();
+double to_boundary(const std::vector<PlacedSolids::Face>& faces, const gp_Pnt& p, gp_Pnt& nearest,
+                   long& calls) {
+  Bnd_Box at;
+  at.Add(p);
+  const double d = nearest_face(BRepBuilderAPI_MakeVertex(p).Vertex(), at, faces, &nearest, calls);
+  return std::isfinite(d) ? d : 0.0;
+}
+
+// The distance between two solids' boundaries, nearest face pairs first,
+// stopping once it is at most `touch` (contact: nothing nearer matters).
+// Face pairs whose boxes are farther apart than `measure_within` are measured
+// only while the budget of kExactFacePairs lasts; `exact` tells whether the
+// result is the distance or a lower bound of it (the nearest box gap left).
+struct BoundaryDistance {
+  double value = INFINITY;
+  bool exact = true;
+};
+BoundaryDistance boundary_distance(const PlacedSolids& a, size_t i, const PlacedSolids& b, size_t j,
+                                   double touch, double measure_within, long& calls) {
+  struct Candidate {
+    double gap;
+    size_t fa, fb;
+  };
+  std::vector<Candidate> order;
+  for (size_t x = 0; x < a.faces[i].size(); ++x)
+    for (size_t y = 0; y < b.faces[j].size(); ++y)
+      order.push_back({a.faces[i][x].box.Distance(b.faces[j][y].box), x, y});
+  std::sort(order.begin(), order.end(),
+            [](const Candidate& p, const Candidate& q) { return p.gap < q.gap; });
+  BoundaryDistance out;
+  long measured = 0;
+  for (const Candidate& c : order) {
+    if (c.gap >= out.value || out.value <= touch) break;
+    if (c.gap > measure_within && measured >= tol::kExactFacePairs) {
+      out.value = c.gap;  // every face pair left is at least this far apart
+      out.exact = false;
+      break;
+    }
+    ++calls;
+    ++measured;
+    BRepExtrema_DistShapeShape d(a.faces[i][c.fa].face, b.faces[j][c.fb].face);
+    if (d.IsDone() && d.NbSolution() > 0) out.value = std::min(out.value, d.Value());
+  }
+  return out;
+}
+
+// A vertex of solid `s` (a point on its boundary).
+gp_Pnt some_point(const TopoDS_Solid& s) {
+  TopExp_Explorer v(s, TopAbs_VERTEX);
+  return BRep_Tool::Pnt(TopoDS::Vertex(v.Current()));
 }
 
 // φ(x) = min(d(x, ∂A), d(x, ∂B)) at a point verified inside both (else −1), and
@@ -144,8 +234,8 @@ Probe probe(const PlacedSolids& a, const PlacedSolids& b, const gp_Pnt& x, Exact
   if (ia < 0) return out;
   const int ib = inside(b, x, m.classifications);
   if (ib < 0) return out;
-  out.da = to_boundary(a.shells[size_t(ia)], x, out.pa, m.distance_calls);
-  out.db = to_boundary(b.shells[size_t(ib)], x, out.pb, m.distance_calls);
+  out.da = to_boundary(a.faces[size_t(ia)], x, out.pa, m.distance_calls);
+  out.db = to_boundary(b.faces[size_t(ib)], x, out.pb, m.distance_calls);
   out.phi = std::min(out.da, out.db);
   return out;
 }
@@ -249,21 +339,35 @@ ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const 
   ExactMeasure m;
   const double to_mm = r.mm_per_unit, to_scene = 1.0 / r.mm_per_unit;
   try {
-    const PlacedSolids a = placed_solids(pa, to_mm), b = placed_solids(pb, to_mm);
+    const PlacedSolids& a = placed_solids(pa, to_mm);
+    const PlacedSolids& b = placed_solids(pb, to_mm);
     m.solids_a = int(a.solids.size());
     m.solids_b = int(b.solids.size());
     if (a.solids.empty() || b.solids.empty()) throw std::runtime_error("a part has no solid");
+    // The solids' distance: their boundaries', nearest faces first; 0 where
+    // one holds the other (a point of its boundary strictly inside).
+    const double touch = r.touch * to_mm;
     double d = INFINITY;
+    bool exact = true;
+    const double measure_within = std::max(touch, r.measure_within * to_mm);
     for (size_t i = 0; i < a.solids.size(); ++i)
       for (size_t j = 0; j < b.solids.size(); ++j) {
         if (a.boxes[i].Distance(b.boxes[j]) >= d) continue;
-        ++m.distance_calls;
-        BRepExtrema_DistShapeShape x(a.solids[i], b.solids[j]);
-        if (!x.IsDone()) throw std::runtime_error("Open CASCADE's solid distance failed");
-        d = std::min(d, x.Value());
+        const BoundaryDistance bd =
+            boundary_distance(a, i, b, j, touch, measure_within, m.distance_calls);
+        double dij = bd.value;
+        if (dij > touch) {
+          ++m.classifications;
+          BRepClass3d_SolidClassifier in_b(b.solids[j], some_point(a.solids[i]), 1e-9);
+          ++m.classifications;
+          BRepClass3d_SolidClassifier in_a(a.solids[i], some_point(b.solids[j]), 1e-9);
+          if (in_b.State() == TopAbs_IN || in_a.State() == TopAbs_IN) dij = 0.0;
+        }
+        if (dij < d) d = dij, exact = bd.exact || dij == 0.0;
       }
     m.distance = d * to_scene;
-    if (d <= r.touch * to_mm) {
+    m.distance_exact = exact;
+    if (d <= touch) {
       std::vector<gp_Pnt> starts;
       for (const Vec3& s : r.starts)
         starts.emplace_back(s.x() * to_mm, s.y() * to_mm, s.z() * to_mm);

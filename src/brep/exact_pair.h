@@ -36,6 +36,10 @@ struct ExactRequest {
   bool common = true;     ///< run the Boolean (the upper bound and the volume)
   /// A distance at or below this is contact (scene units).
   double touch = 1e-9;
+  /// Face pairs whose boxes are within this (scene units: the pair's
+  /// clearance, when it has one) are measured whatever the effort; farther
+  /// ones only within tol::kExactFacePairs, else their boxes bound the distance.
+  double measure_within = 0.0;
   /// Millimetres per scene unit: the solids are measured in mm, the unit
   /// Open CASCADE's confusion tolerance (1e-7) is set for.
   double mm_per_unit = 1.0;
@@ -46,9 +50,11 @@ struct ExactMeasure {
   bool ok = false;    ///< the solids were read and measured
   std::string error;  ///< why not, when !ok
   int solids_a = 0, solids_b = 0;
-  /// The smallest distance between a solid of A and one of B (0: they touch
-  /// or overlap; Open CASCADE's solid distance, so containment counts).
+  /// The smallest distance between a solid of A and one of B (0: they touch,
+  /// overlap or one holds the other), or a lower bound of it when
+  /// !distance_exact (their faces' boxes are that far apart).
   std::optional<double> distance;
+  bool distance_exact = true;
   double lower = 0.0;            ///< certified lower bound of the thickness T
   std::optional<Vec3> lower_at;  ///< the point that gave `lower`
   /// Upper bound of T from the common solid; 0 when it is empty.

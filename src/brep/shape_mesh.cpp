@@ -27,11 +27,15 @@ namespace {
 // curved faces from coming out coarser in angle than this.
 constexpr double kMeshAngle = 0.5;
 
-// Global vertex ids for one shape: a TopoDS_Vertex is one id, an edge's k-th
-// polygon point (0 < k < n − 1) is one id, every other face node its own.
+// Global vertex ids for one shape: a vertex is one id, an edge's k-th polygon
+// point (0 < k < n − 1) is one id, every other face node its own. Vertices and
+// edges are told apart as shapes (IsSame: the same TShape at the same location).
 class Welder {
  public:
-  explicit Welder(const TopoDS_Shape& shape) { TopExp::MapShapes(shape, TopAbs_VERTEX, vertices_); }
+  explicit Welder(const TopoDS_Shape& shape) {
+    TopExp::MapShapes(shape, TopAbs_VERTEX, vertices_);
+    TopExp::MapShapes(shape, TopAbs_EDGE, edges_);
+  }
   int vertex(const TopoDS_Vertex& v, const gp_Pnt& p) {
     const int k = vertices_.FindIndex(v);
     auto [it, fresh] = by_vertex_.emplace(k, 0);
@@ -39,7 +43,9 @@ class Welder {
     return it->second;
   }
   int edge_point(const TopoDS_Edge& e, int k, const gp_Pnt& p) {
-    auto [it, fresh] = by_edge_.emplace(std::make_pair(e.TShape().get(), k), 0);
+    // By the edge as a shape (its geometry and its location), not its TShape
+    // alone: a cylinder's two circles may be one TShape at two locations.
+    auto [it, fresh] = by_edge_.emplace(std::make_pair(edges_.FindIndex(e), k), 0);
     if (fresh) it->second = add(p);
     return it->second;
   }
@@ -55,9 +61,9 @@ class Welder {
   }
 
  private:
-  TopTools_IndexedMapOfShape vertices_;
+  TopTools_IndexedMapOfShape vertices_, edges_;
   std::map<int, int> by_vertex_;
-  std::map<std::pair<const void*, int>, int> by_edge_;
+  std::map<std::pair<int, int>, int> by_edge_;
   std::vector<gp_Pnt> points_;
 };
 

@@ -4,7 +4,7 @@
 // and the triangles whose boxes meet a box (the faces near a cell). Measured
 // 2–4× faster there than CGAL's AABB tree, whose projection onto a triangle is
 // the bulk of a query on CAD meshes' long slivers and which builds each
-// triangle's box anew at every visit (docs/performance.md, "Distance queries").
+// triangle's box anew at every visit.
 #pragma once
 
 #include <array>

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "report/input_error.h"
 #include "report/json_input.h"
 #include "report/write_html.h"
 
@@ -13,31 +14,46 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The scene as the run named it, else beside the report (a report moved with
-// its scene); the first that exists, or the first when none does.
-std::string find_scene(const std::string& scene, const std::string& report_path) {
-  const fs::path as_written(scene);
+// The scene: `given` (pdcheck html --scene) when set, else as the run named it,
+// else beside the report (a report moved with its scene). Throws
+// ReportInputError naming every place looked at when none exists.
+std::string find_scene(const std::string& scene, const std::string& report_path,
+                       const std::optional<std::string>& given) {
   std::error_code ec;
-  if (as_written.is_absolute() || fs::exists(as_written, ec)) return scene;
-  const fs::path beside = fs::path(report_path).parent_path() / as_written;
-  return fs::exists(beside, ec) ? beside.string() : scene;
+  if (given) {
+    if (!fs::exists(*given, ec))
+      throw ReportInputError("--scene " + *given + ": no such file (the scene of " + report_path +
+                             ")");
+    return *given;
+  }
+  const fs::path as_written(scene);
+  if (fs::exists(as_written, ec)) return scene;
+  std::string looked = scene + " (as the run named it, from the working directory)";
+  if (as_written.is_relative()) {
+    const fs::path beside = fs::path(report_path).parent_path() / as_written;
+    if (fs::exists(beside, ec)) return beside.string();
+    looked += " nor " + beside.string() + " (beside the report)";
+  }
+  throw ReportInputError(report_path + ": its scene \"" + scene + "\" is not found: not at " +
+                         looked + "; say where it is with --scene PATH");
 }
 
 SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_path,
-                        const ScenePartsLoader& load) {
+                        const ScenePartsLoader& load, const std::optional<std::string>& scene) {
   const JsonAt root{raw, report_path, "$"};
   root.object();
   if (!root.has("pairs") || !root.has("scene"))
     root.fail("not a pdcheck JSON report (--format json): no \"pairs\" or \"scene\"");
   root["pairs"].array();
   const std::string scene_name = root["scene"].string();
-  if (scene_name == "-")
+  if (scene_name == "-" && !scene)
     root["scene"].fail(
         "the scene was read from standard input: its geometry cannot be read "
-        "again (write the page during the run with --html)");
+        "again (write the page during the run with --html, or give the scene's file with "
+        "--scene PATH)");
   std::optional<std::string> units;
   if (root.has("units")) units = root["units"].string();
-  const std::string scene_path = find_scene(scene_name, report_path);
+  const std::string scene_path = find_scene(scene_name, report_path, scene);
   std::optional<double> tolerance;
   if (root.has("tolerance")) tolerance = root["tolerance"].number();
   const std::vector<Part> parts = load(scene_path, units, tolerance);
@@ -65,15 +81,17 @@ SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_pat
 
 }  // namespace
 
-SavedReportPage html_from_report(const std::string& report_path, const ScenePartsLoader& load) {
+SavedReportPage html_from_report(const std::string& report_path, const ScenePartsLoader& load,
+                                 const std::optional<std::string>& scene) {
   return html_from_report_document(parse_json_input(read_input_file(report_path), report_path),
-                                   report_path, load);
+                                   report_path, load, scene);
 }
 
 SavedReportPage html_from_report_document(const nlohmann::json& raw, const std::string& report_path,
-                                          const ScenePartsLoader& load) {
+                                          const ScenePartsLoader& load,
+                                          const std::optional<std::string>& scene) {
   try {
-    return page_of(raw, report_path, load);
+    return page_of(raw, report_path, load, scene);
   } catch (const nlohmann::json::exception& e) {  // a value of the wrong type
     throw ReportInputError(report_path + ": not a pdcheck JSON report: " + e.what());
   }

@@ -27,19 +27,24 @@ using ScenePartsLoader = std::function<std::vector<Part>(const std::string& scen
                                                          const std::optional<std::string>& units,
                                                          std::optional<double> tolerance)>;
 
-/// Reads the JSON report at `report_path`, finds its scene (the report's "scene":
-/// as written, i.e. relative to the working directory of the run, else relative
-/// to the report's own directory), has `load` build the scene's parts and renders
-/// the page. Throws ReportInputError
-/// (the report unreadable or not a pdcheck JSON report), SceneError (the scene
-/// unreadable), HtmlAssetError (three.js missing). A part that cannot be read
-/// costs only its own 3D view: it is listed in `problems` and on the page.
-SavedReportPage html_from_report(const std::string& report_path, const ScenePartsLoader& load);
+/// Reads the JSON report at `report_path`, finds its scene and has `load` build
+/// the scene's parts, and renders the page. The scene is `scene` when given
+/// (pdcheck html --scene: a report moved without its paths, a CI artefact),
+/// else the report's "scene" as written (relative to the working directory of
+/// the run), else relative to the report's own directory. Throws
+/// ReportInputError (the report unreadable or not a pdcheck JSON report; its
+/// scene found nowhere: the message names each place looked at and --scene),
+/// SceneError (the scene unreadable), HtmlAssetError (three.js missing). A part
+/// that cannot be read costs only its own 3D view: it is listed in `problems`
+/// and on the page.
+SavedReportPage html_from_report(const std::string& report_path, const ScenePartsLoader& load,
+                                 const std::optional<std::string>& scene = std::nullopt);
 
 /// The same for a report held in memory (pdcheck merge --html): `report_path`
 /// stands for where it is saved, in messages and to find the scene beside it.
 SavedReportPage html_from_report_document(const nlohmann::json& report,
                                           const std::string& report_path,
-                                          const ScenePartsLoader& load);
+                                          const ScenePartsLoader& load,
+                                          const std::optional<std::string>& scene = std::nullopt);
 
 }  // namespace pd

@@ -47,6 +47,22 @@ size_t piece_count(const Part& part);
 /// web mesh of at most `max_triangles`; nullopt when they do not overlap in a solid.
 std::optional<WebMesh> overlap_web_mesh(const Points& a, const Points& b, size_t max_triangles);
 
+/// The overlap of two parts' own solids, where a part is nonconvex (its placed
+/// surface mesh; a convex part is its convex pieces): each part's surface
+/// triangles that lie inside the other part, the boundary of the intersection.
+/// Within the parts' common box, a triangle whose corners lie on one side of
+/// the other part is kept or dropped whole once it is an 8th of that box's
+/// diagonal, and one that crosses its surface is split to a 48th and kept by
+/// its pieces' centres (a jagged edge at that scale, as drawn). `mesh` is
+/// empty when the parts do not overlap in a solid or when it
+/// cannot be drawn cheaply; `note` then says why (a mesh that bounds no solid,
+/// more than tol::kHtmlOverlapProbes inside tests).
+struct SolidOverlap {
+  std::optional<WebMesh> mesh;
+  std::string note;
+};
+SolidOverlap solid_overlap_web_mesh(const Part& a, const Part& b, size_t max_triangles);
+
 /// Every vertex of a part (all pieces), placed.
 Points part_vertices(const Part& part);
 

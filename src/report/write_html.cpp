@@ -16,6 +16,7 @@
 #include "report/html_assets.h"  // generated from src/report/html/ (CMakeLists.txt)
 #include "report/html_geometry.h"
 #include "report/markup_escape.h"
+#include "report/verdict.h"
 #include "results/codec.h"
 #include "tolerances.h"
 
@@ -222,8 +223,11 @@ class PageGeometry {
     return index;
   }
 
-  // What the depth is measured on: the realising pieces when the report names
-  // them and the parts hold them, else the parts' hulls.
+  // The overlap drawn in red: the realising pieces' when the report names them
+  // and the parts hold them; the parts' own solids' where a part is nonconvex
+  // or the depth was measured on the parts themselves (never the hulls': a
+  // 2 mm rim clash is not the whole slab the hulls share); else, both parts
+  // convex (or taken as their hulls, pieces hull), the hulls'.
   void add_overlap(const json& p, const Part& pa, const Part& pb, json& view) {
     const Hull *ha = nullptr, *hb = nullptr;
     if (p.contains("pieces") && p["pieces"].is_array() && p["pieces"].size() == 2 &&
@@ -237,12 +241,27 @@ class PageGeometry {
         view["piece_b"] = add_mesh("piece", hull_web_mesh(hb->vertices, tol::kHtmlPartTriangles));
     }
     const bool on_pieces = ha && hb;
+    const std::string source = p.value("depth_source", "hull");
+    if (!on_pieces &&
+        (pa.convex == false || pb.convex == false || (source != "hull" && source != "pieces"))) {
+      const SolidOverlap overlap = solid_overlap_web_mesh(pa, pb, tol::kHtmlPartTriangles);
+      if (overlap.mesh) {
+        view["overlap"] = add_mesh("overlap", *overlap.mesh);
+        view["overlap_of"] = "the parts themselves";
+      } else {
+        view["overlap_note"] =
+            overlap.note.empty() ? "the parts' surfaces do not cross" : overlap.note;
+      }
+      return;
+    }
     const auto overlap =
         overlap_web_mesh(on_pieces ? ha->vertices : part_vertices(pa),
                          on_pieces ? hb->vertices : part_vertices(pb), tol::kHtmlPartTriangles);
     if (overlap) {
       view["overlap"] = add_mesh("overlap", *overlap);
-      view["overlap_of"] = on_pieces ? "the realising pieces" : "the convex hulls";
+      view["overlap_of"] = on_pieces                                ? "the realising pieces"
+                           : pa.convex == true && pb.convex == true ? "the parts (both convex)"
+                                                                    : "the convex hulls";
     }
   }
 
@@ -288,6 +307,17 @@ json part_errors_of(const json& report) {
   return part_errors;
 }
 
+// The banner: pass, fail or incomplete, from the summary (report/verdict.h).
+json verdict_json(const json& report) {
+  const Verdict v = run_verdict(report.value("summary", json::object()));
+  json j = {{"state", v.state}, {"headline", v.headline}, {"counts", v.counts}};
+  if (report.contains("shard") && report["shard"].is_object())
+    j["shard"] = "shard " + std::to_string(report["shard"].value("index", 0)) + " of " +
+                 std::to_string(report["shard"].value("total", 0)) +
+                 ": the run's verdict is its merge's (pdcheck merge)";
+  return j;
+}
+
 // What the page's script reads: the report's summary, the rows and the geometry.
 json page_data(const json& report, json rows, PageGeometry& geometry,
                const std::vector<std::string>& notes) {
@@ -299,6 +329,7 @@ json page_data(const json& report, json rows, PageGeometry& geometry,
       {"method", report.value("method", json::object())},
       {"seconds", report.value("seconds", 0.0)},
       {"summary", report.value("summary", json::object())},
+      {"verdict", verdict_json(report)},
       {"findings", std::move(rows)},
       {"meshes", std::move(geometry.meshes)},
       {"boxes", std::move(geometry.boxes)},

@@ -8,6 +8,7 @@ const std::vector<ReportFormat>& report_formats() {
       {"jsonl", "a JSON line per pair, then a summary line", render_jsonl},
       {"junit", "JUnit XML: a test case per candidate pair (docs/ci.md)", render_junit},
       {"sarif", "SARIF 2.1.0: a result per finding (docs/ci.md)", render_sarif},
+      {"table", "the verdict and a short table of the findings, for people", render_table},
   };
   return formats;
 }

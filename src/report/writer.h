@@ -25,7 +25,7 @@ struct ReportFormat {
   std::string (*render)(const ReportInput&);
 };
 
-/// json, jsonl, junit, sarif: the table the CLI's --format and docs follow.
+/// json, jsonl, junit, sarif, table: the table the CLI's --format and docs follow.
 const std::vector<ReportFormat>& report_formats();
 const ReportFormat* find_report_format(const std::string& name);
 
@@ -37,6 +37,8 @@ std::string render_jsonl(const ReportInput& in);                // write_jsonl.c
 std::string jsonl_tail(const ReportInput& in);    // write_jsonl.cpp
 std::string render_junit(const ReportInput& in);  // write_junit.cpp
 std::string render_sarif(const ReportInput& in);  // write_sarif.cpp
+/// --format table (stdout on a terminal without -o): the verdict and the findings.
+std::string render_table(const ReportInput& in);  // write_table.cpp
 /// --csv: a row per pair that is not separated (RFC 4180).
 std::string render_csv(const ReportInput& in);  // write_csv.cpp
 /// --bcf: a BCF 3.0 zip, a topic per finding that needs a person (bcf_topics.h).

@@ -167,8 +167,9 @@ struct Reader {
                                         : status_from_name(j.get<std::string>());
   }
   void read(const json& j, StopReason& s) const {
-    s = encoding == Encoding::kComplete ? enum_from_value(j, StopReason::kAboveTolerance, "stop reason")
-                                        : stop_reason_from_name(j.get<std::string>());
+    s = encoding == Encoding::kComplete
+            ? enum_from_value(j, StopReason::kAboveTolerance, "stop reason")
+            : stop_reason_from_name(j.get<std::string>());
   }
   template <class T>
   void read(const json& j, std::optional<T>& v) const {

@@ -30,7 +30,8 @@ enum class StopReason {
 /// solves: the enum's order, with kAboveTolerance (appended) beside the
 /// EPA certificate it rests on.
 constexpr int stop_rank(StopReason r) {
-  return r == StopReason::kAboveTolerance ? 3 : 2 * static_cast<int>(r);
+  return r == StopReason::kAboveTolerance ? 2 * static_cast<int>(StopReason::kEpaCertificate) + 1
+                                          : 2 * static_cast<int>(r);
 }
 
 /// The report's name of a stop reason ("proven_separated", …).

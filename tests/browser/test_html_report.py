@@ -6,9 +6,11 @@ usage: test_html_report.py PDCHECK SOURCE_DIR BINARY_DIR
 Writes the demo scene's page with `pdcheck --html`, opens it from disk and
 checks: no console errors and no request but the page itself; one table row
 per finding of the JSON report, interference first; the 3D view draws the
-overlap (pixels read back from the canvas); clicking a row, the arrow keys and
-a #pair= permalink select findings and update the permalink; sorting and
-filtering; and, where WebGL is missing, the table and details alone. Leaves the demo
+overlap (pixels read back from the canvas) with both parts wholly in view; the
+verdict banner (fail on the demo, incomplete on a run that could not read a
+part); clicking a row, the arrow keys and a #pair= permalink select findings and
+update the permalink; sorting and filtering; and, where WebGL is missing, the
+table and details alone. Leaves the demo
 screenshot in BINARY_DIR/html-report-demo.png. Exits 77 (skipped) only when
 no chromium is installed.
 """
@@ -74,10 +76,12 @@ def main():
         return SKIP
     out = os.path.join(binary, "html-report-test")
     os.makedirs(out, exist_ok=True)
-    page = os.path.join(out, "demo.html")
-    report = os.path.join(out, "demo.json")
-    run = subprocess.run([pdcheck, os.path.join(source, "testdata/demo/scene.json"), "-q",
-                          "-o", report, "--html", page], capture_output=True, text=True)
+    page = os.path.abspath(os.path.join(out, "demo.html"))
+    report = os.path.abspath(os.path.join(out, "demo.json"))
+    # From the source tree: the page (and the screenshot) names the scene as
+    # testdata/demo/scene.json, no path of the machine it ran on.
+    run = subprocess.run([os.path.abspath(pdcheck), "testdata/demo/scene.json", "-q",
+                          "-o", report, "--html", page], capture_output=True, text=True, cwd=source)
     check(run.returncode == 1, "pdcheck --html on the demo exits 1 (its interference): %d %s"
           % (run.returncode, run.stderr.strip()))
     with open(report) as f:
@@ -106,6 +110,20 @@ def main():
               "the 3D view of the first finding is not blank")
         check(stats is not None and stats["red"] > 50,
               "the interference's overlap is drawn (red pixels: %s)" % (stats and stats["red"]))
+        # Both parts wholly on the canvas (-1..1 in device coordinates).
+        reach = b.evaluate("pdcheck.partsOnScreen")
+        check(reach is not None and 0.3 < reach <= 1.0,
+              "the first view frames both parts whole: they reach %s of the canvas" % reach)
+        # The verdict, first thing on the page.
+        banner = b.evaluate("(() => { const v = document.getElementById('verdict'); "
+                            "const r = v.getBoundingClientRect(); "
+                            "return [v.className, v.textContent, r.top, r.height]; })()")
+        check(banner[0] == "fail" and b.evaluate("pdcheck.verdict") == "fail",
+              "the banner says fail: %s" % banner[:2])
+        check(banner[1].startswith("FAIL: 1 interference (exit code 1)") and
+              ("%d false positive" % sum(p["status"] == "false_positive" for p in findings)) in banner[1],
+              "the banner gives the verdict and the counts: %s" % banner[1])
+        check(banner[2] < 120 and banner[3] > 10, "the banner is at the top of the page: %s" % banner[2:])
         b.screenshot(os.path.join(binary, "html-report-demo.png"))
         # Where: the first finding's `at` is marked and the view centred on it.
         first = next(p for p in findings if p["fingerprint"] == rows[0][2])
@@ -142,6 +160,8 @@ def main():
         stats = b.evaluate(CANVAS_STATS)
         check(stats is not None and stats["drawn"] > 0.01 * stats["total"],
               "the clicked finding's 3D view is not blank: %s" % (stats,))
+        reach = b.evaluate("pdcheck.partsOnScreen")
+        check(reach is not None and reach <= 1.0, "the clicked finding's parts are whole in view: %s" % reach)
 
         # The keyboard: Home, then ArrowDown, moves the selection.
         b.key("Home", key_code=36)
@@ -200,6 +220,31 @@ def main():
         check(b.evaluate("document.getElementById('view-info').textContent").find("depth") >= 0,
               "without WebGL: a selected finding's details are shown")
         check(not b.console_errors, "without WebGL: no console errors: %s" % b.console_errors)
+
+    # A run that could not read a part (exit 3): incomplete, never a pass.
+    with open(os.path.join(source, "testdata/demo/scene.json")) as f:
+        scene = json.load(f)
+    for part in scene["parts"]:
+        if "mesh" in part:
+            part["mesh"] = os.path.abspath(os.path.join(source, "testdata/demo", part["mesh"]))
+    scene["parts"].append({"id": "lost", "mesh": os.path.abspath(os.path.join(out, "no-such-part.stl"))})
+    with open(os.path.join(out, "incomplete.json"), "w") as f:
+        json.dump(scene, f)
+    incomplete = os.path.join(out, "incomplete.html")
+    run = subprocess.run([pdcheck, os.path.join(out, "incomplete.json"), "-q", "-o",
+                          os.path.join(out, "incomplete-report.json"), "--html", incomplete],
+                         capture_output=True, text=True)
+    check(run.returncode == 3, "a run with an unreadable part exits 3: %d %s" % (run.returncode, run.stderr.strip()))
+    with cdp.Browser(timeout=60) as b:
+        b.open_page()
+        b.navigate("file://" + os.path.abspath(incomplete), timeout=60)
+        b.wait_for("window.pdcheck && window.pdcheck.ready", timeout=30)
+        banner = b.evaluate("[document.getElementById('verdict').className, "
+                            "document.getElementById('verdict').textContent]")
+        check(banner[0] == "incomplete" and banner[1].startswith("INCOMPLETE") and "PASS" not in banner[1]
+              and "1 unusable part" in banner[1],
+              "an exit-3 run's banner says incomplete: %s" % banner)
+        check(not b.console_errors, "incomplete page: no console errors: %s" % b.console_errors)
     print("%d checks failed" % len(failures) if failures else "all checks passed")
     return 1 if failures else 0
 

@@ -41,6 +41,12 @@
   // ---- Summary ----
   function summary() {
     const s = data.summary || {};
+    // The verdict first: pass, fail or incomplete (an exit-3 run is never a pass).
+    const verdict = data.verdict || {};
+    $('verdict').className = verdict.state || '';
+    $('verdict-headline').textContent = verdict.headline || '';
+    $('verdict-counts').textContent = (verdict.counts || '') + (verdict.shard ? ' · ' + verdict.shard : '');
+    api.verdict = verdict.state || null;
     $('scene-line').textContent = 'Scene ' + (data.scene || '?') + ' · tolerance ' + len(data.tolerance) +
       ' · method ' + ((data.method || {}).name || '?') + ' · run time ' + num(data.seconds, 3) + ' s';
     const tool = data.tool || {};
@@ -266,6 +272,9 @@
       add('part B', f.b + ': ' + how(v.b), COLORS.b);
       if (v.piece_a !== undefined) add('realising pieces', 'pieces ' + f.pieces.join(' and ') + ', outlined', COLORS.piece);
       if (v.overlap !== undefined) add('overlap', 'of ' + v.overlap_of + ': ' + how(v.overlap), COLORS.overlap);
+      else if (v.overlap_note) add('overlap', 'not drawn: ' + v.overlap_note);
+      if (thicknessBall(f))
+        add('thickness', 'a ball of the overlap thickness (' + len(f.depth) + ') at `at`: inside both parts', COLORS.overlap);
       if (v.context && v.context.length)
         add('nearby', v.context.length + ' parts as faint boxes: ' + v.context.map((k) => data.boxes[k][0]).join(', '), '#8c959f');
     }
@@ -396,6 +405,12 @@
     return b;
   }
 
+  // A thickness pair's depth is the diameter of a ball inside both parts at
+  // `at` (docs/report-format.md): drawn as that ball, the region the solver found.
+  function thicknessBall(f) {
+    return f.depth_source === 'thickness' && f.at && f.depth > 0 && f.view && f.view.a !== null && f.view.b !== null;
+  }
+
   function show3d(f) {
     const note = $('no-view');
     if (!gl) {
@@ -418,8 +433,13 @@
     const origins = [v.a, v.b].filter(has).map((i) => data.meshes[i].o);
     const centre = [0, 1, 2].map((d) => origins.reduce((s, o) => s + o[d], 0) / origins.length);
     const fit = new THREE.Box3();
-    if (has(v.a)) fit.union(addMesh(v.a, centre, COLORS.a, 0.35, true, 'a'));
-    if (has(v.b)) fit.union(addMesh(v.b, centre, COLORS.b, 0.35, true, 'b'));
+    gl.partBoxes = [];
+    for (const [i, name, color] of [[v.a, 'a', COLORS.a], [v.b, 'b', COLORS.b]]) {
+      if (!has(i)) continue;
+      const box = addMesh(i, centre, color, 0.35, true, name);
+      gl.partBoxes.push(box);
+      fit.union(box);
+    }
     if (has(v.piece_a)) addMesh(v.piece_a, centre, COLORS.piece, 0.25, true, 'piece');
     if (has(v.piece_b)) addMesh(v.piece_b, centre, COLORS.piece, 0.25, true, 'piece');
     let arrowAt = fit.getCenter(new THREE.Vector3());
@@ -429,6 +449,19 @@
       // The overlap is what the row is about: drawn over the parts around it.
       gl.group.getObjectByName('overlap').traverse((o) => { o.renderOrder = 5; });
       arrowAt = gl.overlapBox.getCenter(new THREE.Vector3());
+    }
+    if (thicknessBall(f)) {
+      const r = f.depth / 2;
+      const ball = new THREE.Mesh(new THREE.SphereGeometry(r, 24, 16), material('ball', COLORS.overlap, 0.6,
+        () => new THREE.MeshPhongMaterial({ color: COLORS.overlap, transparent: true, opacity: 0.6, depthTest: false })));
+      ball.position.set(f.at[0] - centre[0], f.at[1] - centre[1], f.at[2] - centre[2]);
+      const onTop = new THREE.Group();
+      onTop.renderOrder = 6;
+      onTop.name = 'thickness';
+      onTop.add(ball);
+      gl.group.add(onTop);
+      const ballBox = new THREE.Box3().setFromCenterAndSize(ball.position, new THREE.Vector3(2 * r, 2 * r, 2 * r));
+      gl.overlapBox = gl.overlapBox ? gl.overlapBox.union(ballBox) : ballBox;
     }
     const size = fit.getSize(new THREE.Vector3()).length() || 1;
     // Where the finding is (the report's `at`): a marker drawn over everything;
@@ -502,47 +535,78 @@
     }
     gl.fitBox = fit;
     gl.viewDir = dir;
-    // First look: the clash, i.e. the overlap with the smaller part around it
-    // (a bolt in a large panel would be a speck in a view of both).
-    const boxes = [v.a, v.b].filter(has).map((i) => gl.group.getObjectByName(i === v.a ? 'a' : 'b'));
-    let focusBox = fit;
-    if (gl.overlapBox && boxes.length === 2) {
-      const sizes = boxes.map((o) => new THREE.Box3().setFromObject(o));
-      const small = sizes[0].getSize(new THREE.Vector3()).length() <= sizes[1].getSize(new THREE.Vector3()).length()
-        ? sizes[0] : sizes[1];
-      focusBox = small.clone().union(gl.overlapBox);
-    }
-    gl.focusBox = focusBox;
-    fitTo(focusBox, dir, gl.atPoint);
+    // First look: both parts whole, centred on the finding's `at` (Zoom to
+    // overlap, O, comes closer).
+    fitTo(gl.partBoxes, dir, gl.atPoint);
   }
 
-  // Looks at `box` from across `dir` (so the depth arrow is seen side-on).
-  // Centred on `at` when given (the finding's point), else on the box.
-  function fitTo(box, dir, at) {
-    if (!gl || !box) return;
-    const centre = at ? at.clone() : box.getCenter(new THREE.Vector3());
-    let radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-9);
-    if (at) radius = Math.max(radius, box.distanceToPoint(at) + radius * 0.5);
-    // The marker keeps its size on screen: 1/30 of the view's radius.
-    if (gl.marker) gl.marker.scale.setScalar(radius / 30);
+  // Looks from across `dir` (so the depth arrow is seen side-on) with every
+  // box of `boxes` wholly in view: the camera backs off until each box corner
+  // is within the canvas's angles of view. Centred on `at` when given (the
+  // finding's point), else on the boxes' middle.
+  function fitTo(boxes, dir, at) {
+    if (!gl || !boxes || !boxes.length) return;
+    const all = new THREE.Box3();
+    for (const b of boxes) all.union(b);
+    const centre = at ? at.clone() : all.getCenter(new THREE.Vector3());
+    const corners = [];
+    for (const b of boxes)
+      for (let c = 0; c < 8; ++c)
+        corners.push(new THREE.Vector3(c & 1 ? b.max.x : b.min.x, c & 2 ? b.max.y : b.min.y,
+          c & 4 ? b.max.z : b.min.z).sub(centre));
+    const radius = Math.max(1e-9, ...corners.map((p) => p.length()));
+    // The marker keeps its size on screen: 1/40 of the view's radius.
+    if (gl.marker) gl.marker.scale.setScalar(radius / 40);
     let side = new THREE.Vector3(1, 0.6, 0.8);
     if (dir) {
       const up = Math.abs(dir.z) < 0.9 ? new THREE.Vector3(0, 0, 1) : new THREE.Vector3(1, 0, 0);
       side = new THREE.Vector3().crossVectors(dir, up).normalize().addScaledVector(up, 0.45).addScaledVector(dir, 0.25);
     }
     side.normalize();
-    const dist = (radius / Math.sin((gl.camera.fov * Math.PI) / 360)) * 1.25;
+    // The camera's axes as lookAt makes them (up +z), and the half-angles of view.
+    const camUp = new THREE.Vector3(0, 0, 1);
+    const right = new THREE.Vector3().crossVectors(camUp, side);
+    if (right.lengthSq() < 1e-12) right.set(1, 0, 0);
+    right.normalize();
+    const upward = new THREE.Vector3().crossVectors(side, right);
+    const tanV = Math.tan((gl.camera.fov / 2) * Math.PI / 180), tanH = tanV * gl.camera.aspect;
+    let dist = 1e-9;
+    for (const p of corners)
+      dist = Math.max(dist, p.dot(side) + Math.max(Math.abs(p.dot(right)) / tanH, Math.abs(p.dot(upward)) / tanV));
+    dist *= 1.08;
     gl.camera.position.copy(centre).addScaledVector(side, dist);
-    gl.camera.near = dist / 1000;
-    gl.camera.far = dist * 100;
-    gl.camera.up.set(0, 0, 1);
+    gl.camera.near = Math.max(dist - radius, dist / 1000) / 10;
+    gl.camera.far = dist + radius * 10;
+    gl.camera.up.copy(camUp);
     gl.camera.updateProjectionMatrix();
     gl.controls.target.copy(centre);
     gl.controls.update();
-    // Where the view is centred, in scene units (tests read it back).
+    // Where the view is centred, in scene units, and how far the parts reach on
+    // screen (-1..1 is the canvas's edge), for tests.
     api.target = [centre.x + gl.centre[0], centre.y + gl.centre[1], centre.z + gl.centre[2]];
     api.marker = !!gl.marker;
+    api.partsOnScreen = partsOnScreen();
     render();
+  }
+
+  // The largest |x| and |y| of the shown parts' vertices in normalised device
+  // coordinates: at most 1 when both parts are wholly in view.
+  function partsOnScreen() {
+    gl.camera.updateMatrixWorld();
+    let reach = 0;
+    const p = new THREE.Vector3();
+    for (const name of ['a', 'b']) {
+      const obj = gl.group.getObjectByName(name);
+      if (!obj) continue;
+      obj.updateMatrixWorld();
+      const mesh = obj.children[0];
+      const pos = mesh.geometry.getAttribute('position');
+      for (let k = 0; k < pos.count; ++k) {
+        p.fromBufferAttribute(pos, k).applyMatrix4(mesh.matrixWorld).project(gl.camera);
+        reach = Math.max(reach, Math.abs(p.x), Math.abs(p.y));
+      }
+    }
+    return reach;
   }
 
   function toggle(name, on) {
@@ -627,8 +691,8 @@
   gl = initGl();
   lap('webgl');
   api.webgl = !!gl;
-  $('fit').addEventListener('click', () => gl && fitTo(gl.fitBox, gl.viewDir));
-  $('zoom-overlap').addEventListener('click', () => gl && fitTo(gl.overlapBox || gl.fitBox, gl.viewDir, gl.atPoint));
+  $('fit').addEventListener('click', () => gl && fitTo(gl.partBoxes, gl.viewDir));
+  $('zoom-overlap').addEventListener('click', () => gl && fitTo(gl.overlapBox ? [gl.overlapBox] : gl.partBoxes, gl.viewDir, gl.atPoint));
   $('show-a').addEventListener('change', (e) => toggle('a', e.target.checked));
   $('show-b').addEventListener('change', (e) => toggle('b', e.target.checked));
   $('show-context').addEventListener('change', (e) => toggle('context', e.target.checked));
