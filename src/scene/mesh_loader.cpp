@@ -12,7 +12,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 
+#include "scene/glb_check.h"
 #include "scene/node_names.h"
 #include "scene/ply_check.h"
 #include "zip_archive.h"
@@ -209,10 +211,16 @@ std::string path_problem(const std::string& path) {
   return "it is not a regular file";
 }
 
-/// The whole file, or its first `limit` bytes.
-std::string read_bytes(const std::string& path, size_t limit = std::string::npos) {
+/// The whole file, or its first `limit` bytes (from `offset`).
+std::string read_bytes(const std::string& path, size_t limit = std::string::npos,
+                       uint64_t offset = 0) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw MeshError(std::strerror(errno));
+  if (offset > 0 && ::lseek(fd, off_t(offset), SEEK_SET) < 0) {
+    const int err = errno;
+    ::close(fd);
+    throw MeshError(std::strerror(err));
+  }
   std::string out;
   char buf[1 << 16];
   while (out.size() < limit) {
@@ -272,9 +280,22 @@ NodeMeshes read_3mf(const std::string& bytes, const Want& want) {
   return want.of(scene);
 }
 
+// Throws MeshError when a binary glTF's headers declare more than the file
+// holds (glb_check.h), before assimp allocates what they declare.
+void check_glb(const std::function<std::string(uint64_t, size_t)>& at, uint64_t size) {
+  const std::string problem = glb_problem(at, size);
+  if (!problem.empty()) throw MeshError(problem);
+}
+
 NodeMeshes read_with(std::string_view bytes, const std::string& extension, const Want& want,
                      std::vector<std::string>* warnings) {
   if (goes_to_ply_check(bytes, extension)) return read_ply(bytes, want, warnings);
+  if (looks_like_glb(bytes))
+    check_glb(
+        [&](uint64_t at, size_t n) {
+          return std::string(bytes.substr(std::min<uint64_t>(at, bytes.size()), n));
+        },
+        bytes.size());
   if (lower_extension(extension) == "3mf") return read_3mf(std::string(bytes), want);
   Assimp::Importer importer;
   // Only positions are needed; no post-processing that could move vertices.
@@ -299,6 +320,12 @@ NodeMeshes load_with(const std::string& path, const Want& want,
     }
     if (lower_extension(std::filesystem::path(path).extension().string()) == "3mf")
       return read_3mf(read_bytes(path), want);
+    if (looks_like_glb(read_bytes(path, 4))) {
+      std::error_code ec;
+      const uintmax_t size = std::filesystem::file_size(path, ec);
+      if (ec) throw MeshError(ec.message());
+      check_glb([&](uint64_t at, size_t n) { return read_bytes(path, n, at); }, size);
+    }
     Assimp::Importer importer;
     // Only positions are needed; no post-processing that could move vertices.
     return want.of(checked(importer.ReadFile(path, 0), importer));

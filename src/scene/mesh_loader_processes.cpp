@@ -84,7 +84,7 @@ struct Reader {
   size_t at = 1;
   void take(void* to, size_t n) {
     if (s.size() - at < n) throw std::runtime_error("short answer from the loader process");
-    std::memcpy(to, s.data() + at, n);
+    if (n > 0) std::memcpy(to, s.data() + at, n);  // `to` may be an empty vector's null data()
     at += n;
   }
   template <class T>
