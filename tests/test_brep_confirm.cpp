@@ -128,6 +128,23 @@ TEST(BrepConfirm, TheSolidsDecideWhereTheyAgreeWithTheWidenedBracket) {
   EXPECT_EQ(r.exact->verdict, ExactVerdict::kTimeout);
   EXPECT_EQ(r.status, Status::kUndecided);
 
+  // The time box ended the distance with the nearest faces' boxes meeting:
+  // not a contact, a timeout; the mesh verdict stands. With the boxes still
+  // apart beyond the contact band, separated by at least that much.
+  r = result(Status::kSeparated, 0.0);
+  ExactMeasure unsettled = measure(0.0, 0.0, std::nullopt);
+  unsettled.distance_exact = false;
+  unsettled.distance_timed_out = true;
+  pd::decide_exact(r, {0, 0}, context(0.05, 0.01, false), unsettled);
+  EXPECT_EQ(r.exact->verdict, ExactVerdict::kTimeout);
+  EXPECT_EQ(r.status, Status::kSeparated);
+  EXPECT_NE(r.exact->reason.find("not settled"), std::string::npos) << r.exact->reason;
+  r = result(Status::kSeparated, 0.0);
+  unsettled.distance = 0.3;
+  pd::decide_exact(r, {0, 0}, context(0.05, 0.01, false), unsettled);
+  EXPECT_EQ(r.exact->verdict, ExactVerdict::kSeparated);
+  EXPECT_NE(r.exact->reason.find("at least 0.3"), std::string::npos) << r.exact->reason;
+
   // Apart on the solids, as the meshes allow: separated with its distance.
   r = result(Status::kSeparated, 0.0);
   pd::decide_exact(r, {0, 0}, context(0.05, 0.01), measure(0.1, 0.0, std::nullopt));

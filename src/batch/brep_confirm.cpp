@@ -80,6 +80,16 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
   const double mesh_lo = mesh[0] - widen, mesh_hi = mesh[1] + widen;
   const double band = tol::kClassifyBand * c.pair_size;
   char why[256];
+  if (m.distance_timed_out && *m.distance <= touch) {
+    std::snprintf(why, sizeof why,
+                  "the distance between the solids was not settled within %.3g s (their nearest "
+                  "faces' boxes are %.6g apart)",
+                  m.seconds, *m.distance);
+    e.verdict = ExactVerdict::kTimeout;
+    e.reason = why;
+    r.exact = e;
+    return;
+  }
   if (*m.distance > touch) {
     if (mesh_lo > touch) {
       std::snprintf(why, sizeof why,
@@ -186,6 +196,7 @@ json encode(const std::optional<double>& hull_distance, const std::optional<Exac
             {"common_error", m->common_error}};
   if (m->distance) x["distance"] = *m->distance;
   x["distance_exact"] = m->distance_exact;
+  x["distance_timed_out"] = m->distance_timed_out;
   if (m->upper) x["upper"] = *m->upper;
   if (m->volume) x["volume"] = *m->volume;
   j["measure"] = x;
@@ -202,6 +213,7 @@ ExactMeasure measure_of(const json& x) {
   m.common_error = x.at("common_error").get<std::string>();
   if (x.contains("distance")) m.distance = x["distance"].get<double>();
   m.distance_exact = x.at("distance_exact").get<bool>();
+  m.distance_timed_out = x.at("distance_timed_out").get<bool>();
   if (x.contains("upper")) m.upper = x["upper"].get<double>();
   if (x.contains("volume")) m.volume = x["volume"].get<double>();
   if (m.ok && !m.distance) m.ok = false, m.error = "no distance measured";

@@ -186,9 +186,11 @@ double to_boundary(const std::vector<PlacedSolids::Face>& faces, const gp_Pnt& p
 struct BoundaryDistance {
   double value = INFINITY;
   bool exact = true;
+  bool timed_out = false;  ///< the deadline came first: `value` is the nearest box gap left
 };
 BoundaryDistance boundary_distance(const PlacedSolids& a, size_t i, const PlacedSolids& b, size_t j,
-                                   double touch, double measure_within, long& calls) {
+                                   double touch, double measure_within, Clock::time_point deadline,
+                                   long& calls) {
   struct Candidate {
     double gap;
     size_t fa, fb;
@@ -206,6 +208,14 @@ BoundaryDistance boundary_distance(const PlacedSolids& a, size_t i, const Placed
     if (c.gap > measure_within && measured >= tol::kExactFacePairs) {
       out.value = c.gap;  // every face pair left is at least this far apart
       out.exact = false;
+      break;
+    }
+    // Free-form faces (gear teeth) can cost a second a pair, and close ones
+    // are many: the time box holds here too.
+    if (Clock::now() > deadline) {
+      out.value = c.gap;
+      out.exact = false;
+      out.timed_out = true;
       break;
     }
     ++calls;
@@ -354,7 +364,8 @@ ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const 
       for (size_t j = 0; j < b.solids.size(); ++j) {
         if (a.boxes[i].Distance(b.boxes[j]) >= d) continue;
         const BoundaryDistance bd =
-            boundary_distance(a, i, b, j, touch, measure_within, m.distance_calls);
+            boundary_distance(a, i, b, j, touch, measure_within, deadline, m.distance_calls);
+        m.distance_timed_out = m.distance_timed_out || bd.timed_out;
         double dij = bd.value;
         if (dij > touch) {
           ++m.classifications;
@@ -367,7 +378,7 @@ ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const 
       }
     m.distance = d * to_scene;
     m.distance_exact = exact;
-    if (d <= touch) {
+    if (d <= touch && !m.distance_timed_out) {
       std::vector<gp_Pnt> starts;
       for (const Vec3& s : r.starts)
         starts.emplace_back(s.x() * to_mm, s.y() * to_mm, s.z() * to_mm);

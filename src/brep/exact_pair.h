@@ -55,6 +55,9 @@ struct ExactMeasure {
   /// !distance_exact (their faces' boxes are that far apart).
   std::optional<double> distance;
   bool distance_exact = true;
+  /// The time box ended the distance before it was settled: `distance` is
+  /// then a lower bound that may be 0 without the solids meeting.
+  bool distance_timed_out = false;
   double lower = 0.0;            ///< certified lower bound of the thickness T
   std::optional<Vec3> lower_at;  ///< the point that gave `lower`
   /// Upper bound of T from the common solid; 0 when it is empty.
