@@ -1,10 +1,14 @@
 #include "brep_cases.h"
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepClass_FaceClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
@@ -12,6 +16,8 @@
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Interface_Static.hxx>
@@ -179,6 +185,39 @@ std::vector<Points> leaf_face_samples(const std::string& path, int n) {
     for (size_t k = 0; k < pts.size(); ++k) m.col(long(k)) = pts[k];
     out.push_back(std::move(m));
   }
+  return out;
+}
+
+ExactReference exact_reference(const std::string& brep_a, const std::string& brep_b) {
+  const auto read = [](const std::string& path) {
+    TopoDS_Shape s;
+    BRep_Builder b;
+    if (!BRepTools::Read(s, path.c_str(), b)) throw std::runtime_error("cannot read " + path);
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer x(s, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
+    return solids;
+  };
+  const std::vector<TopoDS_Shape> a = read(brep_a), b = read(brep_b);
+  ExactReference out;
+  out.distance = INFINITY;
+  for (const TopoDS_Shape& sa : a)
+    for (const TopoDS_Shape& sb : b) {
+      BRepExtrema_DistShapeShape d(sa, sb);
+      if (d.IsDone()) out.distance = std::min(out.distance, d.Value());
+      BRepAlgoAPI_Common common(sa, sb);
+      if (!common.IsDone()) throw std::runtime_error("Common failed");
+      GProp_GProps g;
+      BRepGProp::VolumeProperties(common.Shape(), g);
+      out.common_volume += g.Mass();
+      if (g.Mass() > 0) {
+        Bnd_Box box;
+        BRepBndLib::AddOptimal(common.Shape(), box, false, false);
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        out.common_min_extent =
+            std::max(out.common_min_extent, std::min({x1 - x0, y1 - y0, z1 - z0}));
+      }
+    }
   return out;
 }
 

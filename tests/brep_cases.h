@@ -62,4 +62,15 @@ void write_brep_part(const std::string& path, const BrepCasePart& part);
 /// n × n grid over each face's parameter box, kept where it lies on the face.
 std::vector<Points> leaf_face_samples(const std::string& path, int n);
 
+/// An exact reference for a pair of .brep files, from Open CASCADE alone (no
+/// pdcheck code): the distance between their solids (BRepExtrema, solid by
+/// solid) and the volume of their common part (BRepAlgoAPI_Common), and that
+/// part's narrowest axis-aligned box extent (0 when empty).
+struct ExactReference {
+  double distance = 0.0;
+  double common_volume = 0.0;
+  double common_min_extent = 0.0;
+};
+ExactReference exact_reference(const std::string& brep_a, const std::string& brep_b);
+
 }  // namespace pd_test
