@@ -23,7 +23,8 @@ if [ "$MODE" = all ]; then
              unzip  # the --bcf tests list and unpack its zip
              clang libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, symbolizer
              chromium  # the HTML report's browser test
-             openscad)  # scripts/make_cad_assemblies.py: CAD test assemblies (and their ctest)
+             openscad  # scripts/make_cad_assemblies.py: CAD test assemblies (and their ctest)
+             occt-misc)  # Open CASCADE's sample parts: B-rep files nobody shaped for pdcheck
 fi
 # Callers may need more (accuracy_vs_time.sh: python3-matplotlib for its plot).
 read -r -a EXTRA <<<"${EXTRA_PACKAGES:-}"
