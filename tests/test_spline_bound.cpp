@@ -156,3 +156,44 @@ TEST(SplineBound, SurfaceBoundsHoldAndRangesNarrowThem) {
 }
 
 }  // namespace
+
+namespace {
+
+// How far a spline piece lies from its chord, against dense samples.
+double chord_deviation(const pd::SplineCurve& c, double a, double b) {
+  const Vec3 p = curve(c, a), q = curve(c, b), d = (q - p).normalized();
+  double worst = 0.0;
+  for (int s = 0; s <= 400; ++s) {
+    const Vec3 x = curve(c, a + (b - a) * s / 400.0) - p;
+    const double along = std::clamp(x.dot(d), 0.0, (q - p).norm());
+    worst = std::max(worst, (x - along * d).norm());
+  }
+  return worst;
+}
+
+TEST(SplineBound, ChordBoundReadsOnlyWhatLeavesTheChord) {
+  // A straight line whose parameter runs unevenly: a large C'', none across.
+  const pd::SplineCurve line{
+      {{0, 0, 0}, {0.2, 0, 0}, {3, 0, 0}, {4, 0, 0}}, {0, 0, 0, 0, 1, 1, 1, 1}, 3};
+  const pd::CurveDerivativeNets n = pd::spline_derivative_nets(line, 0, 1);
+  EXPECT_GT(pd::spline_second_derivative_bound(line, 0, 1), 1.0);
+  EXPECT_NEAR(pd::chord_second_derivative(n, curve(line, 1) - curve(line, 0)), 0.0, 1e-12);
+  // A bent curve running forward: the across part bounds its distance from the chord.
+  const pd::SplineCurve bent{
+      {{0, 0, 0}, {0.2, 1, 0}, {3, 1, 0}, {4, 0, 0}}, {0, 0, 0, 0, 1, 1, 1, 1}, 3};
+  const double across = pd::chord_second_derivative(pd::spline_derivative_nets(bent, 0, 1),
+                                                    curve(bent, 1) - curve(bent, 0));
+  EXPECT_LT(across, pd::spline_second_derivative_bound(bent, 0, 1));
+  EXPECT_LE(chord_deviation(bent, 0, 1), pd::segment_interpolation_bound(0, 1, across) + 1e-12);
+  // A curve that turns back along its chord (a hook): the whole C'' is read,
+  // since points beyond the chord's end are not within the across part.
+  const pd::SplineCurve hook{
+      {{0, 0, 0}, {5, 1, 0}, {5, 2, 0}, {4, 2, 0}}, {0, 0, 0, 0, 1, 1, 1, 1}, 3};
+  const pd::CurveDerivativeNets h = pd::spline_derivative_nets(hook, 0, 1);
+  EXPECT_EQ(pd::chord_second_derivative(h, curve(hook, 1) - curve(hook, 0)),
+            pd::spline_second_derivative_bound(hook, 0, 1));
+  EXPECT_LE(chord_deviation(hook, 0, 1),
+            pd::segment_interpolation_bound(0, 1, pd::spline_second_derivative_bound(hook, 0, 1)));
+}
+
+}  // namespace

@@ -69,7 +69,7 @@ double chord_second_derivative(const CurveDerivativeNets& n, const Vec3& chord) 
   const double length = chord.norm();
   const Vec3 d = length > 0 ? Vec3(chord / length) : Vec3::Zero();
   bool forward = length > 0;
-  for (const Vec3& q : n.first) forward = forward && q.dot(d) > 0;
+  for (const Vec3& q : n.first) forward = forward && q.dot(d) >= 0;
   for (const Vec3& q : n.second) {
     whole = std::max(whole, q.norm());
     across = std::max(across, (q - q.dot(d) * d).norm());

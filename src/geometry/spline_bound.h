@@ -57,7 +57,7 @@ CurveDerivativeNets spline_derivative_nets(const SplineCurve& c, double t0, doub
 /// The second-derivative length that bounds how far a curve piece lies from
 /// its chord (`chord` = C(t1) − C(t0)), for segment_interpolation_bound:
 /// the part of C'' across the chord when the piece runs forward along it
-/// (every C' control point has a positive component along the chord: no point
+/// (no C' control point has a negative component along the chord: no point
 /// projects beyond the chord's ends, so only the across part moves the curve
 /// off it); else |C''|. A parametrisation that speeds up and slows down along
 /// a straight line has a large |C''| and none of it across. Infinity across a
