@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/brep_confirm.h"
+#include "brep/exact_pair.h"
 #include "brep_cases.h"
 #include "cli_support.h"
 
@@ -159,6 +160,38 @@ TEST(BrepConfirm, TheSolidsDecideWhereTheyAgreeWithTheWidenedBracket) {
   EXPECT_EQ(r.exact->verdict, ExactVerdict::kFailed);
   EXPECT_EQ(r.status, Status::kFalsePositive);
   EXPECT_NE(pd::exact_sentence(*r.exact).find("BRep_API"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// The time box holds in the distance too: with no time at all the nearest
+// faces' boxes (meeting here) are all the distance says, and the pair is a
+// timeout, not a contact; with time, the boxes touch and the distance is 0.
+TEST(BrepConfirm, TheTimeBoxEndsTheDistanceWithoutCallingItContact) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_brep_part(dir + "left.brep",
+                           {"left", {pd_test::BrepSolid::Kind::kBox, {10, 10, 10}}});
+  pd_test::write_brep_part(
+      dir + "right.brep",
+      {"right", {pd_test::BrepSolid::Kind::kBox, {10, 10, 10}}, Vec3(10, 0, 0)});
+  pd::ExactRequest q;
+  q.common = false;
+  q.seconds = 0.0;
+  const ExactMeasure late = pd::measure_exact_pair({dir + "left.brep"}, {dir + "right.brep"}, q);
+  ASSERT_TRUE(late.ok) << late.error;
+  EXPECT_TRUE(late.distance_timed_out);
+  EXPECT_FALSE(late.distance_exact);
+  PairResult r = result(Status::kSeparated, 0.0);
+  pd::decide_exact(r, {0, 0}, context(0.05, 0.01, false), late);
+  EXPECT_EQ(r.exact->verdict, ExactVerdict::kTimeout);
+
+  q.seconds = 10.0;
+  const ExactMeasure settled = pd::measure_exact_pair({dir + "left.brep"}, {dir + "right.brep"}, q);
+  ASSERT_TRUE(settled.ok) << settled.error;
+  EXPECT_FALSE(settled.distance_timed_out);
+  EXPECT_NEAR(*settled.distance, 0.0, 1e-9);
 }
 
 }  // namespace

@@ -374,7 +374,8 @@ ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const 
           BRepClass3d_SolidClassifier in_a(a.solids[i], some_point(b.solids[j]), 1e-9);
           if (in_b.State() == TopAbs_IN || in_a.State() == TopAbs_IN) dij = 0.0;
         }
-        if (dij < d) d = dij, exact = bd.exact || dij == 0.0;
+        // 0 from containment is exact; 0 as a timed-out box gap is not.
+        if (dij < d) d = dij, exact = bd.exact || (dij == 0.0 && dij != bd.value);
       }
     m.distance = d * to_scene;
     m.distance_exact = exact;
