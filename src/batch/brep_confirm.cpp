@@ -221,6 +221,20 @@ ExactMeasure measure_of(const json& x) {
 }
 
 // The smallest gap between the pieces of two parts' hulls (0 when any overlap).
+// A lower bound of the hulls' distance from one direction v: the gap between
+// their extents along it (a slab between them), for each piece pair. O(n),
+// where the distance solve below costs up to 0.2 s on a finely meshed shaft.
+double slab_gap(const Part& a, const Part& b, const Vec3& v) {
+  double gap = INFINITY;
+  for (const Hull& p : a.pieces)
+    for (const Hull& q : b.pieces) {
+      const Eigen::RowVectorXd sp = v.transpose() * p.vertices, sq = v.transpose() * q.vertices;
+      gap = std::min(gap,
+                     std::max({0.0, sq.minCoeff() - sp.maxCoeff(), sp.minCoeff() - sq.maxCoeff()}));
+    }
+  return gap;
+}
+
 double hull_gap(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt) {
   double gap = INFINITY;
   for (const Hull& p : a.pieces)
@@ -293,9 +307,12 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     const ExactContext& c = context[k];
     std::optional<double> gap;
     if (r.status == Status::kSeparated || r.status == Status::kClearanceViolation) {
-      if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
-      gap = hull_gap(pa, pb, options.solver, *ipopt);
+      // The hull stage's direction first: its slab often certifies alone.
       PairResult probe = r;
+      gap = slab_gap(pa, pb, r.direction);
+      if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
+      if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
+      gap = std::max(*gap, hull_gap(pa, pb, options.solver, *ipopt));
       if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
     }
     ExactRequest q;
