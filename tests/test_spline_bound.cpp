@@ -93,6 +93,11 @@ TEST(SplineBound, CreasesHaveNoBoundAcrossThem) {
   EXPECT_EQ(pd::spline_second_derivative_bound(cubic, 0.3, 0.7),
             std::numeric_limits<double>::infinity());
   EXPECT_TRUE(std::isfinite(pd::spline_second_derivative_bound(cubic, 0.5, 0.7)));
+  // The clamped ends are no creases, even where a range reaches past them by
+  // rounding (a triangle's corner on the end of an extrusion's basis curve).
+  EXPECT_TRUE(std::isfinite(pd::spline_second_derivative_bound(cubic, 0.6, 1.0 + 1e-12)));
+  EXPECT_TRUE(std::isfinite(pd::spline_second_derivative_bound(cubic, -1e-12, 0.4)));
+  EXPECT_EQ(pd::spline_second_derivative_bound(line, 0.6, 1.0 + 1e-12), 0.0);
   // A surface creased along u = 0.5 (degree 2, double knot): S_uu unbounded
   // across it, S_vv still bounded.
   pd::SplineSurface s;

@@ -31,12 +31,15 @@ bool meets(const std::vector<double>& k, size_t first, int degree, double a, dou
 
 // Whether a knot of multiplicity ≥ degree (where the spline is only C0: a
 // crease, its second derivative a Dirac mass) lies strictly inside (a, b).
+// The end knots (a clamped vector's first and last values) are no creases:
+// nothing lies beyond them, though a range may reach past them by rounding.
 bool crease_inside(const std::vector<double>& k, int degree, double a, double b) {
-  if (degree < 1) return false;
+  if (degree < 1 || k.empty()) return false;
   for (size_t i = 0; i < k.size();) {
     size_t j = i;
     while (j < k.size() && k[j] == k[i]) ++j;
-    if (k[i] > a && k[i] < b && j - i >= size_t(degree)) return true;
+    const bool end = i == 0 || j == k.size();
+    if (!end && k[i] > a && k[i] < b && j - i >= size_t(degree)) return true;
     i = j;
   }
   return false;
