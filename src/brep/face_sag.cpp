@@ -177,10 +177,8 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
     const double t0 = poly->Parameter(k), t1 = poly->Parameter(k + 1);
     const Vec3 chord(b.X() - a.X(), b.Y() - a.Y(), b.Z() - a.Z());
     double dev;
-    if (spline && std::isfinite(dev = segment_interpolation_bound(
-                                    std::min(t0, t1), std::max(t0, t1),
-                                    spline->across(std::min(t0, t1), std::max(t0, t1),
-                                                   t0 < t1 ? chord : Vec3(-chord))))) {
+    if (spline && std::isfinite(dev = spline->chord_deviation(std::min(t0, t1), std::max(t0, t1),
+                                                              t0 < t1 ? chord : Vec3(-chord)))) {
       // bounded (a crease inside the segment leaves it unbounded: estimated below)
     } else if (type == GeomAbs_Circle) {
       const double r = c.Circle().Radius();

@@ -211,12 +211,12 @@ double CurveNetBounds::over(double a, double b) const {
   return std::min(m, whole);
 }
 
-double CurveNetBounds::across(double a, double b, const Vec3& chord) const {
+double CurveNetBounds::chord_deviation(double a, double b, const Vec3& chord) const {
   const CurveDerivativeNets whole = spline_derivative_nets(whole_, a, b);
-  const double from_whole = chord_second_derivative(whole, chord);
+  const double from_whole = chord_deviation_bound(whole, chord, b - a);
   const std::optional<CurveDerivativeNets> p = pieces(a, b);
   if (!p || whole.crease) return from_whole;
-  return std::min(from_whole, chord_second_derivative(*p, chord));
+  return std::min(from_whole, chord_deviation_bound(*p, chord, b - a));
 }
 
 }  // namespace pd

@@ -44,9 +44,9 @@ class CurveNetBounds {
   static std::optional<CurveNetBounds> of(const Adaptor3d_Curve& c, double t0, double t1);
   /// A bound of |C''| over [a, b]; infinite across a crease.
   double over(double a, double b) const;
-  /// The second-derivative length that bounds how far C over [a, b] lies from
-  /// its chord C(b) − C(a) (chord_second_derivative).
-  double across(double a, double b, const Vec3& chord) const;
+  /// A bound of how far C over [a, b] lies from its chord C(b) − C(a),
+  /// either way (chord_deviation_bound).
+  double chord_deviation(double a, double b, const Vec3& chord) const;
 
  private:
   // The derivative nets of the pieces meeting [a, b] (nullopt: read the whole net).

@@ -66,18 +66,19 @@ CurveDerivativeNets spline_derivative_nets(const SplineCurve& c, double t0, doub
   return out;
 }
 
-double chord_second_derivative(const CurveDerivativeNets& n, const Vec3& chord) {
+double chord_deviation_bound(const CurveDerivativeNets& n, const Vec3& chord, double h) {
   if (n.crease) return kUnbounded;
-  double whole = 0.0, across = 0.0;
+  double whole = 0.0, across = 0.0, back = 0.0;
   const double length = chord.norm();
   const Vec3 d = length > 0 ? Vec3(chord / length) : Vec3::Zero();
-  bool forward = length > 0;
-  for (const Vec3& q : n.first) forward = forward && q.dot(d) >= 0;
+  for (const Vec3& q : n.first) back = std::max(back, -q.dot(d));
   for (const Vec3& q : n.second) {
     whole = std::max(whole, q.norm());
     across = std::max(across, (q - q.dot(d) * d).norm());
   }
-  return forward ? across : whole;
+  const double h2 = h * h / 8.0;
+  if (!(length > 0)) return h2 * whole;
+  return std::min(h2 * whole, h2 * across + h * back);
 }
 
 double spline_second_derivative_bound(const SplineCurve& c, double t0, double t1) {

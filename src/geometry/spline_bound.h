@@ -54,15 +54,19 @@ struct CurveDerivativeNets {
 };
 CurveDerivativeNets spline_derivative_nets(const SplineCurve& c, double t0, double t1);
 
-/// The second-derivative length that bounds how far a curve piece lies from
-/// its chord (`chord` = C(t1) − C(t0)), for segment_interpolation_bound:
-/// the part of C'' across the chord when the piece runs forward along it
-/// (no C' control point has a negative component along the chord: no point
-/// projects beyond the chord's ends, so only the across part moves the curve
-/// off it); else |C''|. A parametrisation that speeds up and slows down along
-/// a straight line has a large |C''| and none of it across. Infinity across a
-/// crease. Pure.
-double chord_second_derivative(const CurveDerivativeNets& n, const Vec3& chord);
+/// An upper bound of the distance, either way, between a curve piece over a
+/// parameter interval of length h and its chord (`chord` = C(t1) − C(t0)):
+/// the least of
+/// - h²/8 · max|C''| (each point within that of the chord point at the same
+///   parameter), and
+/// - h²/8 · max|C''⊥| + h · max(0, −min C'·d), d the chord's direction and
+///   C''⊥ the part of C'' across it: the curve lies that close to the chord's
+///   line, and runs back along it (beyond an end) at most h times its
+///   steepest backward speed; the chord's points are covered by continuity.
+///   A parameter that speeds up and slows down along a straight line has a
+///   large |C''| and none of it across.
+/// Infinity across a crease. Pure.
+double chord_deviation_bound(const CurveDerivativeNets& n, const Vec3& chord, double h);
 
 /// Upper bounds of |S_uu|, |S_uv| and |S_vv| over [u0, u1] × [v0, v1];
 /// infinite |S_uu| (|S_vv|) when a u (v) crease lies strictly inside. Pure.
