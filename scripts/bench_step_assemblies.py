@@ -49,26 +49,13 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+# One pdcheck run, timed, its report parsed: the same as the CAD-assembly benchmark's.
+from bench_cad_assemblies import run as run_pdcheck  # noqa: E402
 MODES = ("asm-cold", "parts-cold", "asm-cached", "parts-cached", "freecad")
 FINDINGS = ("interference", "false_positive", "undecided", "clearance_violation")
 DECISIVE = ("interference", "false_positive", "touching", "separated")
 FC_TOUCH, FC_VOLUME = 1e-7, 1e-6
-
-
-def run_pdcheck(pdcheck, scene, args, timeout):
-    t0 = time.monotonic()
-    try:
-        p = subprocess.run([pdcheck, scene, "--quiet"] + args, capture_output=True, text=True,
-                           timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return time.monotonic() - t0, None, "timed out after %g s" % timeout
-    dt = time.monotonic() - t0
-    if p.returncode not in (0, 1, 3):
-        return dt, None, "exit %d: %s" % (p.returncode, p.stderr.strip()[-300:])
-    try:
-        return dt, json.loads(p.stdout), None
-    except ValueError as e:
-        return dt, None, "report does not parse (%s)" % e
 
 
 def run_freecad(freecadcmd, scene, out, timeout):

@@ -176,16 +176,17 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
     }
     const double t0 = poly->Parameter(k), t1 = poly->Parameter(k + 1);
     const Vec3 chord(b.X() - a.X(), b.Y() - a.Y(), b.Z() - a.Z());
-    double dev;
-    if (spline && std::isfinite(dev = spline->chord_deviation(std::min(t0, t1), std::max(t0, t1),
-                                                              t0 < t1 ? chord : Vec3(-chord)))) {
-      // bounded (a crease inside the segment leaves it unbounded: estimated below)
+    double dev = INFINITY;  // a bound where one is known (a spline's is infinite across a crease)
+    if (spline) {
+      dev = spline->chord_deviation(std::min(t0, t1), std::max(t0, t1),
+                                    t0 < t1 ? chord : Vec3(-chord));
     } else if (type == GeomAbs_Circle) {
       const double r = c.Circle().Radius();
       dev = r * (1.0 - std::cos(0.5 * std::abs(t1 - t0)));
     } else if (type == GeomAbs_Ellipse) {
       dev = segment_interpolation_bound(t0, t1, c.Ellipse().MajorRadius());
-    } else {
+    }
+    if (!std::isfinite(dev)) {
       out.bound = false;
       const double mid = 0.5 * (t0 + t1);
       dev = (c.Value(mid).XYZ() - 0.5 * (a.XYZ() + b.XYZ())).Modulus();
@@ -229,7 +230,7 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
     const double v0 = std::min({uv[0].Y(), uv[1].Y(), uv[2].Y()});
     const double v1 = std::max({uv[0].Y(), uv[1].Y(), uv[2].Y()});
     SecondDerivativeBounds m;
-    double dev;
+    double dev = INFINITY;  // a bound where one is known (a spline's is infinite across a crease)
     if (s.GetType() == GeomAbs_Sphere) {
       // The triangle lies inside the sphere (its corners are on it), at most
       // r − d(c, T) from it; every point of the sphere lies on a ray from the
@@ -240,13 +241,11 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
       const auto v = [](const gp_Pnt& q) { return Vec3(q.X(), q.Y(), q.Z()); };
       const Vec3 near = closest_on_triangle(c, v(p[0]), v(p[1]), v(p[2]));
       dev = std::max(0.0, sphere.Radius() - (near - c).norm());
-    } else if (analytic_bounds(s, nets, u0, u1, v0, v1, m) &&
-               std::isfinite(dev = triangle_interpolation_bound(
-                                 {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()),
-                                  Vec2(uv[2].X(), uv[2].Y())},
-                                 m))) {
-      // bounded (a spline's crease inside the triangle leaves it unbounded)
-    } else {
+    } else if (analytic_bounds(s, nets, u0, u1, v0, v1, m)) {
+      dev = triangle_interpolation_bound(
+          {Vec2(uv[0].X(), uv[0].Y()), Vec2(uv[1].X(), uv[1].Y()), Vec2(uv[2].X(), uv[2].Y())}, m);
+    }
+    if (!std::isfinite(dev)) {
       out.bound = false;
       dev = sampled_deviation(s, uv, p);
     }

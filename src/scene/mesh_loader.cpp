@@ -311,16 +311,17 @@ NodeMeshes load_with(const std::string& path, const Want& want,
   try {
     // A PLY is read from memory, checked and maybe rewritten; other formats
     // from the path, so a glTF finds its external buffers.
-    if (goes_to_ply_check(read_bytes(path, 4), std::filesystem::path(path).extension().string())) {
+    const std::string head = read_bytes(path, 4);
+    const std::string extension = std::filesystem::path(path).extension().string();
+    if (goes_to_ply_check(head, extension)) {
       std::vector<std::string> found;
       NodeMeshes meshes = read_ply(read_bytes(path), want, &found);
       if (warnings)
         for (const std::string& w : found) warnings->push_back("mesh file " + path + ": " + w);
       return meshes;
     }
-    if (lower_extension(std::filesystem::path(path).extension().string()) == "3mf")
-      return read_3mf(read_bytes(path), want);
-    if (looks_like_glb(read_bytes(path, 4))) {
+    if (lower_extension(extension) == "3mf") return read_3mf(read_bytes(path), want);
+    if (looks_like_glb(head)) {
       std::error_code ec;
       const uintmax_t size = std::filesystem::file_size(path, ec);
       if (ec) throw MeshError(ec.message());
