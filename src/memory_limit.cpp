@@ -49,6 +49,37 @@ double memory_share_mb(double available_mb, int processes) {
   return available_mb / 2.0 / std::max(1, processes);
 }
 
+double memory_budget_mb(double available_mb) {
+  if (!(available_mb > 0.0)) return 1024.0;
+  return std::max(256.0, available_mb / 8.0);
+}
+
+double parse_memory_mb(const std::string& text) {
+  size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string unit = text.substr(used);
+  if (!unit.empty() && (unit.back() == 'B' || unit.back() == 'b') && unit.size() == 2)
+    unit.pop_back();
+  double scale = -1.0;
+  if (unit.empty() || unit == "M" || unit == "m")
+    scale = 1.0;
+  else if (unit == "K" || unit == "k")
+    scale = 1.0 / 1024.0;
+  else if (unit == "G" || unit == "g")
+    scale = 1024.0;
+  else if (unit == "T" || unit == "t")
+    scale = 1024.0 * 1024.0;
+  if (used == 0 || scale < 0 || !(v > 0.0) || !std::isfinite(v * scale))
+    throw std::invalid_argument("--memory: \"" + text +
+                                "\" is not an amount of memory (e.g. 512M, 2G, or a number of MB)");
+  return v * scale;
+}
+
 bool can_cap_address_space() {
 #ifdef PD_ADDRESS_SANITIZER
   return false;

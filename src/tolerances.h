@@ -380,14 +380,11 @@ inline constexpr double kShardPairCost = 200.0;
 /// scene, with no eviction.
 inline constexpr long kInlineHullCacheVertices = 1000;
 
-/// Triangles, over a whole scene, whose placed distances (SolidDistance: its
-/// mesh, trees and shells) the parts stage may keep after measuring a file's
-/// convexity on them, for the refinement to take over instead of building
-/// them again (scene/parts.h, PartSurface::solid). They cost about 300 bytes a
-/// triangle (twice that for a union of shells), so what is held between the
-/// two stages stays under about 150 MB (300 MB); past the cap a file is
-/// measured alike and its distances built again by the refinement.
-inline constexpr long kKeptSolidTriangles = 500000;
+/// Bytes a part's distances (SolidDistance: its mesh, trees and shells) hold
+/// per triangle, as the refinement's cache counts them against the memory
+/// budget (batch/refine.cpp): the resident growth of building them, measured
+/// on CAD meshes (a union of shells holds up to twice as much; rounded up).
+inline constexpr long kSolidBytesPerTriangle = 400;
 
 /// Tessellation sag (geometry/tessellation_sag.h). Absolute angle, radians: an
 /// edge whose facets turn by at most this is a tessellation crease inside a

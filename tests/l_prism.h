@@ -39,7 +39,6 @@ inline pd::Part l_prism_part(const std::string& id) {
   part.mode = pd::Pieces::kAuto;
   part.convex = false;
   part.surface.emplace();
-  part.surface->mesh = mesh;
   part.surface->file_mesh = mesh;
   part.surface->closed = true;
   return part;

@@ -137,9 +137,9 @@ TEST(HtmlGeometry, ANonconvexPairsOverlapIsThePartsOwnNotTheirHulls) {
   EXPECT_FALSE(apart.mesh);
   EXPECT_EQ(apart.note, "");
   Part open = pd_test::l_prism_part("open tray");
-  auto cut = std::make_shared<Mesh>(*open.surface->mesh);
+  auto cut = std::make_shared<Mesh>(*open.surface->file_mesh);
   cut->triangles.conservativeResize(3, cut->triangles.cols() - 1);
-  open.surface->mesh = cut;
+  open.surface->file_mesh = cut;
   const SolidOverlap not_solid = solid_overlap_web_mesh(open, block, 4000);
   EXPECT_FALSE(not_solid.mesh);
   EXPECT_NE(not_solid.note.find("\"open tray\" is an open mesh"), std::string::npos)
@@ -183,7 +183,7 @@ TEST(HtmlGeometry, LargeMeshesAreClusteredUnderTheCap) {
   part.id = "sheet";
   part.pieces.push_back(convex_hull(mesh->vertices));
   part.surface.emplace();
-  part.surface->mesh = mesh;
+  part.surface->file_mesh = mesh;
   const WebMesh m = part_web_mesh(part, 4000);
   EXPECT_LE(m.triangles.size(), 4000u);
   EXPECT_GT(m.triangles.size(), 1000u);  // still a sheet, not its hull (12-ish triangles)

@@ -33,7 +33,6 @@ Part mesh_part(const std::string& id, const Mesh& m, bool convex) {
   s.file_mesh = std::make_shared<const Mesh>(m);
   s.file_hash = id;
   s.closed = true;
-  if (!convex) s.mesh = s.file_mesh;
   p.surface = std::move(s);
   return p;
 }
@@ -294,30 +293,58 @@ TEST(Refine, BlocksInAnLBracketsNotchAreDecidedWhereTheyMeet) {
   EXPECT_FALSE(results[3].hull_depth);
 }
 
-TEST(Refine, MeasuresWithThePartsStagesDistancesThenLetsThemGo) {
-  // The parts stage hands over the distances it measured the convexity on
-  // (PartSurface::solid). Handed distances of the bracket moved 100 away, the
-  // refinement must find the block clear of it (its own mesh would put the
-  // block 0.3 into the leg); afterwards no part holds them.
-  std::vector<Part> parts = {
-      mesh_part("bracket", shapes::l_bracket(40, 5, 20), false),
-      mesh_part("deep", shapes::box(Vec3(4.7, 5, 2), Vec3(25, 25, 18)), true)};
-  auto moved = std::make_shared<const SolidDistance>(
-      shapes::translated(shapes::l_bracket(40, 5, 20), Vec3(100, 0, 0)));
-  const std::weak_ptr<const SolidDistance> handed = moved;
-  parts[0].surface->solid = std::move(moved);
-  const std::vector<std::pair<int, int>> pairs = {{0, 1}};
+TEST(Refine, ReadsSurfacesFromTheStoreAndDecidesAlikeUnderAnyBudget) {
+  // The parts stage keeps no surface: the refinement reads each from the mesh
+  // store, and the memory budget decides only what it keeps between pairs,
+  // never a result. Four blocks around a bracket's leg, each pair refined.
+  const auto store = MeshStore::temporary();
+  std::vector<Part> parts = {mesh_part("bracket", shapes::l_bracket(40, 5, 20), false)};
+  for (int k = 0; k < 4; ++k)
+    parts.push_back(
+        mesh_part("block" + std::to_string(k),
+                  shapes::box(Vec3(4.7 - 0.1 * k, 5 + 8 * k, 2), Vec3(25, 11 + 8 * k, 18)), true));
+  for (Part& p : parts) {
+    const Mesh& m = *p.surface->file_mesh;
+    ASSERT_EQ(store->put(p.id, m), "");
+    p.surface->stored = StoredMesh{store, p.id, m.vertices.cols(), m.triangles.cols()};
+    p.surface->file_mesh.reset();
+  }
+  std::vector<std::pair<int, int>> pairs;
+  for (int k = 1; k < 5; ++k) pairs.push_back({0, k});
+  const std::function<PairChecks(int, int)> checks = [](int, int) { return PairChecks{}; };
+  IpoptLocalSolver ipopt;
+  std::vector<std::vector<PairResult>> runs;
+  for (double memory : {0.0, 1024.0})
+    for (int jobs : {1, 2}) {
+      RunOptions options;
+      options.tolerance = 0.1;
+      options.quiet = true;
+      options.memory_mb = memory;
+      options.jobs = jobs;
+      std::vector<PairResult> results;
+      for (auto [a, b] : pairs)
+        results.push_back(
+            solve_part_pair(a, parts[a], b, parts[b], SolverSettings{}, 0.1, ipopt, checks(a, b)));
+      refine_nonconvex_pairs(parts, pairs, results, options, checks);
+      runs.push_back(results);
+    }
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    EXPECT_EQ(runs[0][k].depth_source, "thickness") << k;
+    EXPECT_EQ(runs[0][k].status, Status::kInterference) << k;
+    for (size_t r = 1; r < runs.size(); ++r) {
+      EXPECT_EQ(runs[r][k].status, runs[0][k].status) << r << " " << k;
+      EXPECT_EQ(runs[r][k].depth, runs[0][k].depth) << r << " " << k;
+      EXPECT_EQ(runs[r][k].depth_bounds, runs[0][k].depth_bounds) << r << " " << k;
+      EXPECT_EQ(runs[r][k].depth_source, runs[0][k].depth_source) << r << " " << k;
+    }
+  }
+  // A surface gone from the store leaves the pair to its convex pieces: never a crash.
+  parts[0].surface->stored->key = "gone";
   RunOptions options;
   options.tolerance = 0.1;
   options.quiet = true;
-  const std::function<PairChecks(int, int)> checks = [](int, int) { return PairChecks{}; };
-  IpoptLocalSolver ipopt;
   std::vector<PairResult> results = {
       solve_part_pair(0, parts[0], 1, parts[1], SolverSettings{}, 0.1, ipopt, checks(0, 1))};
-  ASSERT_EQ(results[0].status, Status::kInterference);
-  refine_nonconvex_pairs(parts, pairs, results, options, checks);
-  EXPECT_EQ(results[0].status, Status::kSeparated);
-  EXPECT_EQ(results[0].depth_source, "mesh-test");
-  EXPECT_FALSE(parts[0].surface->solid);
-  EXPECT_TRUE(handed.expired());
+  refine_nonconvex_pairs(parts, {{0, 1}}, results, options, checks);
+  EXPECT_NE(results[0].depth_source, "thickness");
 }

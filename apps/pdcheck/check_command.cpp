@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "batch/empty_input.h"
+#include "memory_limit.h"
 #include "report/report_json.h"
 #include "report/review_json.h"
 #include "report/warning_lines.h"
@@ -88,6 +89,18 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
                  "MB one mesh loader process may allocate before its file is reported as an "
                  "error (default: half the machine's memory shared among the loaders; 0: none)")
       ->check(in_range(0, 1e9, "must be a number of MB from 0 to 1e9"));
+  app.add_option("--memory", a.memory,
+                 "memory the run keeps part surfaces in for reuse across their pairs (512M, 2G; "
+                 "default: an eighth of the machine's, at least 256M); what the pairs being "
+                 "solved need comes on top (docs/performance.md)")
+      ->check([](const std::string& v) {
+        try {
+          pd::parse_memory_mb(v);
+          return std::string();
+        } catch (const std::exception& e) {
+          return std::string(e.what()).substr(std::string("--memory: ").size());
+        }
+      });
   app.add_flag("-q,--quiet", a.quiet, "no progress and no summary line on stderr");
   app.add_flag("--allow-empty", a.allow_empty,
                "accept an input with nothing to check (no parts, an empty part list, every part "

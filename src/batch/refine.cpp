@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "batch/contact_band.h"
 #include "batch/decomposition_cache.h"
 #include "batch/pair_workers.h"
 #include "batch/progress.h"
 #include "batch/refine_cache.h"
+#include "byte_cache.h"
 #include "geometry/decompose.h"
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
@@ -176,10 +179,7 @@ using Clock = std::chrono::steady_clock;
 // The surface a mesh test sees: the part's own, else (inline or convex parts
 // without one kept) the triangulated hull of each of its pieces.
 Mesh surface_mesh(const Part& p) {
-  if (p.surface && p.surface->mesh) return *p.surface->mesh;
-  if (p.surface && p.surface->file_mesh)
-    return {apply_placement(p.surface->file_mesh->vertices, p.surface->placement),
-            p.surface->file_mesh->triangles};
+  if (p.surface) return placed_mesh_of(*p.surface);
   Mesh m;
   std::vector<Vec3> v;
   std::vector<std::array<int, 3>> t;
@@ -254,12 +254,12 @@ void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
     } else {
       const auto t0 = Clock::now();
       try {
-        const auto d = decompose_convex(*s.file_mesh, f.tol, tol::kDecomposeSeconds);
+        const auto d = decompose_convex(*file_mesh_of(s), f.tol, tol::kDecomposeSeconds);
         for (const Points& p : d.pieces) f.result.pieces.push_back(p);
         f.result.complete = d.complete;
         f.result.note = d.note;
       } catch (const std::exception& e) {  // never lose the pair: the hull is a fallback
-        f.result.pieces = {s.file_mesh->vertices};
+        f.result.pieces.clear();           // each instance takes its own hull (below)
         f.result.complete = false;
         f.result.note = std::string("decomposition failed: ") + e.what();
       }
@@ -373,10 +373,50 @@ std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& part
   return out;
 }
 
-// The parts stage's distances (PartSurface::solid), once taken or not needed.
-void release_solids(std::vector<Part>& parts) {
-  for (Part& p : parts)
-    if (p.surface) p.surface->solid.reset();
+// What a part's distances (SolidDistance) hold, for the cache's budget:
+// measured as the resident growth of building them on closed CAD meshes of
+// 10^4–10^6 triangles (scripts/bench_scale.py's parts), rounded up.
+size_t solid_bytes(long triangles) {
+  return size_t(std::max(0L, triangles)) * tol::kSolidBytesPerTriangle + (64u << 10);
+}
+
+// The order in which the flagged pairs are refined: by where their parts sit
+// (a Morton curve over the parts' box centres), so that a part's pairs run
+// close together and its distances, built once, serve them from the cache.
+std::vector<size_t> by_locality(const std::vector<Part>& parts,
+                                const std::vector<std::pair<int, int>>& pairs,
+                                const std::vector<size_t>& flagged) {
+  Aabb all;
+  bool any = false;
+  for (size_t k : flagged)
+    for (int p : {pairs[k].first, pairs[k].second}) {
+      all = any ? all.merged(parts[p].box) : parts[p].box;
+      any = true;
+    }
+  const auto morton = [&](int p) {
+    const Vec3 c = 0.5 * (parts[p].box.lo + parts[p].box.hi);
+    const Vec3 span = (all.hi - all.lo).cwiseMax(1e-300);
+    std::uint64_t code = 0;
+    std::uint32_t q[3];
+    for (int d = 0; d < 3; ++d)
+      q[d] = std::uint32_t(std::clamp((c(d) - all.lo(d)) / span(d), 0.0, 1.0) * 2097151.0);
+    for (int bit = 20; bit >= 0; --bit)
+      for (int d = 0; d < 3; ++d) code = (code << 1) | ((q[d] >> bit) & 1u);
+    return code;
+  };
+  std::vector<std::uint64_t> code(parts.size(), 0);
+  for (size_t k : flagged) {
+    code[pairs[k].first] = morton(pairs[k].first);
+    code[pairs[k].second] = morton(pairs[k].second);
+  }
+  std::vector<size_t> order(flagged.size());
+  for (size_t n = 0; n < order.size(); ++n) order[n] = n;
+  const auto key = [&](size_t n) {
+    const auto [a, b] = pairs[flagged[n]];
+    return std::make_tuple(std::min(code[a], code[b]), std::max(code[a], code[b]), flagged[n]);
+  };
+  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return key(x) < key(y); });
+  return order;
 }
 
 // The steps of refine_nonconvex_pairs over its flagged pairs, each a method;
@@ -410,60 +450,57 @@ class Refinement {
     hits_ = take_cached(parts_, pairs_, results_, options_, checks_, flagged_, keys_);
   }
 
-  // 1. The surfaces as solids: do they meet, and how deep is the deepest vertex.
-  void test_meshes() {
-    std::vector<int> used(parts_.size(), 0), used_list;
-    for (size_t k : flagged_) used[pairs_[k].first] = used[pairs_[k].second] = 1;
-    solids_.resize(parts_.size());
-    for (size_t p = 0; p < parts_.size(); ++p)
-      if (used[p]) used_list.push_back(static_cast<int>(p));
-    parallel_for(used_list.size(), options_.jobs, [&](size_t n) {
-      try {  // once per part, shared by its pairs and threads
-        const Part& part = parts_[used_list[n]];
-        solids_[used_list[n]] = part.surface && part.surface->solid
-                                    ? part.surface->solid
-                                    : std::make_shared<const SolidDistance>(surface_mesh(part));
-      } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
-      }
-    });
-    release_solids(parts_);  // the used ones are in solids_ now
-    const auto mesh_of = [&](int p) { return solids_[p] ? &solids_[p]->mesh() : nullptr; };
+  // 1. Per pair, in an order that keeps a part's pairs together: do the
+  // surfaces meet as solids (and how deep is the deepest vertex), and 2. where
+  // they meet, the overlap thickness. Each part's distances come from a cache
+  // bounded by the run's memory budget (RunOptions::memory_mb), built from
+  // its surface in the mesh store when not there.
+  void test_and_measure() {
     verdicts_.resize(flagged_.size());
+    thickness_.resize(flagged_.size());
+    why_not_.resize(flagged_.size());
+    no_solid_.assign(flagged_.size(), 0);
+    std::vector<char> pieces(flagged_.size(), 0);
+    const std::vector<size_t> order = by_locality(parts_, pairs_, flagged_);
+    ByteCache<int, SolidDistance> solids(size_t(std::max(0.0, options_.memory_mb)) << 20);
+    const auto solid_of = [&](int p) -> std::shared_ptr<const SolidDistance> {
+      try {  // once per part while it stays in the cache, shared by its pairs and threads
+        return solids.get(p, [&] {
+          auto d = std::make_shared<const SolidDistance>(surface_mesh(parts_[p]));
+          return ByteCache<int, SolidDistance>::Built{d, solid_bytes(d->mesh().faces())};
+        });
+      } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
+        return nullptr;
+      }
+    };
     Progress progress(flagged_.size(), options_.quiet, "mesh tests");
-    parallel_for(flagged_.size(), options_.jobs, [&](size_t n) {
+    parallel_for(order.size(), options_.jobs, [&](size_t k) {
+      const size_t n = order[k];
       const auto [a, b] = pairs_[flagged_[n]];
+      const std::shared_ptr<const SolidDistance> sa = solid_of(a), sb = solid_of(b);
+      no_solid_[n] = !sa || !sb;
+      const bool by_pieces = needs_pieces(n);
       try {
-        verdicts_[n] = mesh_verdict(mesh_of(a), mesh_of(b), needs_pieces(n));
+        verdicts_[n] =
+            mesh_verdict(sa ? &sa->mesh() : nullptr, sb ? &sb->mesh() : nullptr, by_pieces);
       } catch (const std::exception&) {
         verdicts_[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
       }
-      progress.tick();
-    });
-    progress.finish();
-  }
-
-  // 2. Pairs whose surfaces meet: the overlap thickness where the parts meet.
-  void measure_thicknesses() {
-    std::vector<size_t> thick;  // indices into flagged_
-    for (size_t n = 0; n < flagged_.size(); ++n) {
-      const auto [a, b] = pairs_[flagged_[n]];
-      if (!verdicts_[n].intersect && !checks_(a, b).clearance) continue;
-      (needs_pieces(n) ? solve_ : thick).push_back(n);
-    }
-    thickness_.resize(flagged_.size());
-    why_not_.resize(flagged_.size());
-    Progress progress(thick.size(), options_.quiet, "overlap thickness");
-    parallel_for(thick.size(), options_.jobs, [&](size_t k) {
-      const size_t n = thick[k];
-      const auto [a, b] = pairs_[flagged_[n]];
       const PairChecks c = checks_(a, b);
-      thickness_[n] = measure_thickness(*solids_[a], *solids_[b], tolerance(n),
-                                        c.tolerance ? &*c.tolerance : nullptr,
-                                        results_[flagged_[n]], verdicts_[n], why_not_[n]);
+      if (by_pieces) {
+        pieces[n] = verdicts_[n].intersect || c.clearance;
+      } else if (verdicts_[n].intersect || c.clearance) {
+        thickness_[n] =
+            measure_thickness(*sa, *sb, tolerance(n), c.tolerance ? &*c.tolerance : nullptr,
+                              results_[flagged_[n]], verdicts_[n], why_not_[n]);
+      }
       progress.tick();
     });
     progress.finish();
-    solids_.clear();
+    for (size_t n = 0; n < flagged_.size(); ++n)
+      if (pieces[n]) solve_.push_back(n);
+    solid_builds_ = solids.builds();
+    solid_peak_bytes_ = solids.peak_bytes();
   }
 
   // 3. Decompose the refinable parts of the pairs that need pieces, and 4.
@@ -532,7 +569,7 @@ class Refinement {
   bool needs_pieces(size_t n) const {
     const auto [a, b] = pairs_[flagged_[n]];
     return checks_(a, b).clearance.has_value() || parts_[a].mode == Pieces::kDecompose ||
-           parts_[b].mode == Pieces::kDecompose || !solids_[a] || !solids_[b];
+           parts_[b].mode == Pieces::kDecompose || no_solid_[n];
   }
   double tolerance(size_t n) const {
     const auto [a, b] = pairs_[flagged_[n]];
@@ -548,10 +585,11 @@ class Refinement {
   std::vector<size_t> reused_pieces_;  ///< reused refined pairs whose parts' pieces decided
   std::vector<std::string> keys_;
   std::vector<std::pair<size_t, StoredRefinement>> hits_;
-  std::vector<std::shared_ptr<const SolidDistance>> solids_;  ///< per part, steps 1–2
+  size_t solid_builds_ = 0, solid_peak_bytes_ = 0;  ///< the distance cache's, steps 1–2
   // Per flagged pair (index n into flagged_):
   std::vector<MeshVerdict> verdicts_;
-  std::vector<size_t> solve_;  ///< the pairs whose pieces decide
+  std::vector<char> no_solid_;  ///< a part of the pair has no surface to test
+  std::vector<size_t> solve_;   ///< the pairs whose pieces decide
   std::vector<std::optional<ThicknessResult>> thickness_;
   std::vector<std::string> why_not_;
   std::vector<std::optional<PairResult>> piece_results_;
@@ -563,10 +601,9 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks) {
   Refinement refinement(parts, pairs, results, options, checks);
-  if (refinement.empty()) return release_solids(parts);
+  if (refinement.empty()) return;
   refinement.take_from_cache();
-  refinement.test_meshes();
-  refinement.measure_thicknesses();
+  refinement.test_and_measure();
   refinement.solve_piece_pairs();
   refinement.decide();
 }

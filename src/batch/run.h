@@ -35,6 +35,9 @@ struct RunOptions {
   double load_timeout = kDefaultLoadTimeout;
   /// MB one loader process may allocate (kAutoLoadMemory: a share of the machine's; 0 = none).
   double load_memory_mb = kAutoLoadMemory;
+  /// MB the stages that hold part surfaces (the refinement's distances) keep
+  /// for reuse across a part's pairs; what a running pair needs comes on top.
+  double memory_mb = 1024;
   std::string cache_dir;  ///< cached decompositions (batch/decomposition_cache.h); "" = none
   /// Called in the parent as each pair ends (completion order), e.g. for JSON Lines.
   std::function<void(const PairResult&, const std::vector<Part>&)> on_pair;

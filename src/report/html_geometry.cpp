@@ -130,15 +130,29 @@ WebMesh mesh_within(const Mesh& mesh, size_t max_triangles, const std::string& w
   return {};
 }
 
+// The placed surface of a part the refinement decides on its surface (a
+// nonconvex part, or any in pieces decompose), read back from the mesh
+// store; none for any other part, or when the store has lost it (its hulls
+// are drawn then).
+std::optional<Mesh> shown_surface(const Part& part) {
+  if (!part.surface || (part.convex == true && part.mode != Pieces::kDecompose))
+    return std::nullopt;
+  try {
+    Mesh m = placed_mesh_of(*part.surface);
+    if (m.triangles.cols() > 0) return m;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
 // A part as the overlap sees it: its surface triangles and which points lie
 // inside it. A nonconvex part (a placed surface mesh) by its SolidDistance; any
 // other by its convex pieces (inside one of them).
 class ShownSolid {
  public:
   explicit ShownSolid(const Part& part) {
-    if (part.surface && part.surface->mesh && part.surface->mesh->triangles.cols() > 0 &&
-        part.convex != true) {
-      const Mesh& mesh = *part.surface->mesh;
+    if (const std::optional<Mesh> surface = shown_surface(part); surface && part.convex != true) {
+      const Mesh& mesh = *surface;
       try {
         solid_ = std::make_unique<SolidDistance>(mesh);
       } catch (const std::exception& e) {
@@ -325,8 +339,8 @@ Points part_vertices(const Part& part) {
 
 WebMesh part_web_mesh(const Part& part, size_t max_triangles) {
   if (part.error) return {};
-  if (part.surface && part.surface->mesh && part.surface->mesh->triangles.cols() > 0) {
-    WebMesh m = mesh_within(*part.surface->mesh, max_triangles, "mesh");
+  if (const std::optional<Mesh> surface = shown_surface(part)) {
+    WebMesh m = mesh_within(*surface, max_triangles, "mesh");
     if (!m.triangles.empty()) return m;
   }
   const auto pieces = shown_pieces(part);

@@ -8,6 +8,7 @@
 
 #include "batch/rule_scope.h"
 #include "cache_file.h"
+#include "memory_limit.h"
 #include "report/prior_report.h"
 #include "report/prior_settings.h"
 #include "report/report_json.h"
@@ -170,6 +171,8 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
   o.pair_timeout = a.pair_timeout;
   o.load_timeout = a.load_timeout;
   o.load_memory_mb = a.load_memory;
+  o.memory_mb =
+      a.memory.empty() ? memory_budget_mb(available_memory_mb()) : parse_memory_mb(a.memory);
   o.quiet = a.quiet;
   o.shard = out.shard;
   if (!a.no_cache) o.cache_dir = a.cache_dir.empty() ? default_cache_dir() : a.cache_dir;

@@ -34,6 +34,7 @@ struct CheckArgs {
   std::string rules;  ///< --rules FILE ("" = the scene's own, if any)
   int jobs = 1;       ///< resolved: every core when not given
   double pair_timeout = 0.0, load_timeout = kDefaultLoadTimeout, load_memory = kAutoLoadMemory;
+  std::string memory;  ///< --memory: "512M", "2G", MB; "" = memory_budget_mb's share
   bool quiet = false;
   std::string cache_dir;  ///< "" = the default cache directory
   bool no_cache = false;

@@ -127,12 +127,10 @@ std::string hulls_key(const std::string& content_hash, bool per_mesh) {
 
 // Body: the counts on one line ("n c1 … cn w s"), w warning lines, the sag's
 // bytes when s is 1, then the point-set bytes.
-std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key) {
-  const std::optional<std::string> entry = read_cache_entry(dir, kHullCache, key);
-  if (!entry) return std::nullopt;
-  const size_t eol = entry->find('\n');
+std::optional<StoredHulls> stored_hulls_from_bytes(const std::string& entry) {
+  const size_t eol = entry.find('\n');
   if (eol == std::string::npos) return std::nullopt;
-  std::istringstream head(entry->substr(0, eol));
+  std::istringstream head(entry.substr(0, eol));
   long n = 0;
   if (!(head >> n) || n < 1) return std::nullopt;
   StoredHulls h;
@@ -145,27 +143,35 @@ std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::
   int has_sag = 0;
   if (!(head >> warnings >> has_sag) || warnings < 0 || (has_sag != 0 && has_sag != 1))
     return std::nullopt;
-  size_t at = read_warning_lines(*entry, eol + 1, warnings, h.warnings);
+  size_t at = read_warning_lines(entry, eol + 1, warnings, h.warnings);
   if (at == std::string::npos) return std::nullopt;
   if (has_sag) {
-    h.sag = sag_from_bytes(*entry, at);
+    h.sag = sag_from_bytes(entry, at);
     if (!h.sag) return std::nullopt;
   }
-  auto sets = point_sets_from_bytes(*entry, at, n);
+  auto sets = point_sets_from_bytes(entry, at, n);
   if (!sets) return std::nullopt;
   h.reduced = std::move(*sets);
   return h;
 }
 
-std::string write_cached_hulls(const std::string& dir, const std::string& key,
-                               const StoredHulls& h) {
+std::string stored_hulls_bytes(const StoredHulls& h) {
   std::ostringstream head;
   head << h.reduced.size();
   for (long c : h.counts) head << ' ' << c;
   head << ' ' << h.warnings.size() << ' ' << (h.sag ? 1 : 0) << '\n' << warning_lines(h.warnings);
-  return write_cache_entry(
-      dir, kHullCache, key,
-      head.str() + (h.sag ? sag_bytes(*h.sag) : std::string()) + point_sets_bytes(h.reduced));
+  return head.str() + (h.sag ? sag_bytes(*h.sag) : std::string()) + point_sets_bytes(h.reduced);
+}
+
+std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key) {
+  const std::optional<std::string> entry = read_cache_entry(dir, kHullCache, key);
+  if (!entry) return std::nullopt;
+  return stored_hulls_from_bytes(*entry);
+}
+
+std::string write_cached_hulls(const std::string& dir, const std::string& key,
+                               const StoredHulls& h) {
+  return write_cache_entry(dir, kHullCache, key, stored_hulls_bytes(h));
 }
 
 std::string inline_hull_key(const std::string& digest, double to_scene_units,

@@ -33,6 +33,11 @@ struct StoredHulls {
 /// the file is its own piece (pieces "meshes") and the format version.
 std::string hulls_key(const std::string& content_hash, bool per_mesh);
 
+/// The entry's body as bytes (also what a loader process hands back of a
+/// file it hulled), and back: nullopt when the bytes are not a whole entry.
+std::string stored_hulls_bytes(const StoredHulls& h);
+std::optional<StoredHulls> stored_hulls_from_bytes(const std::string& bytes);
+
 std::optional<StoredHulls> read_cached_hulls(const std::string& dir, const std::string& key);
 
 /// Stores the entry (creating `dir`); "" or why it could not.

@@ -122,6 +122,21 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
                                                double memory_mb = kAutoLoadMemory,
                                                const MeshLoadHook& before_load = {});
 
+/// What a loader process makes of a file it has read (runs there, may hull,
+/// measure and store what it read): the bytes the parent needs of it.
+using MeshDigest = std::function<std::string(size_t request, LoadedMeshes&& read)>;
+
+/// Reads every file as load_meshes_isolated does and hands what was read to
+/// `digest` in the loader process; the parent gets the bytes in `take`, or in
+/// `failed` why there are none (a message naming the file: the loader crashed,
+/// ran out of time or memory, or `digest` threw). The meshes never cross to
+/// the parent: what it holds of a file is what `digest` keeps.
+void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, double timeout,
+                            double memory_mb, const MeshLoadHook& before_load,
+                            const MeshDigest& digest,
+                            const std::function<void(size_t, std::string&&)>& take,
+                            const std::function<void(size_t, const std::string&)>& failed);
+
 /// The vertices of load_meshes, without triangles.
 std::vector<Points> load_mesh_vertices(const std::string& path, bool split_instances);
 

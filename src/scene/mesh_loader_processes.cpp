@@ -145,9 +145,9 @@ std::string megabytes(double mb) {
   return b;
 }
 
-/// Runs in a loader process. `memory_mb` > 0 caps what it may allocate, set
-/// once per process (a worker reads many files and keeps its heap).
-std::string load_one(const MeshRequest& f, double memory_mb) {
+// Sets up a loader process once: `memory_mb` > 0 caps what it may allocate
+// (a loader reads many files and keeps its heap); true when capped.
+bool loader_setup(double memory_mb) {
   static const bool capped = cap_address_space_growth(memory_mb);
   // assimp's line readers (OBJ, PLY) allocate and fill buffers of 4 MB per
   // line; glibc hands such blocks back to the kernel on free, so every read
@@ -155,30 +155,49 @@ std::string load_one(const MeshRequest& f, double memory_mb) {
   static const bool tuned =
       mallopt(M_MMAP_THRESHOLD, 32 << 20) && mallopt(M_TRIM_THRESHOLD, 256 << 20);
   (void)tuned;
+  return capped;
+}
+
+std::string out_of_memory(const std::string& path, bool capped, double memory_mb) {
+  return "mesh file " + path + ": " +
+         (capped ? "reading it needed more than the loader's memory limit of " +
+                       megabytes(memory_mb) + " MB (--load-memory); damaged file?"
+                 : std::string("out of memory while loading (damaged file?)"));
+}
+
+/// Runs in a loader process: the file as read, or why it cannot be.
+LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb) {
+  LoadedMeshes out;
   try {
-    std::vector<std::string> warnings;
     const bool brep = is_brep_path(f.path);
-    if (!f.by_node && !brep)
-      return encode(load_meshes(f.path, f.split_instances, &warnings), warnings, {});
-    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, f.by_node, &warnings)
-                           : load_node_meshes(f.path, &warnings);
-    if (!f.node_names_only)
-      return encode(read.meshes, warnings, read.nodes, read.tessellations, read.leaf_errors);
+    if (!f.by_node && !brep) {
+      out.meshes = load_meshes(f.path, f.split_instances, &out.warnings);
+      return out;
+    }
+    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, f.by_node, &out.warnings)
+                           : load_node_meshes(f.path, &out.warnings);
+    if (!f.node_names_only) {
+      out.meshes = std::move(read.meshes);
+      out.nodes = std::move(read.nodes);
+      out.tessellations = std::move(read.tessellations);
+      out.leaf_errors = std::move(read.leaf_errors);
+      return out;
+    }
     // A node's meshes come together (collect_by_node), and paths are unique.
-    std::vector<std::string> names;
     for (std::string& n : read.nodes)
-      if (names.empty() || names.back() != n) names.push_back(std::move(n));
-    return encode({}, warnings, names);
+      if (out.nodes.empty() || out.nodes.back() != n) out.nodes.push_back(std::move(n));
+    return out;
   } catch (const MeshError& e) {
-    return std::string("E") + e.what();
+    out = {};
+    out.error = e.what();
   } catch (const std::bad_alloc&) {
-    return "Emesh file " + f.path + ": " +
-           (capped ? "reading it needed more than the loader's memory limit of " +
-                         megabytes(memory_mb) + " MB (--load-memory); damaged file?"
-                   : std::string("out of memory while loading (damaged file?)"));
+    out = {};
+    out.error = out_of_memory(f.path, capped, memory_mb);
   } catch (const std::exception& e) {
-    return "Emesh file " + f.path + ": " + e.what();
+    out = {};
+    out.error = "mesh file " + f.path + ": " + e.what();
   }
+  return out;
 }
 
 std::string seconds(double s) {
@@ -189,10 +208,11 @@ std::string seconds(double s) {
 
 }  // namespace
 
-std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
-                                               double timeout, double memory_mb,
-                                               const MeshLoadHook& before_load) {
-  std::vector<LoadedMeshes> out(files.size());
+void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, double timeout,
+                            double memory_mb, const MeshLoadHook& before_load,
+                            const MeshDigest& digest,
+                            const std::function<void(size_t, std::string&&)>& take,
+                            const std::function<void(size_t, const std::string&)>& failed) {
   const int loaders = std::max(1, jobs);
   if (memory_mb < 0) memory_mb = memory_share_mb(available_memory_mb(), loaders);
   // Largest files first: no loader idles at the end on a long tail.
@@ -205,32 +225,56 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return size[a] > size[b]; });
-  auto task = [&](size_t k) { return load_one(files[k], memory_mb); };
+  auto task = [&](size_t k) {
+    const bool capped = loader_setup(memory_mb);
+    try {
+      return "D" + digest(k, read_one(files[k], capped, memory_mb));
+    } catch (const std::bad_alloc&) {
+      return "E" + out_of_memory(files[k].path, capped, memory_mb);
+    } catch (const std::exception& e) {
+      return "Emesh file " + files[k].path + ": " + e.what();
+    }
+  };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
     const std::string& path = files[k].path;
-    if (!ok) {
-      const bool late = payload.rfind("timed out", 0) == 0;
-      out[k].error =
-          "cannot load mesh file " + path + ": " +
-          (late
-               ? "reading it took longer than the load limit of " + seconds(timeout) +
-                     " s (--load-timeout); the loader was stopped"
-               : "the loader process failed: " + payload +
-                     (memory_mb > 0 && can_cap_address_space()
-                          ? " (its memory limit was " + megabytes(memory_mb) + " MB, --load-memory)"
-                          : ""));
-      return;
-    }
-    try {
-      out[k] = decode(payload);
-    } catch (const std::exception& e) {
-      out[k] = {};
-      out[k].error = "cannot load mesh file " + path + ": " + e.what();
-    }
+    if (ok && !payload.empty() && payload[0] == 'D') return take(k, payload.substr(1));
+    if (ok)
+      return failed(k, payload.empty() ? "cannot load mesh file " + path +
+                                             ": empty answer from the loader process"
+                                       : payload.substr(1));
+    const bool late = payload.rfind("timed out", 0) == 0;
+    failed(k, "cannot load mesh file " + path + ": " +
+                  (late ? "reading it took longer than the load limit of " + seconds(timeout) +
+                              " s (--load-timeout); the loader was stopped"
+                        : "the loader process failed: " + payload +
+                              (memory_mb > 0 && can_cap_address_space()
+                                   ? " (its memory limit was " + megabytes(memory_mb) +
+                                         " MB, --load-memory)"
+                                   : "")));
   };
   QueueOptions queue{loaders, timeout, {}, {}};
   if (before_load) queue.before_task = [&](size_t k) { before_load(files[k].path); };
   run_work_queue(order, queue, task, done);
+}
+
+std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
+                                               double timeout, double memory_mb,
+                                               const MeshLoadHook& before_load) {
+  std::vector<LoadedMeshes> out(files.size());
+  auto digest = [](size_t, LoadedMeshes&& read) {
+    if (read.error) return "E" + *read.error;
+    return encode(read.meshes, read.warnings, read.nodes, read.tessellations, read.leaf_errors);
+  };
+  auto take = [&](size_t k, std::string&& payload) {
+    try {
+      out[k] = decode(payload);
+    } catch (const std::exception& e) {
+      out[k] = {};
+      out[k].error = "cannot load mesh file " + files[k].path + ": " + e.what();
+    }
+  };
+  auto failed = [&](size_t k, const std::string& why) { out[k].error = why; };
+  digest_meshes_isolated(files, jobs, timeout, memory_mb, before_load, digest, take, failed);
   return out;
 }
 

@@ -2,20 +2,21 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
-#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <new>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "file_hash.h"
 #include "geometry/convexity.h"
 #include "geometry/coordinate_resolution.h"
 #include "geometry/same_position.h"
-#include "geometry/solid_distance.h"
 #include "hash.h"
 #include "parallel_for.h"
 #include "scene/convexity_cache.h"
@@ -30,6 +31,26 @@ namespace pd {
 
 Points apply_placement(const Points& p, const Mat4& placement) {
   return (placement.topLeftCorner<3, 3>() * p).colwise() + Vec3(placement.topRightCorner<3, 1>());
+}
+
+long PartSurface::triangles() const {
+  if (file_mesh) return file_mesh->triangles.cols();
+  return stored ? stored->triangles : 0;
+}
+
+std::shared_ptr<const Mesh> file_mesh_of(const PartSurface& s) {
+  if (s.file_mesh) return s.file_mesh;
+  if (!s.stored || !s.stored->store) throw std::runtime_error("the part keeps no surface");
+  std::optional<Mesh> m = s.stored->store->get(s.stored->key);
+  if (!m)
+    throw std::runtime_error("its surface is gone from the mesh store " + s.stored->store->dir() +
+                             " (removed or damaged while the run went on)");
+  return std::make_shared<const Mesh>(std::move(*m));
+}
+
+Mesh placed_mesh_of(const PartSurface& s) {
+  const std::shared_ptr<const Mesh> m = file_mesh_of(s);
+  return {apply_placement(m->vertices, s.placement), m->triangles};
 }
 
 long Part::hull_vertex_count() const {
@@ -89,13 +110,13 @@ std::string load_error(const PartSpec& spec, const std::exception& e) {
                                                   : e.what());
 }
 
-// A mesh file as its instances share it: read once (in a loader process,
-// before the hulls start), each piece reduced to the vertices of its hull by
-// the first instance. An affine map sends extreme points among the images of
+// A mesh file as its instances share it: read once, in a loader process that
+// reduces each piece to the vertices of its hull, measures what the parts
+// stage needs and stores the surface (digest); the meshes themselves never
+// reach this process. An affine map sends extreme points among the images of
 // extreme points, so an instance hulls the placed reduced set and gets the
 // hull of the placed file.
 struct MeshFile {
-  std::once_flag loaded;
   LoadedMeshes read;            ///< as the loader returned it; freed once reduced
   std::vector<Points> reduced;  ///< per piece, file coordinates
   std::vector<long> counts;     ///< vertices per piece as read
@@ -104,8 +125,9 @@ struct MeshFile {
   std::vector<std::string> warnings;  ///< the loader's (a PLY header line skipped, …)
   bool hulls_cached = false;          ///< `reduced` and `counts` came from the hull cache
   std::string hash;                   ///< content hash, when a cache needs it
-  // Pieces auto/decompose: the surface and its nonconvexity, once per file.
-  std::shared_ptr<const Mesh> mesh;
+  // Pieces auto/decompose: the surface (in the mesh store) and its
+  // nonconvexity, once per file.
+  std::optional<StoredMesh> stored;
   double concavity = 0.0;  ///< file units
   /// File units: the rounding noise of its stored coordinates (coordinate_noise).
   /// A concavity within it is the rounding of a convex part (a float32 sphere
@@ -114,10 +136,6 @@ struct MeshFile {
   bool closed = false;
   double min_stretch = INFINITY, max_stretch = 0.0;  ///< over the file's instances
   int instances = 0;                                 ///< distinct placements of it
-  // The only instance's placed mesh and its distances, when the convexity was
-  // measured on them and the kept budget held them (PartSurface::solid).
-  std::shared_ptr<const Mesh> placed;
-  std::shared_ptr<const SolidDistance> solid;
   // B-rep files: the deflection asked (file units), the leaf the meshes are of
   // (-1: every leaf, joined) and the tessellation they carry.
   double deflection = 0.0;
@@ -156,45 +174,30 @@ bool similarity(const Mat4& placement) {
   return s(0) - s(2) <= tol::kSimilarPlacement * s(0);
 }
 
-// Triangles whose placed distances the parts stage may keep for the
-// refinement, over the whole scene (tol::kKeptSolidTriangles).
-using KeptBudget = std::atomic<long>;
-
 // The file's nonconvexity, from the cache when it holds this file's bytes at
 // this tolerance, else measured (and stored, best effort). A file with one
-// instance placed without stretch is measured on its placed mesh, whose
-// distances the refinement needs too: they are kept in `f` while `budget`
-// lasts (which decides only what is kept, never what is measured).
-StoredConvexity convexity_of(const PartSpec& spec, MeshFile& f, double concavity_tol,
-                             const std::string& cache_dir, KeptBudget& budget) {
+// instance placed without stretch is measured on its placed mesh, as the
+// refinement sees it.
+StoredConvexity convexity_of(const PartSpec& spec, MeshFile& f, const Mesh& m, double concavity_tol,
+                             const std::string& cache_dir) {
   // Measured until nonconvex for the most lenient instance, whose bar is its
   // concavity tolerance or the coordinates' noise, whichever is larger.
   const double tol = concavity_tol / f.max_stretch,
                stop_above = std::max(concavity_tol / f.min_stretch, f.noise);
   const std::string key = convexity_key(f.hash, tol, stop_above);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
-  const Mesh& m = *f.mesh;
   ConvexityScreen c;
   const Mat4 to_scene = placement(spec);
   if (f.instances == 1 && similarity(to_scene)) {
-    auto placed = std::make_shared<Mesh>();
-    placed->vertices = apply_placement(m.vertices, to_scene);
-    placed->triangles = m.triangles;
+    Mesh placed;
+    placed.vertices = apply_placement(m.vertices, to_scene);
+    placed.triangles = m.triangles;
     const Points hull_points = apply_placement(f.reduced[0], to_scene);
     HullTriangles facets = f.facets;  // turned with the part
     for (Vec3& n : facets.normals) n = (to_scene.topLeftCorner<3, 3>() * n).normalized();
     const HullTriangles* known = facets.triangles.empty() ? nullptr : &facets;
     const double placed_stop = std::max(concavity_tol, f.noise * f.max_stretch);
-    const long n = m.triangles.cols();
-    if (budget.fetch_sub(n) >= n) {
-      auto solid = std::make_shared<const SolidDistance>(*placed);
-      c = screen_convexity(*placed, solid->mesh(), concavity_tol, placed_stop, &hull_points, known);
-      f.placed = std::move(placed);
-      f.solid = std::move(solid);
-    } else {
-      budget.fetch_add(n);
-      c = screen_convexity(*placed, concavity_tol, placed_stop, &hull_points, known);
-    }
+    c = screen_convexity(placed, concavity_tol, placed_stop, &hull_points, known);
     c.concavity.value /= f.max_stretch;  // file units, as the cache keeps it
   } else {
     c = screen_convexity(m, tol, stop_above, &f.reduced[0],
@@ -283,8 +286,21 @@ double auto_concavity_tol(const MeshFile& f, const AutoTolerance& a) {
   return tol::kConcavityFraction * a.band(s, s, noise, noise);
 }
 
-void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache,
-          const AutoTolerance* auto_tol, KeptBudget& budget) {
+// What the file's hulls (cached or just made) settle: the noise of its
+// coordinates and, under auto, its concavity tolerance.
+void settle_hulls(MeshFile& f, double concavity_tol, const AutoTolerance* auto_tol) {
+  f.noise = 0.0;  // the hull's points hold the largest coordinate and span the box
+  for (const Points& p : f.reduced) f.noise = std::max(f.noise, coordinate_noise(p));
+  if (auto_tol) concavity_tol = auto_concavity_tol(f, *auto_tol);
+  f.concavity_tol = concavity_tol;
+}
+
+// Runs in a loader process, on a file it has just read: the file's hulls, its
+// sag under auto and, for pieces auto/decompose, its nonconvexity, with the
+// surface put in the store for the stages that need triangles again. What
+// was read is let go: the parent gets only what digest_bytes holds.
+void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache,
+            const AutoTolerance* auto_tol) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
     const std::vector<Mesh>& meshes = f.read.meshes;
@@ -312,52 +328,156 @@ void load(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCa
     if (store && !f.hash.empty())  // one entry per file: its hulls, and its sag under auto
       write_cached_hulls(cache.dir, hulls_key(f.hash, spec.pieces == Pieces::kMeshes),
                          {f.counts, f.reduced, f.warnings, f.sag});
-    f.noise = 0.0;  // the hull's points hold the largest coordinate and span the box
-    for (const Points& p : f.reduced) f.noise = std::max(f.noise, coordinate_noise(p));
-    if (auto_tol) concavity_tol = auto_concavity_tol(f, *auto_tol);
-    f.concavity_tol = concavity_tol;
+    settle_hulls(f, concavity_tol, auto_tol);
     if (keeps_surface(spec.pieces) && meshes.size() == 1 && meshes[0].triangles.cols() > 0) {
-      f.mesh = std::make_shared<const Mesh>(meshes[0]);
       if (f.hash.empty()) f.hash = geometry_hash(spec, cache, f.deflection);
       // Measured once, kept in file units; each instance scales the value by its
       // own stretch (a sole instance placed without stretch is measured on its
       // placed mesh). Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
-      const StoredConvexity c = convexity_of(spec, f, concavity_tol, cache.dir, budget);
+      const StoredConvexity c = convexity_of(spec, f, meshes[0], f.concavity_tol, cache.dir);
       f.concavity = c.concavity;
       f.closed = c.closed;
+      const std::string why = cache.meshes->put(f.hash, meshes[0]);
+      if (!why.empty())
+        throw std::runtime_error("its surface cannot be kept for the refinement: " + why);
+      f.stored = StoredMesh{nullptr, f.hash, meshes[0].vertices.cols(), meshes[0].triangles.cols()};
     }
   } catch (const std::exception& e) {
     f.reduced.clear();
-    f.mesh.reset();
-    f.placed.reset();
-    f.solid.reset();
+    f.stored.reset();
     f.error = load_error(spec, e);
   }
   f.read = {};
   f.facets = {};  // the screen's only
 }
 
-PartSurface surface_of(const PartSpec& spec, const MeshFile& f, bool convex) {
+// What a loader hands back of a digested file: 'E' and the error, or 'F' and
+// its fields as written below (this machine's byte order: the reader is a
+// fork of the writer).
+class DigestWriter {
+ public:
+  template <class T>
+  DigestWriter& put(const T& x) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    out_.append(reinterpret_cast<const char*>(&x), sizeof x);
+    return *this;
+  }
+  DigestWriter& put(const std::string& s) {
+    put(std::uint64_t(s.size()));
+    out_ += s;
+    return *this;
+  }
+  std::string bytes() && { return std::move(out_); }
+
+ private:
+  std::string out_ = "F";
+};
+
+class DigestReader {
+ public:
+  explicit DigestReader(const std::string& s) : s_(s) {}
+  template <class T>
+  T get() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    T x;
+    take(&x, sizeof x);
+    return x;
+  }
+  std::string string() {
+    const auto n = get<std::uint64_t>();
+    if (n > s_.size() - at_) throw std::runtime_error("malformed answer from the loader process");
+    std::string out = s_.substr(at_, n);
+    at_ += n;
+    return out;
+  }
+
+ private:
+  void take(void* to, size_t n) {
+    if (s_.size() - at_ < n) throw std::runtime_error("short answer from the loader process");
+    std::memcpy(to, s_.data() + at_, n);
+    at_ += n;
+  }
+  const std::string& s_;
+  size_t at_ = 1;
+};
+
+std::string digest_bytes(const MeshFile& f) {
+  if (f.error) return "E" + *f.error;
+  DigestWriter w;
+  w.put(stored_hulls_bytes({f.counts, f.reduced, f.warnings, f.sag}));
+  w.put(f.hash).put(f.noise).put(f.concavity_tol).put(f.concavity).put(std::uint8_t(f.closed));
+  w.put(std::int32_t(f.leaf)).put(std::uint8_t(bool(f.tessellation)));
+  if (f.tessellation) w.put(*f.tessellation);
+  w.put(std::uint8_t(bool(f.stored)));
+  if (f.stored)
+    w.put(f.stored->key)
+        .put(std::int64_t(f.stored->vertices))
+        .put(std::int64_t(f.stored->triangles));
+  return std::move(w).bytes();
+}
+
+// In the parent: a loader's digest of `f` into it.
+void take_digest(const std::string& bytes, MeshFile& f,
+                 const std::shared_ptr<const MeshStore>& store) {
+  if (bytes.empty()) throw std::runtime_error("empty answer from the loader process");
+  if (bytes[0] == 'E') {
+    f.error = bytes.substr(1);
+    return;
+  }
+  DigestReader r(bytes);
+  auto hulls = stored_hulls_from_bytes(r.string());
+  if (!hulls) throw std::runtime_error("malformed answer from the loader process");
+  f.counts = std::move(hulls->counts);
+  f.reduced = std::move(hulls->reduced);
+  f.warnings = std::move(hulls->warnings);
+  f.sag = std::move(hulls->sag);
+  f.hash = r.string();
+  f.noise = r.get<double>();
+  f.concavity_tol = r.get<double>();
+  f.concavity = r.get<double>();
+  f.closed = r.get<std::uint8_t>() != 0;
+  f.leaf = r.get<std::int32_t>();
+  if (r.get<std::uint8_t>()) f.tessellation = r.get<Tessellation>();
+  if (r.get<std::uint8_t>()) {
+    StoredMesh m;
+    m.store = store;
+    m.key = r.string();
+    m.vertices = long(r.get<std::int64_t>());
+    m.triangles = long(r.get<std::int64_t>());
+    f.stored = std::move(m);
+  }
+}
+
+// A file whose hulls are cached needs no read when its surface is not kept,
+// or is in the store with its nonconvexity cached: then it is settled here.
+bool settled_from_cache(const PartSpec& spec, MeshFile& f, double concavity_tol,
+                        const PartsCache& cache, const AutoTolerance* auto_tol) {
+  if (!f.hulls_cached || (auto_tol && !f.sag) || f.deflection != 0) return false;
+  settle_hulls(f, concavity_tol, auto_tol);
+  if (!keeps_surface(spec.pieces)) return true;
+  if (f.counts.size() != 1 || !cache.meshes || !cache.meshes->has(f.hash)) return false;
+  const double tol = f.concavity_tol / f.max_stretch,
+               stop_above = std::max(f.concavity_tol / f.min_stretch, f.noise);
+  const auto c = read_cached_convexity(cache.dir, convexity_key(f.hash, tol, stop_above));
+  if (!c) return false;
+  f.concavity = c->concavity;
+  f.closed = c->closed;
+  // The counts are the read's vertices; the stored mesh's triangles are known
+  // when it is read back.
+  f.stored = StoredMesh{cache.meshes, f.hash, f.counts[0], 0};
+  return true;
+}
+
+PartSurface surface_of(const PartSpec& spec, const MeshFile& f) {
   PartSurface s;
-  s.file_mesh = f.mesh;
+  s.stored = f.stored;
   s.file_hash = f.hash;
   s.placement = placement(spec);
   s.stretch = stretch(s.placement);
   s.concavity = f.concavity * s.stretch;
   s.concavity_tol = f.concavity_tol;
   s.closed = f.closed;
-  s.solid = f.solid;                                   // of the placed mesh below, when kept
-  if (!convex || spec.pieces == Pieces::kDecompose) {  // only what a refinement can use
-    if (f.placed) {
-      s.mesh = f.placed;
-    } else {
-      Mesh placed;
-      placed.vertices = apply_placement(f.mesh->vertices, s.placement);
-      placed.triangles = f.mesh->triangles;
-      s.mesh = std::make_shared<const Mesh>(std::move(placed));
-    }
-  }
   return s;
 }
 
@@ -375,8 +495,8 @@ Hull inline_hull(const PartSpec& spec, const PartsCache& cache) {
 }
 
 /// One part from its spec; `file` is its mesh file, shared with other instances.
-Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, const PartsCache& cache,
-                const AutoTolerance* auto_tol, KeptBudget& budget) {
+Part build_part(const PartSpec& spec, const MeshFile* file, const PartsCache& cache,
+                const AutoTolerance* auto_tol) {
   Part part;
   part.id = spec.id;
   part.source = spec.mesh ? *spec.mesh : "inline";
@@ -386,9 +506,6 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
     return part;
   }
   if (file) {
-    std::call_once(file->loaded, [&] {
-      load(spec, *file, concavity_tol, cache, auto_tol, budget);
-    });  // the first instance reduces it
     if (file->error) {
       part.error = file->error;
       return part;
@@ -440,12 +557,12 @@ Part build_part(const PartSpec& spec, MeshFile* file, double concavity_tol, cons
       if (part.brep && !spec.sag) sag.declared = part.brep->tessellation.sag;
       part.sag = std::move(sag);
     }
-    if (file && file->mesh) {
+    if (file && file->stored) {
       // Convex within the concavity tolerance, or within the rounding of the
       // coordinates as stored (docs/numerics.md, kConcavityFraction).
       const double k = stretch(placement(spec));
       part.convex = file->concavity * k <= std::max(file->concavity_tol, file->noise * k);
-      part.surface = surface_of(spec, *file, *part.convex);
+      part.surface = surface_of(spec, *file);
     }
   } catch (const std::exception& e) {
     part.pieces.clear();
@@ -507,47 +624,20 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   const std::vector<size_t>& users = distinct.users;
   const std::vector<size_t>& source = distinct.source;
 
-  // Hulls are independent: qhull_r keeps its state per run, each assimp
-  // Importer its own, and build_part catches whatever it throws. The first
-  // instance of a mesh file reduces it; others of the same file wait for it.
+  // Every mesh file is read, reduced and measured in loader processes, forked
+  // here while this process has one thread (see mesh_loader_processes.cpp);
+  // each instance then hulls its placed reduced points on a thread pool.
   const double concavity_tol = tol::kConcavityFraction * scene.tolerance.value_or(0.0);
   const AutoTolerance* auto_tol = scene.auto_tolerance ? &*scene.auto_tolerance : nullptr;
   std::vector<Part> built(unique.size());
   std::vector<MeshFile> mesh_files(distinct.files);
-  // Every mesh file is read first, in loader processes: forked here, while
-  // this process has one thread (see mesh_loader_processes.cpp).
-  // A file whose hulls are cached is read only when its surface is kept.
-  // A split file is read once, by node, for all its node parts.
-  std::vector<MeshRequest> requests;
-  std::vector<std::vector<size_t>> requested;  // per request: its files
+  PartsCache with_store = cache;  // surfaces kept go to the mesh store
+  if (!with_store.meshes)
+    for (size_t u = 0; u < unique.size() && !with_store.meshes; ++u)
+      if (file_of[u] && keeps_surface(unique[u]->pieces))
+        with_store.meshes =
+            cache.dir.empty() ? MeshStore::temporary() : MeshStore::in_cache(cache.dir);
   std::vector<const PartSpec*> file_spec(distinct.files);
-  std::map<std::string, size_t> by_node;  // a split file's path -> its request
-  for (size_t u = 0; u < unique.size(); ++u) {
-    if (!file_of[u] || file_spec[*file_of[u]]) continue;
-    const size_t f = *file_of[u];
-    file_spec[f] = unique[u];
-    const double deflection = distinct.deflection[u];
-    mesh_files[f].deflection = deflection;
-    // A B-rep file is always read: its tessellation is in no cache.
-    if (cached_hulls(*unique[u], mesh_files[f], cache) && !keeps_surface(unique[u]->pieces) &&
-        (!auto_tol || mesh_files[f].sag) && deflection == 0)
-      continue;
-    if (unique[u]->node) {
-      std::ostringstream key;  // a split file, read once per deflection for all its node parts
-      key.precision(17);
-      key << deflection << '|' << *unique[u]->mesh;
-      const auto [it, fresh] = by_node.emplace(key.str(), requests.size());
-      if (fresh) {
-        requests.push_back({*unique[u]->mesh, true, true, false, deflection});
-        requested.emplace_back();
-      }
-      requested[it->second].push_back(f);
-      continue;
-    }
-    requests.push_back(
-        {*unique[u]->mesh, unique[u]->pieces == Pieces::kMeshes, false, false, deflection});
-    requested.push_back({f});
-  }
   for (size_t u = 0; u < unique.size(); ++u)
     if (file_of[u]) {
       MeshFile& f = mesh_files[*file_of[u]];
@@ -555,31 +645,90 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       f.min_stretch = std::min(f.min_stretch, s);
       f.max_stretch = std::max(f.max_stretch, s);
       ++f.instances;
-    }
-  if (!requests.empty()) {
-    std::vector<LoadedMeshes> read =
-        load_meshes_isolated(requests, threads, load_timeout, load_memory_mb, before_load);
-    for (size_t r = 0; r < read.size(); ++r) {
-      if (!requests[r].by_node) {
-        mesh_files[requested[r][0]].read = std::move(read[r]);
-        continue;
+      if (!file_spec[*file_of[u]]) {
+        file_spec[*file_of[u]] = unique[u];
+        f.deflection = distinct.deflection[u];
       }
-      std::map<std::string, std::vector<size_t>> meshes_of_node;
-      for (size_t m = 0; m < read[r].nodes.size(); ++m)
-        meshes_of_node[read[r].nodes[m]].push_back(m);
-      for (size_t f : requested[r]) {
-        const auto it = meshes_of_node.find(*file_spec[f]->node);
-        mesh_files[f].read =
-            node_read(read[r], it == meshes_of_node.end() ? std::vector<size_t>{} : it->second,
-                      *file_spec[f], mesh_files[f].leaf);
-      }
-      read[r] = {};
     }
+  // A file settled from the cache is not read. A split file is read once, by
+  // node, for all its node parts.
+  std::vector<MeshRequest> requests;
+  std::vector<std::vector<size_t>> requested;  // per request: its files
+  std::map<std::string, size_t> by_node;       // a split file's path -> its request
+  for (size_t f = 0; f < distinct.files; ++f) {
+    const PartSpec& spec = *file_spec[f];
+    const double deflection = mesh_files[f].deflection;
+    // A B-rep file is always read: its tessellation is in no cache.
+    if (cached_hulls(spec, mesh_files[f], with_store) &&
+        settled_from_cache(spec, mesh_files[f], concavity_tol, with_store, auto_tol))
+      continue;
+    if (spec.node) {
+      std::ostringstream key;  // a split file, read once per deflection for all its node parts
+      key.precision(17);
+      key << deflection << '|' << *spec.mesh;
+      const auto [it, fresh] = by_node.emplace(key.str(), requests.size());
+      if (fresh) {
+        requests.push_back({*spec.mesh, true, true, false, deflection});
+        requested.emplace_back();
+      }
+      requested[it->second].push_back(f);
+      continue;
+    }
+    requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection});
+    requested.push_back({f});
   }
-  KeptBudget budget{tol::kKeptSolidTriangles};
+  if (!requests.empty()) {
+    // In the loader: each file of the request digested, its bytes one after another.
+    auto digest_request = [&](size_t r, LoadedMeshes&& read) {
+      std::map<std::string, std::vector<size_t>> meshes_of_node;
+      if (requests[r].by_node)
+        for (size_t m = 0; m < read.nodes.size(); ++m) meshes_of_node[read.nodes[m]].push_back(m);
+      std::string out;
+      for (size_t f : requested[r]) {
+        MeshFile& file = mesh_files[f];
+        if (requests[r].by_node) {
+          const auto it = meshes_of_node.find(*file_spec[f]->node);
+          file.read =
+              node_read(read, it == meshes_of_node.end() ? std::vector<size_t>{} : it->second,
+                        *file_spec[f], file.leaf);
+        } else {
+          file.read = std::move(read);
+        }
+        digest(*file_spec[f], file, concavity_tol, with_store, auto_tol);
+        const std::string bytes = digest_bytes(file);
+        const std::uint64_t n = bytes.size();
+        out.append(reinterpret_cast<const char*>(&n), sizeof n).append(bytes);
+      }
+      return out;
+    };
+    auto take = [&](size_t r, std::string&& payload) {
+      size_t at = 0;
+      for (size_t f : requested[r]) {
+        try {
+          std::uint64_t n = 0;
+          if (payload.size() - at < sizeof n)
+            throw std::runtime_error("short answer from the loader process");
+          std::memcpy(&n, payload.data() + at, sizeof n);
+          at += sizeof n;
+          if (payload.size() - at < n)
+            throw std::runtime_error("short answer from the loader process");
+          take_digest(payload.substr(at, n), mesh_files[f], with_store.meshes);
+          at += n;
+        } catch (const std::exception& e) {
+          mesh_files[f].error = "cannot load mesh file " + requests[r].path + ": " + e.what();
+        }
+      }
+    };
+    auto failed = [&](size_t r, const std::string& why) {
+      for (size_t f : requested[r]) mesh_files[f].error = why;
+    };
+    digest_meshes_isolated(requests, threads, load_timeout, load_memory_mb, before_load,
+                           digest_request, take, failed);
+  }
+  // Hulls are independent: qhull_r keeps its state per run.
   parallel_for(unique.size(), threads, [&](size_t u) {
-    built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr,
-                          concavity_tol, cache, auto_tol, budget);
+    built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr, with_store,
+                          auto_tol);
     if (on_built) on_built(users[u]);
   });
 

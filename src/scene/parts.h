@@ -14,30 +14,34 @@
 #include "geometry/motion.h"
 #include "geometry/tessellation_sag.h"
 #include "scene/mesh_loader.h"
+#include "scene/mesh_store.h"
 #include "scene/scene.h"
 
 namespace pd {
 
-class SolidDistance;
-
-/// A mesh part's surface, kept for the nonconvex refinement (pieces auto and
-/// decompose): the file's mesh in its own coordinates (shared by its instances),
-/// where it is placed, and its nonconvexity measured once per file.
+/// A mesh part's surface, for the nonconvex refinement (pieces auto and
+/// decompose): the file's mesh in its own coordinates (shared by its
+/// instances; in the mesh store, read back where a stage needs it), where it
+/// is placed, and its nonconvexity measured once per file.
 struct PartSurface {
-  std::shared_ptr<const Mesh> file_mesh;  ///< file coordinates
+  std::optional<StoredMesh> stored;       ///< file coordinates, in the mesh store
+  std::shared_ptr<const Mesh> file_mesh;  ///< or held here (file coordinates)
   std::string file_hash;                  ///< content hash of the mesh file (cache key)
   Mat4 placement = Mat4::Identity();      ///< file → scene units (units, then transform)
   double stretch = 1.0;                   ///< the placement's largest stretch factor
   double concavity = 0.0;                 ///< the file's measured nonconvexity, scene units
   double concavity_tol = 0.0;  ///< what it was measured against (scene units; per file under auto)
   bool closed = false;         ///< the file's mesh bounds a solid
-  std::shared_ptr<const Mesh> mesh;  ///< placed (scene units), when nonconvex
-  /// The distances of the placed file mesh (apply_placement), when the parts
-  /// stage built them to measure the convexity (a file's only instance,
-  /// placed without stretch; within tol::kKeptSolidTriangles in all): the
-  /// refinement takes them over.
-  std::shared_ptr<const SolidDistance> solid;
+  /// Triangles of the file mesh (0 when not known before it is read back).
+  long triangles() const;
 };
+
+/// The surface's mesh in file coordinates: the one held, or read back from the
+/// store. Throws std::runtime_error when the store has lost it.
+std::shared_ptr<const Mesh> file_mesh_of(const PartSurface& s);
+
+/// The surface's mesh placed (scene units), as file_mesh_of reads it.
+Mesh placed_mesh_of(const PartSurface& s);
 
 /// File points in scene units under a surface's placement: the one
 /// arithmetic every placed surface uses (the parts stage's and the
@@ -102,6 +106,9 @@ struct Part {
 struct PartsCache {
   std::string dir;                                                  ///< "" = no cache
   const std::map<std::string, std::string>* file_hashes = nullptr;  ///< path -> content hash
+  /// Where kept surfaces go (null: the cache directory's store, else a
+  /// temporary one of the run's own, made when a part keeps a surface).
+  std::shared_ptr<const MeshStore> meshes;
 };
 
 /// Loads, transforms and hulls every part. A part that fails gets `error` set
