@@ -32,7 +32,7 @@ class ByteCache {
   /// caller of the same key meanwhile waits for it). Then, while the kept
   /// values exceed the budget, the least recently used that no caller holds
   /// are dropped. An exception of `build` reaches every caller waiting for
-  /// that key, and nothing is kept.
+  /// that key, and nothing is kept. Every call makes room so.
   Ptr get(const Key& key, const std::function<Built()>& build) {
     std::shared_ptr<std::promise<Ptr>> mine;
     std::shared_future<Ptr> value;
@@ -43,6 +43,11 @@ class ByteCache {
         ++hits_;
         order_.splice(order_.end(), order_, it->second.used);  // most recent last
         value = it->second.value;
+        if (it->second.bytes > 0) {  // built: taken here, then room made for others
+          Ptr p = value.get();
+          drop_unused();
+          return p;
+        }
       } else {
         ++builds_;
         mine = std::make_shared<std::promise<Ptr>>();
