@@ -7,11 +7,13 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
 #include "geometry/surface_polygons.h"
+#include "geometry/triangle_tree.h"
 #include "tolerances.h"
 
 namespace pd {
@@ -132,26 +134,33 @@ Concavity hull_concavity(const HullOfPoints& h, const PreparedMesh& part, double
   for (std::size_t i = 0; i < corner_seen.size(); ++i)
     if (corner_seen[i]) hull_vertices.push_back({p(0, long(i)), p(1, long(i)), p(2, long(i))});
   std::sort(hull_vertices.begin(), hull_vertices.end());
+  // The nearest point of the hull's boundary to a point inside it is its
+  // projection onto the nearest facet plane, which lies in that facet: the
+  // nearest point of the facets' triangles, found in a tree (a scan of every
+  // facet per point cost O(points × facets): most of a fine part's screen).
   const Vec3 lo = p.rowwise().minCoeff(), hi = p.rowwise().maxCoeff();
+  std::optional<TriangleTree> facets;
+  int hint = -1;
   for (long i = 0; i < surface.cols(); ++i) {
     const Vec3 y = surface.col(i) - centre;
     if ((y.array() < lo.array()).any() || (y.array() > hi.array()).any()) continue;
     if (std::binary_search(hull_vertices.begin(), hull_vertices.end(),
                            std::array<double, 3>{y.x(), y.y(), y.z()}))
       continue;
-    std::size_t near = 0;
-    double best = -INFINITY;
-    for (std::size_t f = 0; f < h.f.normals.size(); ++f) {
-      const double s = h.f.normals[f].dot(y) + h.f.offsets[f];
-      if (s > best) best = s, near = f;
+    if (!facets) {
+      std::vector<std::array<Vec3, 3>> corners;
+      corners.reserve(h.f.triangles.size());
+      for (const auto& t : h.f.triangles)
+        corners.push_back({p.col(t[0]), p.col(t[1]), p.col(t[2])});
+      facets.emplace(corners);
     }
+    const TriangleTree::Nearest x = facets->nearest(y, hint);
+    hint = x.face;
+    // A point off the hull by more than rounding is not the part's (another
+    // shell's hull holds it): skipped, as its nearest facet says.
     const double on = tol::kOnHull * (hi - lo).norm();
-    if (best > on) continue;  // outside this hull
-    const Vec3 x = best >= -on ? y : Vec3(y - best * h.f.normals[near]);
-    bool in = true;
-    for (std::size_t f = 0; f < h.f.normals.size() && in; ++f)
-      in = h.f.normals[f].dot(x) + h.f.offsets[f] <= on;
-    if (in) consider(x);
+    if (h.f.normals[size_t(x.face)].dot(y) + h.f.offsets[size_t(x.face)] > on) continue;
+    consider(x.point);
     if (c.stopped) return finish();
   }
 

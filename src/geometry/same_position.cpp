@@ -11,20 +11,26 @@ std::vector<int> first_at_same_position(const Points& p) {
   std::vector<int> first(static_cast<size_t>(n));
   std::iota(first.begin(), first.end(), 0);
   // NaN would break the sort's ordering: non-finite columns stay their own.
-  std::vector<int> order;
+  // The coordinates are sorted with their column, side by side in memory (an
+  // index sort reading p at random was most of a fine part's welding checks).
+  struct Column {
+    double x, y, z;
+    int i;
+  };
+  std::vector<Column> order;
   order.reserve(first.size());
   for (int i = 0; i < n; ++i)
-    if (p.col(i).allFinite()) order.push_back(i);
-  const auto same = [&](int a, int b) {
-    return p(0, a) == p(0, b) && p(1, a) == p(1, b) && p(2, a) == p(2, b);
-  };
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    for (int k = 0; k < 3; ++k)
-      if (p(k, a) != p(k, b)) return p(k, a) < p(k, b);
-    return a < b;  // within a run of equal points, the first column leads
+    if (p.col(i).allFinite()) order.push_back({p(0, i), p(1, i), p(2, i), i});
+  std::sort(order.begin(), order.end(), [](const Column& a, const Column& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    if (a.z != b.z) return a.z < b.z;
+    return a.i < b.i;  // within a run of equal points, the first column leads
   });
-  for (size_t k = 1; k < order.size(); ++k)
-    if (same(order[k], order[k - 1])) first[order[k]] = first[order[k - 1]];
+  for (size_t k = 1; k < order.size(); ++k) {
+    const Column &a = order[k - 1], &b = order[k];
+    if (a.x == b.x && a.y == b.y && a.z == b.z) first[size_t(b.i)] = first[size_t(a.i)];
+  }
   return first;
 }
 
