@@ -195,8 +195,9 @@ TEST(Parts, ASoleInstancePlacedWithoutStretchKeepsTheDistancesItWasMeasuredOn) {
       EXPECT_EQ(placed.vertices, apply_placement(file->vertices, p.surface->placement)) << p.id;
       Eigen::AlignedBox3d box;
       for (long v = 0; v < placed.vertices.cols(); ++v) box.extend(Vec3(placed.vertices.col(v)));
-      if (p.id.find("sole") != std::string::npos)
+      if (p.id.find("sole") != std::string::npos) {
         EXPECT_GT(box.min().cwiseAbs().maxCoeff(), 8000) << p.id;
+      }
     }
   }
   for (const std::string& f : files) std::remove(f.c_str());

@@ -76,12 +76,19 @@ Hull convex_hull(const Points& pts) {
   return convex_hull(pts, nullptr);
 }
 
-Hull convex_hull(const Points& pts, HullTriangles* facets) {
-  if (facets) *facets = HullTriangles{};
+namespace {
+
+// A point set centred in its frame, its principal axes and how many of them
+// it spans (3 solid, 2 flat, 1 collinear, 0 a point): robust to scale.
+struct Spread {
+  Points c;
+  Eigen::Matrix3d axes;
+  int dim = 3;
+};
+
+Spread spread_of(const Points& pts) {
   if (pts.cols() == 0) throw std::invalid_argument("no vertices");
   if (!pts.allFinite()) throw std::invalid_argument("non-finite (NaN or Inf) coordinates");
-
-  Hull h;
   // Principal axes of the centred, scaled set decide the dimension robustly.
   const Frame f = points_frame(pts);
   // Beyond the double range the frame cannot shrink the set to the unit ball:
@@ -90,24 +97,43 @@ Hull convex_hull(const Points& pts, HullTriangles* facets) {
     throw std::invalid_argument(
         "coordinates too large for double-precision arithmetic: the part's bounding box "
         "half-diagonal exceeds 1.8e308");
+  Spread s;
   const Points local = f.to_local(pts);
   const Vec3 mean = local.rowwise().mean();
-  const Points c = local.colwise() - mean;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(c * c.transpose());
-  const Eigen::Matrix3d axes = eig.eigenvectors();  // ascending eigenvalues
+  s.c = local.colwise() - mean;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s.c * s.c.transpose());
+  s.axes = eig.eigenvectors();  // ascending eigenvalues
   Vec3 extent;
   for (int k = 0; k < 3; ++k) {
-    const auto proj = axes.col(k).transpose() * c;
+    const auto proj = s.axes.col(k).transpose() * s.c;
     extent[k] = proj.maxCoeff() - proj.minCoeff();
   }
   const double size = std::max(extent[2], 1e-300);
-  int dim = 3;
   if (extent[2] <= tol::kFlat)
-    dim = 0;
+    s.dim = 0;
   else if (extent[1] <= tol::kFlat * size)
-    dim = 1;
+    s.dim = 1;
   else if (extent[0] <= tol::kFlat * size)
-    dim = 2;
+    s.dim = 2;
+  return s;
+}
+
+}  // namespace
+
+Hull hull_of_hull_vertices(const Points& pts) {
+  if (pts.cols() < 4 || spread_of(pts).dim != 3) return convex_hull(pts);
+  Hull h;
+  h.vertices = pts;
+  return h;
+}
+
+Hull convex_hull(const Points& pts, HullTriangles* facets) {
+  if (facets) *facets = HullTriangles{};
+  Hull h;
+  const Spread spread = spread_of(pts);
+  const Points& c = spread.c;
+  const Eigen::Matrix3d& axes = spread.axes;
+  int dim = spread.dim;
 
   if (dim == 3) {
     // Triangulated output ("Qt") changes no vertex, only how facets are listed.

@@ -21,6 +21,12 @@ struct Hull {
 /// Throws std::invalid_argument for an empty set or non-finite coordinates.
 Hull convex_hull(const Points& pts);
 
+/// The hull of points known to be the vertices of a solid hull, moved by an
+/// affine map (a file's hull placed in the scene): a nonsingular affine image
+/// of a hull's vertices is its image's, so no qhull runs again while the set
+/// is still solid by convex_hull's own test; else convex_hull of them.
+Hull hull_of_hull_vertices(const Points& pts);
+
 /// The triangulated facets of a solid hull as convex_hull found them: corners
 /// as indices into Hull::vertices, outward unit normals in the input's axes.
 struct HullTriangles {

@@ -110,6 +110,11 @@ std::string load_error(const PartSpec& spec, const std::exception& e) {
                                                   : e.what());
 }
 
+// The caches, and the mesh store where the surfaces kept go.
+struct PartsStorage : PartsCache {
+  std::shared_ptr<const MeshStore> meshes;
+};
+
 // A mesh file as its instances share it: read once, in a loader process that
 // reduces each piece to the vertices of its hull, measures what the parts
 // stage needs and stores the surface (digest); the meshes themselves never
@@ -299,7 +304,7 @@ void settle_hulls(MeshFile& f, double concavity_tol, const AutoTolerance* auto_t
 // sag under auto and, for pieces auto/decompose, its nonconvexity, with the
 // surface put in the store for the stages that need triangles again. What
 // was read is let go: the parent gets only what digest_bytes holds.
-void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsCache& cache,
+void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const PartsStorage& cache,
             const AutoTolerance* auto_tol) {
   try {
     if (f.read.error) throw MeshError(*f.read.error);
@@ -452,7 +457,7 @@ void take_digest(const std::string& bytes, MeshFile& f,
 // A file whose hulls are cached needs no read when its surface is not kept,
 // or is in the store with its nonconvexity cached: then it is settled here.
 bool settled_from_cache(const PartSpec& spec, MeshFile& f, double concavity_tol,
-                        const PartsCache& cache, const AutoTolerance* auto_tol) {
+                        const PartsStorage& cache, const AutoTolerance* auto_tol) {
   if (!f.hulls_cached || (auto_tol && !f.sag) || f.deflection != 0) return false;
   settle_hulls(f, concavity_tol, auto_tol);
   if (!keeps_surface(spec.pieces)) return true;
@@ -520,7 +525,10 @@ Part build_part(const PartSpec& spec, const MeshFile* file, const PartsCache& ca
   try {
     for (size_t k = 0; k < sets.size(); ++k) {
       part.vertex_count += file ? file->counts[k] : sets[k]->cols();
-      Hull h = file ? convex_hull(place_points(*sets[k], spec)) : inline_hull(spec, cache);
+      // The file's reduced points are its hull's vertices: placed, they are the
+      // placed hull's.
+      Hull h =
+          file ? hull_of_hull_vertices(place_points(*sets[k], spec)) : inline_hull(spec, cache);
       for (auto& w : h.warnings)
         part.warnings.push_back(sets.size() > 1 ? "piece " + std::to_string(k) + ": " + w : w);
       const Aabb b = Aabb::of(h.vertices);
@@ -631,7 +639,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   const AutoTolerance* auto_tol = scene.auto_tolerance ? &*scene.auto_tolerance : nullptr;
   std::vector<Part> built(unique.size());
   std::vector<MeshFile> mesh_files(distinct.files);
-  PartsCache with_store = cache;  // surfaces kept go to the mesh store
+  PartsStorage with_store;  // surfaces kept go to the mesh store
+  static_cast<PartsCache&>(with_store) = cache;
   if (!with_store.meshes)
     for (size_t u = 0; u < unique.size() && !with_store.meshes; ++u)
       if (file_of[u] && keeps_surface(unique[u]->pieces))

@@ -106,9 +106,6 @@ struct Part {
 struct PartsCache {
   std::string dir;                                                  ///< "" = no cache
   const std::map<std::string, std::string>* file_hashes = nullptr;  ///< path -> content hash
-  /// Where kept surfaces go (null: the cache directory's store, else a
-  /// temporary one of the run's own, made when a part keeps a surface).
-  std::shared_ptr<const MeshStore> meshes;
 };
 
 /// Loads, transforms and hulls every part. A part that fails gets `error` set
@@ -122,7 +119,9 @@ struct PartsCache {
 /// limit) and `load_memory_mb` (load_meshes_isolated): a reader that hangs,
 /// crashes or allocates without end costs only its file's parts. Forks: call
 /// it from a process with one thread.
-/// `cache`: where measured convexities are cached (PartsCache). Under
+/// `cache`: where measured convexities are cached (PartsCache); the surfaces
+/// that pieces auto and decompose keep go to its mesh store (scene/mesh_store.h),
+/// or without a cache directory to a temporary one that the parts share. Under
 /// `scene.auto_tolerance` every part's sag is measured (once per file, cached
 /// beside the hulls) and a file's concavity tolerance is kConcavityFraction of
 /// the band two copies of it would get. `before_load`:
