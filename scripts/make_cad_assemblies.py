@@ -102,11 +102,19 @@ class Part:
 
 
 class Ctx:
-    def __init__(self, quick):
+    """$fn and chord sag of the round features. `fine` multiplies every $fn (1: the assemblies as
+    documented; scripts/make_scale_assembly.py renders them finer); the sags follow it."""
+
+    def __init__(self, quick, fine=1):
         self.quick = quick
+        self.fine = fine
 
     def fn(self, n):
-        return min(n, QUICK_FN) if self.quick else n
+        return min(n, QUICK_FN) if self.quick else n * self.fine
+
+    def fx(self, n):
+        """A $fn that --quick leaves as it is (its sag is taken at fn(n), an upper bound)."""
+        return n * self.fine
 
     def sag(self, r, n):
         return r * (1.0 - math.cos(math.pi / self.fn(n)))
@@ -279,9 +287,10 @@ def bearing_housing(ctx, name):
     fr, fh, fb, fs = 96, 72, 32, 64
     co, ci = RP + RB - RG, RP - RB + RG
     outer = ("rotate_extrude($fn=%d) difference(){ translate([%r,-7]) square([%r,14]);"
-             " translate([%r,0]) circle(r=%r, $fn=48); }" % (ctx.fn(fr), RP + 2.0, 23.5 - RP - 2.0, co, RG))
+             " translate([%r,0]) circle(r=%r, $fn=%d); }" % (ctx.fn(fr), RP + 2.0, 23.5 - RP - 2.0, co, RG,
+                                                             ctx.fx(48)))
     inner = ("rotate_extrude($fn=%d) difference(){ translate([10,-7]) square([%r,14]);"
-             " translate([%r,0]) circle(r=%r, $fn=48); }" % (ctx.fn(fr), RP - 2.0 - 10.0, ci, RG))
+             " translate([%r,0]) circle(r=%r, $fn=%d); }" % (ctx.fn(fr), RP - 2.0 - 10.0, ci, RG, ctx.fx(48)))
     housing = ("difference(){ translate([-40,-35,-7]) cube([80,70,27]);\n"
                " translate([0,0,-8]) cylinder(r=23.5, h=15, $fn=%d);\n"  # bearing seat, shoulder at z 7
                " translate([0,0,6]) cylinder(r=20, h=15, $fn=%d);\n"
@@ -611,6 +620,14 @@ def read_stl(path):
 
 
 def render(src, cache, exe, version):
+    tris = read_stl(render_path(src, cache, exe, version))
+    if not tris:
+        sys.exit("openscad rendered an empty body:\n" + src)
+    return canonical(tris)
+
+
+def render_path(src, cache, exe, version):
+    """The cached binary STL of `src` (rendered when missing), in OpenSCAD's triangle order."""
     key = hashlib.sha256((version + "\n" + src).encode()).hexdigest()
     out = os.path.join(cache, key + ".stl")
     if not os.path.exists(out):
@@ -625,10 +642,7 @@ def render(src, cache, exe, version):
                 sys.exit("openscad failed on:\n%s\n%s" % (src, p.stderr[-2000:]))
             shutil.move(stl, out + ".tmp")
             os.replace(out + ".tmp", out)
-    tris = read_stl(out)
-    if not tris:
-        sys.exit("openscad rendered an empty body:\n" + src)
-    return canonical(tris)
+    return out
 
 
 def canonical(tris):
@@ -780,9 +794,8 @@ def provably_apart(bodies_a, bodies_b, margin=0.1):
 
 # ---------------------------------------------------------------------------------------------
 
-def build(name, builder, ctx, outdir, cache, exe, version):
-    desc, tol, parts, rels = builder(ctx, name)
-    # every stated relation keeps its class after tessellation and float32 (module docstring)
+def check_relations(name, tol, rels):
+    """Every stated relation keeps its class after tessellation and float32 (module docstring)."""
     for r in rels:
         worst = r["max_sag"] + F32_PAIR
         if r["expect"] == "contact":
@@ -794,6 +807,11 @@ def build(name, builder, ctx, outdir, cache, exe, version):
         if not ok:
             sys.exit("%s: %s/%s %s does not keep its class at tolerance %g (sag %g)"
                      % (name, r["a"], r["b"], r["expect"], tol, r["max_sag"]))
+
+
+def build(name, builder, ctx, outdir, cache, exe, version):
+    desc, tol, parts, rels = builder(ctx, name)
+    check_relations(name, tol, rels)
     rng = random.Random("pdcheck-cad-" + name)
     R, t = random_rotation(rng), far_offset(rng)
     d = os.path.join(outdir, name)
