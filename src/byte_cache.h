@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <future>
@@ -80,6 +81,8 @@ class ByteCache {
   }
 
   size_t builds() const { return builds_; }
+  /// Values dropped to keep within the budget, so far.
+  size_t drops() const { return drops_; }
   size_t hits() const { return hits_; }
   /// The most bytes the kept values held at once.
   size_t peak_bytes() const { return peak_; }
@@ -97,6 +100,7 @@ class ByteCache {
       auto e = entries_.find(*it);
       if (e->second.bytes > 0 && e->second.value.get().use_count() == 1) {
         bytes_ -= e->second.bytes;
+        ++drops_;
         entries_.erase(e);
         it = order_.erase(it);
       } else {
@@ -109,6 +113,7 @@ class ByteCache {
   std::mutex mutex_;
   std::map<Key, Entry> entries_;
   std::list<Key> order_;  ///< least recently used first
+  std::atomic<size_t> drops_{0};
   size_t bytes_ = 0, peak_ = 0, builds_ = 0, hits_ = 0;
 };
 

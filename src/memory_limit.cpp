@@ -51,7 +51,7 @@ double memory_share_mb(double available_mb, int processes) {
 
 double memory_budget_mb(double available_mb) {
   if (!(available_mb > 0.0)) return 1024.0;
-  return std::max(256.0, available_mb / 8.0);
+  return std::clamp(available_mb / 8.0, 256.0, 1024.0);
 }
 
 double parse_memory_mb(const std::string& text) {

@@ -18,7 +18,7 @@ double memory_share_mb(double available_mb, int processes);
 
 /// The default of --memory: what the stages that hold part surfaces keep for
 /// reuse (batch/refine.cpp), in MB: an eighth of the available memory, at
-/// least 256 MB (1024 when the available memory is unknown).
+/// least 256 MB and at most 1024 (1024 when the available memory is unknown).
 double memory_budget_mb(double available_mb);
 
 /// A --memory value in MB: a number of MB, or one with a unit K, M, G or T

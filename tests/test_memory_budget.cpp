@@ -130,7 +130,8 @@ TEST(MemoryBudget, MemoryIsAnAmountOrAnError) {
   EXPECT_DOUBLE_EQ(pd::parse_memory_mb("1.5G"), 1536);
   EXPECT_DOUBLE_EQ(pd::parse_memory_mb("2048"), 2048);
   EXPECT_DOUBLE_EQ(pd::parse_memory_mb("64MB"), 64);
-  EXPECT_DOUBLE_EQ(pd::memory_budget_mb(24000), 3000);
+  EXPECT_DOUBLE_EQ(pd::memory_budget_mb(24000), 1024);
+  EXPECT_DOUBLE_EQ(pd::memory_budget_mb(4000), 500);
   EXPECT_DOUBLE_EQ(pd::memory_budget_mb(1000), 256);
   for (const char* bad : {"", "0", "-5M", "lots", "5X", "nanM", "infG"}) {
     EXPECT_THROW(pd::parse_memory_mb(bad), std::invalid_argument) << bad;

@@ -91,7 +91,7 @@ CheckCommand::CheckCommand(CLI::App& app) : app_(app) {
       ->check(in_range(0, 1e9, "must be a number of MB from 0 to 1e9"));
   app.add_option("--memory", a.memory,
                  "memory the run keeps part surfaces in for reuse across their pairs (512M, 2G; "
-                 "default: an eighth of the machine's, at least 256M); what the pairs being "
+                 "default: an eighth of the machine's, from 256M to 1G); what the pairs being "
                  "solved need comes on top (docs/performance.md)")
       ->check([](const std::string& v) {
         try {

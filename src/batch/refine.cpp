@@ -1,6 +1,9 @@
 #include "batch/refine.h"
 
+#include <malloc.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -474,6 +477,7 @@ class Refinement {
       }
     };
     Progress progress(flagged_.size(), options_.quiet, "mesh tests");
+    std::atomic<size_t> trimmed{0};
     parallel_for(order.size(), options_.jobs, [&](size_t k) {
       const size_t n = order[k];
       const auto [a, b] = pairs_[flagged_[n]];
@@ -494,6 +498,10 @@ class Refinement {
             measure_thickness(*sa, *sb, tolerance(n), c.tolerance ? &*c.tolerance : nullptr,
                               results_[flagged_[n]], verdicts_[n], why_not_[n]);
       }
+      // What the cache dropped goes back to the system, not to a heap that
+      // would keep it resident for the rest of the run.
+      if (const size_t dropped = solids.drops(); dropped > trimmed.exchange(dropped))
+        malloc_trim(0);
       progress.tick();
     });
     progress.finish();
