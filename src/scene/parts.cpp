@@ -647,8 +647,15 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
         with_store.meshes =
             cache.dir.empty() ? MeshStore::temporary() : MeshStore::in_cache(cache.dir);
   std::vector<const PartSpec*> file_spec(distinct.files);
+  // Progress counts scene parts as their file is digested (most of the
+  // stage), inline parts as they are hulled.
+  std::vector<size_t> file_users(distinct.files, 0);
+  const auto done_file = [&](size_t f) {
+    if (on_built && file_users[f] > 0) on_built(file_users[f]);
+  };
   for (size_t u = 0; u < unique.size(); ++u)
     if (file_of[u]) {
+      file_users[*file_of[u]] += users[u];
       MeshFile& f = mesh_files[*file_of[u]];
       const double s = stretch(placement(*unique[u]));
       f.min_stretch = std::min(f.min_stretch, s);
@@ -669,8 +676,10 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     const double deflection = mesh_files[f].deflection;
     // A B-rep file is always read: its tessellation is in no cache.
     if (cached_hulls(spec, mesh_files[f], with_store) &&
-        settled_from_cache(spec, mesh_files[f], concavity_tol, with_store, auto_tol))
+        settled_from_cache(spec, mesh_files[f], concavity_tol, with_store, auto_tol)) {
+      done_file(f);
       continue;
+    }
     if (spec.node) {
       std::ostringstream key;  // a split file, read once per deflection for all its node parts
       key.precision(17);
@@ -726,10 +735,14 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
         } catch (const std::exception& e) {
           mesh_files[f].error = "cannot load mesh file " + requests[r].path + ": " + e.what();
         }
+        done_file(f);
       }
     };
     auto failed = [&](size_t r, const std::string& why) {
-      for (size_t f : requested[r]) mesh_files[f].error = why;
+      for (size_t f : requested[r]) {
+        mesh_files[f].error = why;
+        done_file(f);
+      }
     };
     digest_meshes_isolated(requests, threads, load_timeout, load_memory_mb, before_load,
                            digest_request, take, failed);
@@ -738,7 +751,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   parallel_for(unique.size(), threads, [&](size_t u) {
     built[u] = build_part(*unique[u], file_of[u] ? &mesh_files[*file_of[u]] : nullptr, with_store,
                           auto_tol);
-    if (on_built) on_built(users[u]);
+    if (on_built && !file_of[u]) on_built(users[u]);
   });
 
   std::vector<Part> parts;

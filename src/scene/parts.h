@@ -113,8 +113,9 @@ struct PartsCache {
 /// vertices once) whatever its instances' transforms; the same file under the
 /// same units, transform and pieces is hulled once. `threads` > 1 hulls distinct parts in
 /// parallel (the result does not depend on it); every thread has ended on return.
-/// `on_built(n)`, when given, is called (from the building thread) as the geometry
-/// of n scene parts is ready, for progress. Mesh files are read first, in up to
+/// `on_built(n)`, when given, is called (from any thread) as the geometry
+/// of n scene parts is ready (a file's parts as its loader hands it back), for
+/// progress. Mesh files are read first, in up to
 /// `threads` loader processes, each file within `load_timeout` seconds (0 = no
 /// limit) and `load_memory_mb` (load_meshes_isolated): a reader that hangs,
 /// crashes or allocates without end costs only its file's parts. Forks: call
