@@ -754,11 +754,17 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     if (on_built && !file_of[u]) on_built(users[u]);
   });
 
+  mesh_files.clear();  // their reduced points are placed in the parts now
+  // A distinct part's last scene part takes it over: a copy per instance, not
+  // one more of every hull (at 10^8 triangles the hulls are most of what
+  // the parts stage keeps).
+  std::vector<size_t> last_user(built.size(), 0);
+  for (size_t k = 0; k < scene.parts.size(); ++k) last_user[source[k]] = k;
   std::vector<Part> parts;
   parts.reserve(scene.parts.size());
   const std::string units = scene.units.value_or("mm");
   for (size_t k = 0; k < scene.parts.size(); ++k) {
-    Part p = built[source[k]];
+    Part p = last_user[source[k]] == k ? std::move(built[source[k]]) : built[source[k]];
     p.id = scene.parts[k].id;
     p.motion = scene.parts[k].motion;
     if (!p.error) {
