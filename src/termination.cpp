@@ -1,6 +1,8 @@
 #include "termination.h"
 
+#include <fcntl.h>
 #include <limits.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -21,7 +23,35 @@ constexpr int kMaxTemps = 8;  // output files are written one at a time
 char g_temp_path[kMaxTemps][PATH_MAX];
 std::atomic<int> g_temp_state[kMaxTemps];  // 0 free, 1 being filled, 2 tracked
 
+constexpr int kMaxTempDirs = 4;  // a run's mesh stores (one each for a run and an HTML page)
+char g_dir_path[kMaxTempDirs][PATH_MAX];
+std::atomic<int> g_dir_fd[kMaxTempDirs];     // open O_DIRECTORY descriptor, -1 or 0 when free
+std::atomic<int> g_dir_state[kMaxTempDirs];  // 0 free, 1 being filled, 2 tracked
+
 constexpr int kSignals[] = {SIGTERM, SIGINT, SIGHUP};
+
+// Removes the files of directory `fd` and the directory `path`, with system
+// calls only (async-signal-safe: getdents64 lists without allocating).
+void remove_temp_dir(int fd, const char* path) {
+  alignas(8) static char buf[8192];
+  for (;;) {
+    lseek(fd, 0, SEEK_SET);
+    const long n = syscall(SYS_getdents64, fd, buf, sizeof buf);
+    if (n <= 0) break;
+    bool removed = false;
+    for (long at = 0; at < n;) {
+      // struct linux_dirent64: d_ino (8), d_off (8), d_reclen (2), d_type (1), d_name.
+      unsigned short reclen = 0;
+      std::memcpy(&reclen, buf + at + 16, sizeof reclen);
+      const char* name = buf + at + 19;
+      if (std::strcmp(name, ".") != 0 && std::strcmp(name, "..") != 0)
+        removed |= unlinkat(fd, name, 0) == 0;
+      at += reclen;
+    }
+    if (!removed) break;  // nothing more it can remove
+  }
+  rmdir(path);
+}
 
 void sleep_ms(long ms) {
   timespec t{ms / 1000, (ms % 1000) * 1000000L};
@@ -50,6 +80,8 @@ void on_termination(int sig) {
   }
   for (int k = 0; k < kMaxTemps; ++k)
     if (g_temp_state[k].load() == 2) unlink(g_temp_path[k]);
+  for (int k = 0; k < kMaxTempDirs; ++k)
+    if (g_dir_state[k].load() == 2) remove_temp_dir(g_dir_fd[k].load(), g_dir_path[k]);
   _exit(128 + sig);
 }
 
@@ -112,6 +144,30 @@ void TrackedTempFile::track(const std::string& path) {
 
 TrackedTempFile::~TrackedTempFile() {
   if (slot_ >= 0) g_temp_state[slot_].store(0);
+}
+
+void TrackedTempDir::track(const std::string& dir) {
+  if (slot_ >= 0 || dir.size() >= PATH_MAX) return;
+  const int fd = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  for (int k = 0; k < kMaxTempDirs; ++k) {
+    int free_slot = 0;
+    if (g_dir_state[k].compare_exchange_strong(free_slot, 1)) {
+      std::memcpy(g_dir_path[k], dir.c_str(), dir.size() + 1);
+      g_dir_fd[k].store(fd);
+      g_dir_state[k].store(2);
+      slot_ = k;
+      return;
+    }
+  }
+  close(fd);
+}
+
+TrackedTempDir::~TrackedTempDir() {
+  if (slot_ < 0) return;
+  const int fd = g_dir_fd[slot_].load();
+  g_dir_state[slot_].store(0);
+  close(fd);
 }
 
 }  // namespace pd

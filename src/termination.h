@@ -50,4 +50,20 @@ class TrackedTempFile {
   int slot_ = -1;
 };
 
+/// A temporary directory of plain files (the run's mesh store) that the
+/// handler removes, files and all, if the process is terminated while it is
+/// tracked: from just after its creation (under TerminationBlocked) until this
+/// object ends. It holds the directory open, to list it without allocating.
+class TrackedTempDir {
+ public:
+  TrackedTempDir() = default;
+  void track(const std::string& dir);
+  ~TrackedTempDir();
+  TrackedTempDir(const TrackedTempDir&) = delete;
+  TrackedTempDir& operator=(const TrackedTempDir&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
 }  // namespace pd

@@ -266,10 +266,22 @@ TEST(HullCache, ARerunTakesTheHullsFromTheCache) {
       EXPECT_EQ(warm[k].pieces[0].vertices, cold[k].pieces[0].vertices);
       EXPECT_EQ(warm[k].box.lo, cold[k].box.lo);
     }
-    // Pieces "auto" keeps the file's surface for the refinement: it reads the file.
+    // Pieces "auto" keeps the file's surface for the refinement: it reads the
+    // file, until its convexity and surface are stored too (the mesh store).
     const auto with_surface = build_parts(box_scene("auto"), 1, {}, kDefaultLoadTimeout, cache,
                                           kAutoLoadMemory, crash_on_box);
     EXPECT_TRUE(with_surface[0].error);
+    const auto auto_cold = build_parts(box_scene("auto"), 1, {}, kDefaultLoadTimeout, cache);
+    ASSERT_FALSE(auto_cold[0].error) << *auto_cold[0].error;
+    const auto auto_warm = build_parts(box_scene("auto"), 1, {}, kDefaultLoadTimeout, cache,
+                                       kAutoLoadMemory, crash_on_box);
+    ASSERT_FALSE(auto_warm[0].error) << *auto_warm[0].error;
+    EXPECT_EQ(auto_warm[0].pieces[0].vertices, auto_cold[0].pieces[0].vertices);
+    EXPECT_EQ(auto_warm[0].convex, auto_cold[0].convex);
+    ASSERT_TRUE(auto_warm[0].surface);
+    EXPECT_EQ(file_mesh_of(*auto_warm[0].surface)->triangles,
+              file_mesh_of(*auto_cold[0].surface)->triangles);
+    EXPECT_EQ(entries(dir / "meshes", ".pdm").size(), 1u);
   }
 
   // The hulls used are the entry's: one stored under the file's key wins over

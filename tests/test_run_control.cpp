@@ -59,11 +59,14 @@ std::vector<pid_t> processes(pid_t parent, const std::string& needle = "") {
 }
 
 /// Starts pdcheck with `args` in `dir` (stdout and stderr to files there).
+/// `tmpdir`, when given, is its TMPDIR.
 pid_t start(const std::string& dir, const std::vector<std::string>& args,
-            const std::string& env_name = "", const std::string& env_value = "") {
+            const std::string& env_name = "", const std::string& env_value = "",
+            const std::string& tmpdir = "") {
   const pid_t pid = fork();
   if (pid == 0) {
     if (!env_name.empty()) setenv(env_name.c_str(), env_value.c_str(), 1);
+    if (!tmpdir.empty()) setenv("TMPDIR", tmpdir.c_str(), 1);
     const int out = open((dir + "/out.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = open((dir + "/err.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(out, 1);
@@ -96,9 +99,14 @@ std::string overlapping_cubes(const std::string& dir, int n) {
 TEST(Signals, TerminationEndsTheWorkersAndLeavesNoFile) {
   for (int sig : {SIGTERM, SIGINT}) {
     const std::string dir = scratch_dir("signal_" + std::to_string(sig));
-    // Every pair sleeps 30 s in its worker: the workers are busy when the signal comes.
-    const pid_t pid = start(dir, {kDemo, "-q", "--jobs", "2", "-o", dir + "/report.json"},
-                            "PDCHECK_TEST_PAIR_SLEEP_MS", "30000");
+    // Every pair sleeps 30 s in its worker: the workers are busy when the signal
+    // comes. Without a cache the surfaces are in a temporary mesh store, in a
+    // TMPDIR of the test's own.
+    const std::string tmp = dir + "/tmp";
+    fs::create_directories(tmp);
+    const pid_t pid =
+        start(dir, {kDemo, "-q", "--jobs", "2", "--no-cache", "-o", dir + "/report.json"},
+              "PDCHECK_TEST_PAIR_SLEEP_MS", "30000", tmp);
     std::vector<pid_t> workers;
     const auto t0 = std::chrono::steady_clock::now();
     while (since(t0) < 20) {  // the two pair workers (mesh loaders come and go before them)
@@ -119,8 +127,11 @@ TEST(Signals, TerminationEndsTheWorkersAndLeavesNoFile) {
     }
     for (const auto& e : fs::directory_iterator(dir)) {
       const std::string name = e.path().filename().string();
-      EXPECT_TRUE(name == "out.txt" || name == "err.txt") << name << " left behind";
+      EXPECT_TRUE(name == "out.txt" || name == "err.txt" || name == "tmp")
+          << name << " left behind";
     }
+    for (const auto& e : fs::directory_iterator(tmp))
+      ADD_FAILURE() << e.path() << " left behind (the run's mesh store)";
   }
 }
 

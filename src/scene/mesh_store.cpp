@@ -46,10 +46,13 @@ std::shared_ptr<const MeshStore> MeshStore::temporary() {
   std::filesystem::path base = std::filesystem::temp_directory_path(ec);
   if (ec) base = "/tmp";
   std::string pattern = (base / "pdcheck-meshes-XXXXXX").string();
+  const TerminationBlocked blocked;  // made and tracked before a signal can come
   if (!::mkdtemp(pattern.data()))
     throw std::runtime_error("cannot make a temporary directory for meshes in " + base.string() +
                              ": " + std::strerror(errno));
-  return std::shared_ptr<const MeshStore>(new MeshStore(pattern, long(::getpid())));
+  auto store = std::shared_ptr<MeshStore>(new MeshStore(pattern, long(::getpid())));
+  store->tracked_.track(pattern);
+  return store;
 }
 
 MeshStore::~MeshStore() {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "geometry/mesh.h"
+#include "termination.h"
 
 namespace pd {
 
@@ -44,7 +45,8 @@ class MeshStore {
  private:
   MeshStore(std::string dir, long owner) : dir_(std::move(dir)), owner_(owner) {}
   std::string dir_;
-  long owner_ = 0;  ///< the pid that removes a temporary store; 0: persistent
+  long owner_ = 0;          ///< the pid that removes a temporary store; 0: persistent
+  TrackedTempDir tracked_;  ///< a temporary store: removed too when the run is terminated
 };
 
 /// A mesh the store holds: where, under which key, and its size (for the
