@@ -33,11 +33,6 @@ Points apply_placement(const Points& p, const Mat4& placement) {
   return (placement.topLeftCorner<3, 3>() * p).colwise() + Vec3(placement.topRightCorner<3, 1>());
 }
 
-long PartSurface::triangles() const {
-  if (file_mesh) return file_mesh->triangles.cols();
-  return stored ? stored->triangles : 0;
-}
-
 std::shared_ptr<const Mesh> file_mesh_of(const PartSurface& s) {
   if (s.file_mesh) return s.file_mesh;
   if (!s.stored || !s.stored->store) throw std::runtime_error("the part keeps no surface");

@@ -32,8 +32,6 @@ struct PartSurface {
   double concavity = 0.0;                 ///< the file's measured nonconvexity, scene units
   double concavity_tol = 0.0;  ///< what it was measured against (scene units; per file under auto)
   bool closed = false;         ///< the file's mesh bounds a solid
-  /// Triangles of the file mesh (0 when not known before it is read back).
-  long triangles() const;
 };
 
 /// The surface's mesh in file coordinates: the one held, or read back from the
