@@ -97,7 +97,7 @@ inline constexpr double kEpaBracket = 2 * kEpaRounding;
 /// Effort, not accuracy: GJK's support evaluations and EPA's expansions per
 /// pair. Past them the bracket so far seeds MLSL, which decides as before.
 inline constexpr int kGjkMaxIterations = 64;
-inline constexpr int kEpaMaxIterations = 400;
+inline constexpr int kEpaMaxIterations = 10000;
 /// A certified EPA depth (unit frame) below this is recomputed exactly from the
 /// input coordinates (solve/exact_facet.h): the bracket's width kEpaBracket and
 /// the unit frame's rounding (~1e-16) are then more than 2e-10 of the depth,

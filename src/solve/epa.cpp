@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "solve/gjk.h"
@@ -32,6 +33,11 @@ class Polytope {
   std::vector<Vec3> x;
   std::vector<MinkowskiIndex> id;  // each vertex's p_i − q_j, for the exact step
   std::vector<Face> faces;
+  // The faces by bound, nearest on top; a removed face leaves when it reaches
+  // the top. Deep pairs with a ring of near-tied minima (a shaft through a
+  // ring's hull) take thousands of expansions: a scan per expansion was most
+  // of their time.
+  std::vector<std::pair<double, int>> by_low;
   // Scratch of one expansion, kept across expansions (allocations were a tenth
   // of a 30+30 pair's time under perf).
   std::vector<int> removed, from, to;
@@ -54,15 +60,19 @@ class Polytope {
     if (!(len > 0)) return false;
     f.n = n / len;
     f.low = std::min({f.n.dot(x[a]), f.n.dot(x[b]), f.n.dot(x[c])});
+    by_low.emplace_back(f.low, static_cast<int>(faces.size()));
+    std::push_heap(by_low.begin(), by_low.end(), std::greater<>());
     faces.push_back(f);
     return true;
   }
 
-  int nearest() const {
-    int best = -1;
-    for (int k = 0; k < static_cast<int>(faces.size()); ++k)
-      if (faces[k].alive && (best < 0 || faces[k].low < faces[best].low)) best = k;
-    return best;
+  // The live face of least bound (the lowest index among equal bounds).
+  int nearest() {
+    while (!by_low.empty() && !faces[by_low.front().second].alive) {
+      std::pop_heap(by_low.begin(), by_low.end(), std::greater<>());
+      by_low.pop_back();
+    }
+    return by_low.empty() ? -1 : by_low.front().second;
   }
 
   // The removed region seen from w: faces whose plane has w beyond it by more
