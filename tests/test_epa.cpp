@@ -139,8 +139,8 @@ TEST(Epa, CoaxialShaftThroughARingClosesDespiteItsRingOfTiedMinima) {
   for (int seg : {100, 150})
     for (int k = 0; k < 3; ++k) {
       const Points shaft = testgen::ngon_prism(seg, 10, -60, 60, 2 * M_PI * r.uniform());
-      const testgen::PairCase c{
-          testgen::ngon_prism(2 * seg, 30, -10, 10, 2 * M_PI * r.uniform()), shaft};
+      const testgen::PairCase c{testgen::ngon_prism(2 * seg, 30, -10, 10, 2 * M_PI * r.uniform()),
+                                shaft};
       check_both("coaxial " + std::to_string(seg) + " segments #" + std::to_string(k),
                  testgen::place(r, c, static_cast<testgen::Placement>(k)), bt, dt);
     }

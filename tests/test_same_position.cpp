@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "geometry/same_position.h"
 
@@ -26,6 +27,33 @@ TEST(SamePosition, BoundaryEdgesAreThoseOfAnOddNumberOfTriangles) {
   open.triangles.conservativeResize(3, 3);
   EXPECT_EQ(boundary_edges(open), 3);
   EXPECT_EQ(boundary_edges(Mesh{m.vertices, Triangles(3, 0)}), 0);  // a point cloud
+}
+
+TEST(SamePosition, AGridSheetsBoundaryIsItsRim) {
+  // A k × k sheet of quads written as STL writes it (every triangle its own
+  // corners, in float32 far from the origin): 4k rim edges; each triangle
+  // written twice more (a doubled body) leaves every parity as it was.
+  for (int k : {1, 7, 40}) {
+    Mesh m;
+    std::vector<Vec3> corners;
+    auto at = [&](int i, int j) {
+      return Vec3(double(float(20000.0 + 0.1 * i)), double(float(-300.0 + 0.1 * j)), 5.0);
+    };
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j)
+        for (const Vec3& c :
+             {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)})
+          corners.push_back(c);
+    m.vertices.resize(3, static_cast<Eigen::Index>(corners.size()));
+    for (size_t i = 0; i < corners.size(); ++i) m.vertices.col(Eigen::Index(i)) = corners[i];
+    const Eigen::Index t = m.vertices.cols() / 3;
+    m.triangles.resize(3, 3 * t);
+    for (Eigen::Index c = 0; c < 3 * t; ++c)
+      for (int r = 0; r < 3; ++r) m.triangles(r, c) = static_cast<int>(3 * (c % t) + r);
+    const std::vector<int> first = first_at_same_position(m.vertices);
+    EXPECT_EQ(boundary_edges(m, first), 4 * k) << k;
+    EXPECT_EQ(distinct_positions(m.vertices, first).cols(), (k + 1) * (k + 1)) << k;
+  }
 }
 
 TEST(SamePosition, EveryColumnPointsAtTheFirstEqualOne) {
@@ -53,6 +81,15 @@ TEST(SamePosition, EveryColumnPointsAtTheFirstEqualOne) {
           }
       EXPECT_EQ(first[i], expected) << "round " << round << " column " << i;
     }
+    // The distinct positions: the columns that are their own first, in order.
+    const Points d = distinct_positions(p, first);
+    Eigen::Index k = 0;
+    for (long i = 0; i < p.cols(); ++i)
+      if (first[i] == i) {
+        ASSERT_LT(k, d.cols());
+        EXPECT_TRUE(d.col(k++).cwiseEqual(p.col(i)).count() == 3 || !p.col(i).allFinite());
+      }
+    EXPECT_EQ(k, d.cols());
   }
   EXPECT_TRUE(first_at_same_position(Points(3, 0)).empty());
 }

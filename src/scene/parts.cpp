@@ -313,9 +313,13 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
       long open = 0;
       for (const Mesh& m : meshes) {
         f.counts.push_back(m.vertices.cols());
-        f.reduced.push_back(
-            convex_hull(m.vertices, f.reduced.empty() ? &f.facets : nullptr).vertices);
-        open += boundary_edges(m);
+        // Welded once for both: qhull on each position once (an STL file
+        // repeats every corner about six times), and the open-shell check.
+        const std::vector<int> first = first_at_same_position(m.vertices);
+        f.reduced.push_back(convex_hull(distinct_positions(m.vertices, first),
+                                        f.reduced.empty() ? &f.facets : nullptr)
+                                .vertices);
+        open += boundary_edges(m, first);
       }
       if (open > 0) f.warnings.push_back(open_mesh_warning(open));  // cached with the hulls
       store = true;
