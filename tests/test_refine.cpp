@@ -306,7 +306,7 @@ TEST(Refine, ReadsSurfacesFromTheStoreAndDecidesAlikeUnderAnyBudget) {
   for (Part& p : parts) {
     const Mesh& m = *p.surface->file_mesh;
     ASSERT_EQ(store->put(p.id, m), "");
-    p.surface->stored = StoredMesh{store, p.id, m.vertices.cols(), m.triangles.cols()};
+    p.surface->stored = StoredMesh{store, p.id};
     p.surface->file_mesh.reset();
   }
   std::vector<std::pair<int, int>> pairs;

@@ -160,9 +160,10 @@ bool loader_setup(double memory_mb) {
 
 std::string out_of_memory(const std::string& path, bool capped, double memory_mb) {
   return "mesh file " + path + ": " +
-         (capped ? "reading it needed more than the loader's memory limit of " +
-                       megabytes(memory_mb) + " MB (--load-memory); damaged file?"
-                 : std::string("out of memory while loading (damaged file?)"));
+         (capped
+              ? "reading, hulling and measuring it needed more than the loader's memory limit of " +
+                    megabytes(memory_mb) + " MB (--load-memory); damaged file?"
+              : std::string("out of memory while loading (damaged file?)"));
 }
 
 /// Runs in a loader process: the file as read, or why it cannot be.

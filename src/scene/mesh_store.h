@@ -49,13 +49,10 @@ class MeshStore {
   TrackedTempDir tracked_;  ///< a temporary store: removed too when the run is terminated
 };
 
-/// A mesh the store holds: where, under which key, and its size (for the
-/// memory a stage that reads it back will need).
+/// A mesh the store holds: where, and under which key.
 struct StoredMesh {
   std::shared_ptr<const MeshStore> store;
   std::string key;
-  long vertices = 0;
-  long triangles = 0;
 };
 
 }  // namespace pd

@@ -345,7 +345,7 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
       const std::string why = cache.meshes->put(f.hash, meshes[0]);
       if (!why.empty())
         throw std::runtime_error("its surface cannot be kept for the refinement: " + why);
-      f.stored = StoredMesh{nullptr, f.hash, meshes[0].vertices.cols(), meshes[0].triangles.cols()};
+      f.stored = StoredMesh{nullptr, f.hash};
     }
   } catch (const std::exception& e) {
     f.reduced.clear();
@@ -414,10 +414,7 @@ std::string digest_bytes(const MeshFile& f) {
   w.put(std::int32_t(f.leaf)).put(std::uint8_t(bool(f.tessellation)));
   if (f.tessellation) w.put(*f.tessellation);
   w.put(std::uint8_t(bool(f.stored)));
-  if (f.stored)
-    w.put(f.stored->key)
-        .put(std::int64_t(f.stored->vertices))
-        .put(std::int64_t(f.stored->triangles));
+  if (f.stored) w.put(f.stored->key);
   return std::move(w).bytes();
 }
 
@@ -447,8 +444,6 @@ void take_digest(const std::string& bytes, MeshFile& f,
     StoredMesh m;
     m.store = store;
     m.key = r.string();
-    m.vertices = long(r.get<std::int64_t>());
-    m.triangles = long(r.get<std::int64_t>());
     f.stored = std::move(m);
   }
 }
@@ -467,9 +462,7 @@ bool settled_from_cache(const PartSpec& spec, MeshFile& f, double concavity_tol,
   if (!c) return false;
   f.concavity = c->concavity;
   f.closed = c->closed;
-  // The counts are the read's vertices; the stored mesh's triangles are known
-  // when it is read back.
-  f.stored = StoredMesh{cache.meshes, f.hash, f.counts[0], 0};
+  f.stored = StoredMesh{cache.meshes, f.hash};
   return true;
 }
 
