@@ -98,6 +98,12 @@ inline constexpr double kEpaBracket = 2 * kEpaRounding;
 /// pair. Past them the bracket so far seeds MLSL, which decides as before.
 inline constexpr int kGjkMaxIterations = 64;
 inline constexpr int kEpaMaxIterations = 10000;
+/// An EPA bracket left open no wider than this (unit frame) stopped by
+/// rounding, not by a wrong turn: when MLSL's first certificate then finds no
+/// cover either (minima tied in a band), the exact hull of P − Q decides at
+/// once, if it has at most kExactHandoverPoints points (~1 s of qhull).
+inline constexpr double kEpaNarrowBracket = 1e-12;
+inline constexpr double kExactHandoverPoints = 4e6;
 /// A certified EPA depth (unit frame) below this is recomputed exactly from the
 /// input coordinates (solve/exact_facet.h): the bracket's width kEpaBracket and
 /// the unit frame's rounding (~1e-16) are then more than 2e-10 of the depth,

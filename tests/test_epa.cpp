@@ -149,6 +149,34 @@ TEST(Epa, CoaxialShaftThroughARingClosesDespiteItsRingOfTiedMinima) {
   EXPECT_GE(dt.epa, dt.pairs - 1);
 }
 
+TEST(Epa, ACoaxialBracketOpenByRoundingGoesStraightToTheExactHull) {
+  // Finer coaxial prisms, rotated: some brackets stay open by a hair (within
+  // kEpaNarrowBracket) after EPA's last step. MLSL's first certificate finds
+  // the band of tied minima too wide to cover, and the exact hull decides
+  // after that one search (it ran to its cap before, then to the exact hull).
+  SphereSampler r(77);
+  static IpoptLocalSolver ipopt;
+  int open = 0;
+  for (int tries = 0; tries < 40 && open == 0; ++tries) {
+    const Points shaft = testgen::ngon_prism(200, 10, -60, 60, 2 * M_PI * r.uniform());
+    const testgen::PairCase c =
+        testgen::place(r, {testgen::ngon_prism(400, 30, -10, 10, 2 * M_PI * r.uniform()), shaft},
+                       testgen::Placement::kRotated);
+    const PairProblem pr(c.a, c.b);
+    const DepthBracket br = epa_bracket(pr, tol::kEpaMaxIterations);
+    if (br.certified() || !(br.upper - br.lower <= tol::kEpaNarrowBracket)) continue;
+    ++open;
+    SolverSettings exact_settings;
+    exact_settings.method = Method::kExact;
+    const DepthSolution e = solve_convex_pair(c.a, c.b, exact_settings, ipopt);
+    const DepthSolution m = solve_convex_pair(c.a, c.b, SolverSettings{}, ipopt);
+    EXPECT_NE(m.fallback.find("tied in a band"), std::string::npos) << m.fallback;
+    EXPECT_LE(m.stats.local_solves, 1);
+    EXPECT_EQ(m.depth, e.depth);
+  }
+  EXPECT_EQ(open, 1) << "no bracket stayed open: the hand-over was not exercised";
+}
+
 TEST(Epa, ContactSetsFloat32FarFromTheOrigin) {
   // Every contact family of pdbench, each placement (axes, rotated, float32 at
   // x ≈ 20,000 mm), every fit: touching, clearance, interference, hair gaps.

@@ -257,6 +257,7 @@ class MlslSearch {
       return why;
     }
     if (std::isfinite(bracket.upper)) add_sample(bracket.direction, bracket.upper);
+    narrow_open_ = bracket.upper - bracket.lower <= tol::kEpaNarrowBracket;
     for (int k = 0; k < 6; ++k) {
       const Vec3 axis = (k % 2 ? -1.0 : 1.0) * Vec3::Unit(k / 2);
       add_sample(axis, pr_.gap(axis));
@@ -353,6 +354,7 @@ class MlslSearch {
       if (out_of_budget()) break;
       started_[i] = 1;
       if (const StopReason why = search_from(x_[i]); why != StopReason::kNone) return why;
+      if (exact_now_) break;
     }
     return StopReason::kNone;
   }
@@ -371,6 +373,9 @@ class MlslSearch {
     tried_certificate_ = true;
     const bool certified = certify_minimum(pr_, best_.v, best_.gap, stats_);
     if (settled() != StopReason::kNone) return settled();
+    if (!certified && narrow_open_ &&
+        double(pr_.p().cols()) * double(pr_.q().cols()) <= tol::kExactHandoverPoints)
+      exact_now_ = true;
     return certified ? StopReason::kCertificate : StopReason::kNone;
   }
 
@@ -387,6 +392,21 @@ class MlslSearch {
   std::vector<Basin> basins_;
   Optimum best_{Vec3::UnitZ(), std::numeric_limits<double>::infinity()};
   bool contact_certified_ = false, tried_certificate_ = false;
+  // EPA stopped within kEpaNarrowBracket of closing, and the first certificate
+  // found no cover: a band of minima tied to rounding (a shaft on a ring's
+  // axis). More searches find a new optimum each and end in the exact hull
+  // all the same, so it is taken now (when P − Q is small enough).
+  bool narrow_open_ = false, exact_now_ = false;
+
+ public:
+  bool exact_now() const { return exact_now_; }
+  DepthSolution hand_to_exact() {
+    DepthSolution sol = finish(pr_, best_, static_cast<int>(basins_.size()), stats_);
+    sol.fallback =
+        "EPA's bracket stopped open by rounding and the certificate found the minima tied in a "
+        "band";
+    return sol;
+  }
 };
 
 }  // namespace
@@ -399,6 +419,7 @@ DepthSolution mlsl_depth(const PairProblem& pr, IpoptLocalSolver& ipopt, const S
   StopReason why = StopReason::kCap;  // unless the Bayesian rule stops the loop
   for (int k = 1; k <= s.max_iterations; ++k) {
     const StopReason r = search.round(k);
+    if (search.exact_now()) return search.hand_to_exact();
     if (r == StopReason::kNone) continue;
     if (r == StopReason::kBayesian || r == StopReason::kCap) {
       why = r;
