@@ -58,7 +58,7 @@ struct DefaultTally {
   int pairs = 0, epa = 0, bracket = 0;
 };
 void expect_default_equals_exact(const std::string& what, const testgen::PairCase& c,
-                                 DefaultTally& t) {
+                                 DefaultTally& t, bool exact_handover_allowed = false) {
   static IpoptLocalSolver ipopt;
   SolverSettings exact_settings;
   exact_settings.method = Method::kExact;
@@ -70,7 +70,11 @@ void expect_default_equals_exact(const std::string& what, const testgen::PairCas
   std::snprintf(text, sizeof text, "%s: exact %.17g, mlsl %.17g (%s)", what.c_str(), e.depth,
                 m.depth, stop_reason_name(m.stats.stop_reason));
   SCOPED_TRACE(text);
-  EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+  // The one fallback a pair may take: a bracket open by rounding over a band
+  // of tied minima goes to the exact hull (mlsl.cpp, kEpaNarrowBracket).
+  if (!(exact_handover_allowed && m.fallback.find("tied in a band") != std::string::npos)) {
+    EXPECT_TRUE(m.fallback.empty()) << m.fallback;
+  }
   if (e.depth > touch || m.depth > touch) {
     EXPECT_LE(std::abs(m.depth - e.depth), std::max(1e-9 * std::max(e.depth, touch), rounding));
   }
@@ -80,9 +84,9 @@ void expect_default_equals_exact(const std::string& what, const testgen::PairCas
 }
 
 void check_both(const std::string& what, const testgen::PairCase& c, BracketTally& bt,
-                DefaultTally& dt) {
+                DefaultTally& dt, bool exact_handover_allowed = false) {
   expect_bracket_holds(what, c.a, c.b, &bt);
-  expect_default_equals_exact(what, c, dt);
+  expect_default_equals_exact(what, c, dt, exact_handover_allowed);
 }
 
 using Family = std::vector<std::pair<std::string, testgen::PairCase>>;
@@ -142,9 +146,11 @@ TEST(Epa, CoaxialShaftThroughARingClosesDespiteItsRingOfTiedMinima) {
       const testgen::PairCase c{testgen::ngon_prism(2 * seg, 30, -10, 10, 2 * M_PI * r.uniform()),
                                 shaft};
       check_both("coaxial " + std::to_string(seg) + " segments #" + std::to_string(k),
-                 testgen::place(r, c, static_cast<testgen::Placement>(k)), bt, dt);
+                 testgen::place(r, c, static_cast<testgen::Placement>(k)), bt, dt,
+                 /*exact_handover_allowed=*/true);
     }
-  // One may stop on a face it cannot lift (then MLSL decides, exactly too).
+  // One may stay open by rounding (then the exact hull decides, as clang's
+  // rounding under the sanitizers makes one of these six do).
   EXPECT_GE(bt.certified, bt.pairs - 1);
   EXPECT_GE(dt.epa, dt.pairs - 1);
 }
