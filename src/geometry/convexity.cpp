@@ -308,23 +308,6 @@ SurfacePolygons triangle_polygons(const Mesh& m, double within) {
   return SurfacePolygons(std::move(corners), ranges, within);
 }
 
-namespace {
-
-// The columns of p, each position once, in the order they first appear: an
-// STL repeats every corner for each of its triangles, and the estimate would
-// project each copy.
-Points distinct_columns(const Points& p) {
-  const std::vector<int> first = first_at_same_position(p);
-  std::vector<long> keep;
-  for (long i = 0; i < p.cols(); ++i)
-    if (first[i] == i) keep.push_back(i);
-  Points out(3, static_cast<long>(keep.size()));
-  for (size_t k = 0; k < keep.size(); ++k) out.col(static_cast<long>(k)) = p.col(keep[k]);
-  return out;
-}
-
-}  // namespace
-
 ConvexityScreen screen_convexity(const Mesh& m, double concavity_tol, double stop_above,
                                  const Points* hull_points, const HullTriangles* hull_facets) {
   return screen_convexity(m, PreparedMesh(m), concavity_tol, stop_above, hull_points, hull_facets);
@@ -352,7 +335,8 @@ ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double
   // the part is convex within the tolerance (parts.cpp), and those cannot
   // take it there (a float32 shaft's caps lie a few float steps off its hull's).
   const SurfacePolygons faces = triangle_polygons(m, 0.25 * concavity_tol);
-  r.concavity = hull_concavity(h, part, concavity_tol, missing, distinct_columns(m.vertices),
+  r.concavity = hull_concavity(h, part, concavity_tol, missing,
+                               distinct_positions(m.vertices, first_at_same_position(m.vertices)),
                                kConvexitySamples, stop_above, &faces);
   return r;
 }
@@ -372,7 +356,8 @@ Convexity measure_convexity(const Mesh& m, double concavity_tol, double stop_abo
     if (r.hull_area > 0) r.screen = std::max(0.0, r.hull_volume - r.volume) / r.hull_area;
   }
   r.concavity = hull_concavity(h, part, concavity_tol, r.closed ? r.hull_volume - r.volume : -1.0,
-                               distinct_columns(m.vertices), kConvexitySamples, stop_above);
+                               distinct_positions(m.vertices, first_at_same_position(m.vertices)),
+                               kConvexitySamples, stop_above);
   r.convex = r.concavity.value <= concavity_tol;
   if (!r.convex && r.shells > 1) {
     const std::vector<Mesh> shells = mesh_shells(m);
@@ -384,7 +369,8 @@ Convexity measure_convexity(const Mesh& m, double concavity_tol, double stop_abo
           const double hv = hs.solid() ? hs.volume : 0.0;
           // Only the comparison is kept: the estimate may stop at the tolerance.
           return hull_concavity(hs, ps, concavity_tol, ps.closed() ? hv - mesh_volume(s) : -1.0,
-                                distinct_columns(s.vertices), kConvexitySamples, concavity_tol)
+                                distinct_positions(s.vertices, first_at_same_position(s.vertices)),
+                                kConvexitySamples, concavity_tol)
                      .value <= concavity_tol;
         });
   }

@@ -17,7 +17,8 @@ namespace pd {
 std::vector<int> first_at_same_position(const Points& p);
 
 /// The columns of `p` that are their own first (first[i] == i), in order:
-/// each position once, as qhull needs it (an STL file repeats every corner).
+/// each position once, as qhull and the convexity estimate need it (an STL
+/// file repeats every corner; each copy would be hulled or projected again).
 Points distinct_positions(const Points& p, const std::vector<int>& first);
 
 /// The edges of m (corners welded by position) used by an odd number of its
