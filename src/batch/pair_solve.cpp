@@ -12,6 +12,7 @@
 #include "batch/motion_sweep.h"
 #include "batch/piece_pairs.h"
 #include "geometry/depth_witness.h"
+#include "scene/part_convexity.h"
 #include "scene/setup_warnings.h"
 #include "solve/epa.h"
 #include "solve/methods.h"
@@ -265,7 +266,11 @@ PairResult solve_part_pair(int ia, const Part& a, int ib, const Part& b, const S
       // A pair with a nonconvex part is decided on the parts once its hulls
       // overlap by more than the tolerance (batch/refine.h): the hull stage
       // need not pin its depth down past that.
-      const bool refined = (a.refinable() || b.refinable()) && !checks.clearance;
+      // A part whose convexity is not measured yet may be nonconvex: the
+      // measurement after this stage solves the pair again if both are convex.
+      const bool refined =
+          (a.refinable() || b.refinable() || convexity_unmeasured(a) || convexity_unmeasured(b)) &&
+          !checks.clearance;
       witness = solve_static(a, b, s, ipopt, r,
                              refined ? std::optional<double>(tolerance) : std::nullopt);
     }

@@ -7,6 +7,7 @@
 
 #include "batch/brep_confirm.h"
 #include "batch/content_hashes.h"
+#include "batch/convexity_on_demand.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/rule_scope.h"
@@ -213,6 +214,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
                     pair_checks, out.reuse ? &*out.reuse : nullptr);
   solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
+  measure_convexity_on_demand(out.parts, pairs, out.pairs, run_options, pair_checks);
   refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);
   out.stages.refine = lap(t);
   run_options.on_pair = on_pair;

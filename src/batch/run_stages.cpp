@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "batch/broad_phase.h"
+#include "batch/convexity_on_demand.h"
 #include "batch/pair_workers.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
@@ -173,7 +174,8 @@ void solve_pairs(const std::vector<Part>& parts, const std::vector<std::pair<int
     note_hull_stage(r, parts[r.a], parts[r.b]);
     note_pair_tolerance(r, checks(r.a, r.b));
     results[k] = r;
-    if (options.on_pair && !needs_refinement(r, parts[r.a], parts[r.b])) options.on_pair(r, parts);
+    if (options.on_pair && !may_need_refinement(r, parts[r.a], parts[r.b]))
+      options.on_pair(r, parts);
   };
   std::function<void(size_t)> before_task;
   if (options.faults.before_pair_solve)

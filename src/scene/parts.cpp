@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <new>
@@ -165,6 +166,14 @@ TessellationSag file_sag(const std::vector<Mesh>& meshes, CoordinateStorage stor
 
 bool keeps_surface(Pieces p) {
   return p == Pieces::kAuto || p == Pieces::kDecompose;
+}
+
+// A pieces auto mesh part's convexity decides only pairs whose hulls
+// interfere, and only when the other part is convex too: the batch stage
+// measures it when such a pair needs it (scene/part_convexity.h). B-rep parts
+// and decompose keep measuring here.
+bool convexity_left_for_pairs(const PartSpec& spec, const MeshFile& f) {
+  return spec.pieces == Pieces::kAuto && !f.tessellation && f.deflection == 0;
 }
 
 // Whether a placement stretches every length alike (units and a rotation):
@@ -339,9 +348,13 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
       // own stretch (a sole instance placed without stretch is measured on its
       // placed mesh). Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
-      const StoredConvexity c = convexity_of(spec, f, meshes[0], f.concavity_tol, cache.dir);
-      f.concavity = c.concavity;
-      f.closed = c.closed;
+      if (convexity_left_for_pairs(spec, f)) {
+        f.concavity = std::numeric_limits<double>::quiet_NaN();  // unmeasured
+      } else {
+        const StoredConvexity c = convexity_of(spec, f, meshes[0], f.concavity_tol, cache.dir);
+        f.concavity = c.concavity;
+        f.closed = c.closed;
+      }
       const std::string why = cache.meshes->put(f.hash, meshes[0]);
       if (!why.empty())
         throw std::runtime_error("its surface cannot be kept for the refinement: " + why);
@@ -456,6 +469,11 @@ bool settled_from_cache(const PartSpec& spec, MeshFile& f, double concavity_tol,
   settle_hulls(f, concavity_tol, auto_tol);
   if (!keeps_surface(spec.pieces)) return true;
   if (f.counts.size() != 1 || !cache.meshes || !cache.meshes->has(f.hash)) return false;
+  if (convexity_left_for_pairs(spec, f)) {
+    f.concavity = std::numeric_limits<double>::quiet_NaN();
+    f.stored = StoredMesh{cache.meshes, f.hash};
+    return true;
+  }
   const double tol = f.concavity_tol / f.max_stretch,
                stop_above = std::max(f.concavity_tol / f.min_stretch, f.noise);
   const auto c = read_cached_convexity(cache.dir, convexity_key(f.hash, tol, stop_above));
@@ -475,6 +493,7 @@ PartSurface surface_of(const PartSpec& spec, const MeshFile& f) {
   s.concavity = f.concavity * s.stretch;
   s.concavity_tol = f.concavity_tol;
   s.closed = f.closed;
+  s.noise = f.noise;
   return s;
 }
 
@@ -561,7 +580,8 @@ Part build_part(const PartSpec& spec, const MeshFile* file, const PartsCache& ca
       // Convex within the concavity tolerance, or within the rounding of the
       // coordinates as stored (docs/numerics.md, kConcavityFraction).
       const double k = stretch(placement(spec));
-      part.convex = file->concavity * k <= std::max(file->concavity_tol, file->noise * k);
+      if (!std::isnan(file->concavity))  // else measured where a pair needs it
+        part.convex = file->concavity * k <= std::max(file->concavity_tol, file->noise * k);
       part.surface = surface_of(spec, *file);
     }
   } catch (const std::exception& e) {

@@ -29,9 +29,10 @@ struct PartSurface {
   std::string file_hash;                  ///< content hash of the mesh file (cache key)
   Mat4 placement = Mat4::Identity();      ///< file → scene units (units, then transform)
   double stretch = 1.0;                   ///< the placement's largest stretch factor
-  double concavity = 0.0;                 ///< the file's measured nonconvexity, scene units
-  double concavity_tol = 0.0;  ///< what it was measured against (scene units; per file under auto)
-  bool closed = false;         ///< the file's mesh bounds a solid
+  double concavity = 0.0;      ///< the file's measured nonconvexity, scene units; NaN: not yet
+  double concavity_tol = 0.0;  ///< what it is measured against (scene units; per file under auto)
+  bool closed = false;         ///< the file's mesh bounds a solid (once measured)
+  double noise = 0.0;          ///< the file's coordinate noise (file units)
 };
 
 /// The surface's mesh in file coordinates: the one held, or read back from the
@@ -81,8 +82,10 @@ struct Part {
   std::optional<std::string> error;   ///< the part could not be used: its pairs are errors
   std::optional<RigidMotion> motion;  ///< moving parts only (checks.motion)
   Pieces mode = Pieces::kHull;
-  std::optional<bool> convex;          ///< measured for pieces auto/decompose mesh parts
-  std::optional<PartSurface> surface;  ///< pieces auto/decompose mesh parts
+  /// Measured for decompose and B-rep parts; for pieces auto mesh parts when a
+  /// pair needs it (scene/part_convexity.h), else unset.
+  std::optional<bool> convex;
+  std::optional<PartSurface> surface;              ///< pieces auto/decompose mesh parts
   std::optional<PartDecomposition> decomposition;  ///< set by the batch stage when used
   /// Scene units: the spacing of its stored coordinates at their magnitude
   /// (float32 for mesh files, as assimp stores them; double inline), carried by
