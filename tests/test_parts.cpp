@@ -11,6 +11,7 @@
 #include "geometry/mesh_intersect.h"
 #include "geometry/solid_distance.h"
 #include "scene/mesh_loader.h"
+#include "scene/part_convexity.h"
 #include "scene/parts.h"
 #include "scene/scene.h"
 #include "scene/setup_warnings.h"
@@ -166,11 +167,14 @@ TEST(Parts, ASoleInstancePlacedWithoutStretchKeepsTheDistancesItWasMeasuredOn) {
   const SceneSpec s =
       parse_scene_json(R"({"tolerance": 0.1, "parts": [)" + parts + "]}", "s.json", "");
   for (int threads : {1, 3}) {
-    const auto built = build_parts(s, threads);
+    auto built = build_parts(s, threads);
     ASSERT_EQ(built.size(), 10u);
-    for (const Part& p : built) {
+    for (Part& p : built) {
       ASSERT_FALSE(p.error) << *p.error;
       ASSERT_TRUE(p.surface) << p.id;
+      // Measured where a pair needs it (batch/convexity_on_demand.h), not when loaded.
+      ASSERT_TRUE(convexity_unmeasured(p)) << p.id;
+      measure_convexity(p, "");
       const bool l = p.id[0] == 'l';
       EXPECT_EQ(p.convex, !l) << p.id;
       if (p.id.find("stretched") != std::string::npos) continue;  // lengths not scaled alike

@@ -94,7 +94,20 @@ TEST(Refine, OnlyHullInterferencesOfARefinablePartAreRefined) {
   note_hull_stage(r, bracket, block);  // still to refine: nothing said yet
   EXPECT_FALSE(r.confirmed);
   r.status = Status::kSeparated;
-  note_hull_stage(r, block, block);  // no nonconvex part: nothing to confirm
+  note_hull_stage(r, block, block);  // parts that may be nonconvex: the hulls hold them
+  EXPECT_EQ(r.confirmed, true);
+  r = hull_result(3.0);
+  note_hull_stage(r, block, block);  // convex parts: their depth is the hulls'
+  EXPECT_EQ(r.confirmed, true);
+  r = hull_result(3.0);
+  r.motion = MotionTrace{};  // swept on the hulls of a nonconvex part
+  note_hull_stage(r, bracket, block);
+  EXPECT_EQ(r.confirmed, false);
+  Part hull_only = block;  // pieces hull: the hull is the part, nothing to confirm
+  hull_only.mode = Pieces::kHull;
+  hull_only.surface.reset();
+  r = hull_result(3.0);
+  note_hull_stage(r, hull_only, hull_only);
   EXPECT_FALSE(r.confirmed);
   r.status = Status::kError;
   note_hull_stage(r, bracket, block);

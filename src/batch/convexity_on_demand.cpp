@@ -11,16 +11,47 @@ namespace pd {
 
 namespace {
 
-bool unmeasured_or_refinable(const Part& p) {
-  return p.refinable() || convexity_unmeasured(p);
+// The hull stage found the hulls interfering (a refined pair taken from an
+// earlier report carries its hull depth; a duplicate overlaps wholly).
+bool hulls_interfered(const PairResult& r) {
+  if (r.duplicate) return false;
+  if (r.reused)
+    return r.hull_depth.has_value() ||
+           (r.status == Status::kInterference && r.depth_source == "hull");
+  return r.status == Status::kInterference;
 }
 
-// The hull stage flagged the pair (its verdict may need the parts) and no part
-// is known to be nonconvex: a part's convexity decides it.
-bool open(const PairResult& r, const Part& a, const Part& b) {
-  if (r.reused) return false;
-  return r.status == Status::kInterference && !r.motion && !r.duplicate && !a.refinable() &&
-         !b.refinable() && (convexity_unmeasured(a) || convexity_unmeasured(b));
+// The pair's on-demand parts in the order it measures them: more vertices
+// first, then the id (the same in every shard).
+std::vector<int> measuring_order(const std::vector<Part>& parts, int a, int b) {
+  std::vector<int> order;
+  for (int p : {a, b})
+    if (parts[size_t(p)].convexity_on_demand() && !parts[size_t(p)].error) order.push_back(p);
+  if (order.size() == 2) {
+    const Part &x = parts[size_t(order[0])], &y = parts[size_t(order[1])];
+    if (std::make_pair(y.vertex_count, x.id) > std::make_pair(x.vertex_count, y.id))
+      std::swap(order[0], order[1]);
+  }
+  return order;
+}
+
+// The parts the pair still needs measured, given what is known so far.
+std::vector<int> still_needed(const std::vector<Part>& parts, int a, int b,
+                              const PairChecks& checks) {
+  const Part &pa = parts[size_t(a)], &pb = parts[size_t(b)];
+  std::vector<int> need;
+  const std::vector<int> order = measuring_order(parts, a, b);
+  const bool pieces =
+      checks.clearance || pa.mode == Pieces::kDecompose || pb.mode == Pieces::kDecompose;
+  if (pieces) {  // each nonconvex part is decomposed
+    for (int p : order)
+      if (convexity_unmeasured(parts[size_t(p)])) need.push_back(p);
+    return need;
+  }
+  if (pa.refinable() || pb.refinable()) return need;  // decided on the surfaces
+  for (int p : order)
+    if (convexity_unmeasured(parts[size_t(p)])) return {p};
+  return need;
 }
 
 // Measures the parts marked in `which`; a part that cannot be measured (its
@@ -39,66 +70,47 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
 
 }  // namespace
 
-bool may_need_refinement(const PairResult& r, const Part& a, const Part& b) {
-  return r.status == Status::kInterference && !r.motion && !r.duplicate &&
-         (unmeasured_or_refinable(a) || unmeasured_or_refinable(b));
+bool turns_on_convexity(const PairResult& r, const Part& a, const Part& b) {
+  return (a.convexity_on_demand() || b.convexity_on_demand()) && hulls_interfered(r);
 }
 
 void measure_convexity_on_demand(std::vector<Part>& parts,
                                  const std::vector<std::pair<int, int>>& pairs,
                                  std::vector<PairResult>& results, const RunOptions& options,
                                  const std::function<PairChecks(int, int)>& checks) {
-  // What the hull stage held back: its pairs are noted and reported below.
-  std::vector<char> held(pairs.size(), 0);
+  std::vector<size_t> open;
   for (size_t k = 0; k < pairs.size(); ++k)
-    held[k] = !results[k].reused &&
-              may_need_refinement(results[k], parts[pairs[k].first], parts[pairs[k].second]);
-  // Two rounds: the part with more open pairs first (ties: more vertices, then
-  // the lower index), then the other part of each pair still open.
-  for (int round = 0; round < 2; ++round) {
-    std::vector<int> degree(parts.size(), 0);
-    std::vector<size_t> still;
-    for (size_t k = 0; k < pairs.size(); ++k) {
-      const auto [a, b] = pairs[k];
-      if (!open(results[k], parts[a], parts[b])) continue;
-      still.push_back(k);
-      ++degree[size_t(a)], ++degree[size_t(b)];
-    }
-    if (still.empty()) break;
+    if (turns_on_convexity(results[k], parts[size_t(pairs[k].first)],
+                           parts[size_t(pairs[k].second)]))
+      open.push_back(k);
+  // At most two rounds: a pair's first part, then its second where the first
+  // was convex.
+  for (;;) {
     std::vector<char> chosen(parts.size(), 0);
-    for (size_t k : still) {
-      const auto [a, b] = pairs[k];
-      const bool ua = convexity_unmeasured(parts[a]), ub = convexity_unmeasured(parts[b]);
-      int pick = ua ? a : b;
-      if (ua && ub && round == 0) {
-        auto rank = [&](int p) { return std::make_pair(degree[size_t(p)], parts[p].vertex_count); };
-        pick = rank(b) > rank(a) ? b : a;
-      } else if (ua && ub) {
-        chosen[size_t(b)] = 1;  // the second round settles every open pair
-      }
-      chosen[size_t(pick)] = 1;
-    }
+    for (size_t k : open)
+      for (int p : still_needed(parts, pairs[k].first, pairs[k].second,
+                                checks(pairs[k].first, pairs[k].second)))
+        chosen[size_t(p)] = 1;
     std::vector<int> which;
     for (size_t p = 0; p < parts.size(); ++p)
       if (chosen[p]) which.push_back(static_cast<int>(p));
+    if (which.empty()) break;
     measure(parts, which, options);
   }
-  // Pairs stopped early for a part that turns out convex, with a convex
+  // Pairs stopped early for a part that turned out convex, with a convex
   // partner: their hulls decide, so they are solved on them in full.
   std::vector<size_t> again;
-  for (size_t k = 0; k < pairs.size(); ++k) {
-    const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
-    if (held[k] && results[k].stats.stop_reason == StopReason::kAboveTolerance && !a.refinable() &&
-        !b.refinable()) {
+  for (size_t k : open) {
+    const Part &a = parts[size_t(pairs[k].first)], &b = parts[size_t(pairs[k].second)];
+    if (!results[k].reused && results[k].stats.stop_reason == StopReason::kAboveTolerance &&
+        !a.refinable() && !b.refinable())
       again.push_back(k);
-      held[k] = 0;
-    }
   }
   if (!again.empty()) solve_pairs(parts, pairs, again, options, checks, results);
-  for (size_t k = 0; k < pairs.size(); ++k) {
-    if (!held[k]) continue;
+  for (size_t k : open) {
     PairResult& r = results[k];
-    const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
+    if (r.reused) continue;
+    const Part &a = parts[size_t(pairs[k].first)], &b = parts[size_t(pairs[k].second)];
     note_hull_stage(r, a, b);
     if (options.on_pair && !needs_refinement(r, a, b)) options.on_pair(r, parts);
   }

@@ -1,16 +1,24 @@
 // Between the hull stage and the refinement: the convexity of the pieces auto
-// mesh parts that a pair's verdict turns on, measured then and only then.
+// mesh parts (Part::convexity_on_demand), measured where a pair's verdict
+// turns on it and nowhere else.
 //
 // A part's convexity decides only pairs whose hulls interfere beyond the
-// tolerance: a pair with a nonconvex part is decided on the surfaces, one of
-// two convex parts by its hulls. So a part is measured when such a pair has
-// no part known to be nonconvex yet: first the part with more of those pairs
-// (a bearing ring before its balls; the ring is nonconvex, and the balls'
-// pairs are all refined whatever the balls are), then, where that part was
-// convex, the other. Measured in `options.jobs` threads, from the convexity
-// cache when it holds them. A pair the hull stage stopped early because its
-// part might be refined (kAboveTolerance) and whose parts both turn out convex
-// is solved on its hulls again; the others are noted and reported.
+// tolerance: such a pair with a nonconvex part is decided on the surfaces, one
+// of convex parts by its hulls. Which parts a pair measures is a function of
+// the pair alone (its hull verdict, its parts' sizes and convexities), never of
+// the other pairs of the run, so a shard, a --reuse run and a full run measure
+// alike for every pair they share (and report the same thing of it):
+// - a pair that needs pieces (a clearance check, a `decompose` part): every
+//   on-demand part, since each nonconvex one is decomposed;
+// - a pair with a part already known nonconvex (decompose, B-rep): none;
+// - otherwise its on-demand parts one by one, the part with more vertices
+//   first (a bearing ring before its balls: the ring is nonconvex and the
+//   balls' pairs are then decided on the surfaces whatever the balls are),
+//   until one is nonconvex.
+// Parts are measured in `options.jobs` threads, from the convexity cache when
+// it holds them. A pair the hull stage stopped early because a part might be
+// nonconvex (kAboveTolerance) and whose parts turn out convex is solved on its
+// hulls again; then the held pairs are noted and reported.
 #pragma once
 
 #include <functional>
@@ -23,9 +31,10 @@
 
 namespace pd {
 
-/// Whether the hull stage must hold `r` back from the report until its
-/// parts' convexity is known (it may need the refinement).
-bool may_need_refinement(const PairResult& r, const Part& a, const Part& b);
+/// Whether the hull stage's result `r` (or one taken from an earlier report)
+/// turns on the convexity of an on-demand part of a, b: the hull stage holds it
+/// back from the report until that is measured.
+bool turns_on_convexity(const PairResult& r, const Part& a, const Part& b);
 
 void measure_convexity_on_demand(std::vector<Part>& parts,
                                  const std::vector<std::pair<int, int>>& pairs,

@@ -33,9 +33,15 @@ bool needs_refinement(const PairResult& r, const Part& a, const Part& b) {
 }
 
 void note_hull_stage(PairResult& r, const Part& a, const Part& b) {
-  // Motion pairs are not refined; a duplicate (one mesh placed twice) overlaps wholly.
-  if ((a.refinable() || b.refinable()) && r.status != Status::kError && !needs_refinement(r, a, b))
-    r.confirmed = r.status != Status::kInterference || r.duplicate;
+  // Said of every pair with a part that may be nonconvex, whether or not its
+  // convexity was measured (a pair's fields never depend on the other pairs).
+  const bool refinable = a.refinable() || b.refinable();
+  if (!refinable && !a.convexity_on_demand() && !b.convexity_on_demand()) return;
+  if (r.status == Status::kError || needs_refinement(r, a, b)) return;
+  // The hulls hold the parts: a verdict short of interference holds for the
+  // parts, and so does the depth of convex parts. Motion pairs are swept on
+  // hulls, not refined; a duplicate (one mesh placed twice) overlaps wholly.
+  r.confirmed = r.status != Status::kInterference || r.duplicate || !refinable;
 }
 
 PairResult decide_refined(const PairResult& hull, const MeshVerdict& mesh, const PairResult* pieces,

@@ -38,8 +38,10 @@ struct MeshVerdict {
 /// duplicate, one mesh placed twice, does not: its parts overlap wholly).
 bool needs_refinement(const PairResult& r, const Part& a, const Part& b);
 
-/// At the hull stage: marks a final result of a pair with a nonconvex part as
-/// confirmed (the hull depth bounds the parts' depth from above).
+/// At the hull stage: marks a final result of a pair with a part that is or
+/// may be nonconvex as confirmed (the hull depth bounds the parts' depth from
+/// above, and is theirs for convex parts) or not (a moving pair's interference
+/// with a nonconvex part rests on its hulls).
 void note_hull_stage(PairResult& r, const Part& a, const Part& b);
 
 /// The refined result of a flagged pair from its hull-stage result, the mesh

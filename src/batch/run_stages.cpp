@@ -174,7 +174,9 @@ void solve_pairs(const std::vector<Part>& parts, const std::vector<std::pair<int
     note_hull_stage(r, parts[r.a], parts[r.b]);
     note_pair_tolerance(r, checks(r.a, r.b));
     results[k] = r;
-    if (options.on_pair && !may_need_refinement(r, parts[r.a], parts[r.b]))
+    // Held back while a part's convexity or the refinement may change it.
+    if (options.on_pair && !needs_refinement(r, parts[r.a], parts[r.b]) &&
+        !turns_on_convexity(r, parts[r.a], parts[r.b]))
       options.on_pair(r, parts);
   };
   std::function<void(size_t)> before_task;

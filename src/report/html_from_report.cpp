@@ -57,11 +57,19 @@ SavedReportPage page_of(const nlohmann::json& raw, const std::string& report_pat
   std::optional<double> tolerance;
   // Under auto ("auto"), the scene's own: the geometry does not depend on it.
   if (root.has("tolerance") && raw["tolerance"] != "auto") tolerance = root["tolerance"].number();
-  const std::vector<Part> parts = load(scene_path, units, tolerance);
+  std::vector<Part> parts = load(scene_path, units, tolerance);
 
   SavedReportPage page;
-  std::map<std::string, const Part*> by_id;
-  for (const Part& p : parts) by_id.emplace(p.id, &p);
+  std::map<std::string, Part*> by_id;
+  for (Part& p : parts) by_id.emplace(p.id, &p);
+  // A part's convexity as the run measured it where a pair needed it
+  // (batch/convexity_on_demand.h): the page draws its hull or its surface alike.
+  if (raw.contains("parts") && raw["parts"].is_array())
+    for (const auto& p : raw["parts"])
+      if (p.is_object() && p.contains("convex") && p["convex"].is_boolean() && p.contains("id"))
+        if (const auto it = by_id.find(p["id"].get<std::string>());
+            it != by_id.end() && it->second->convexity_on_demand() && !it->second->convex)
+          it->second->convex = p["convex"].get<bool>();
   std::set<std::string> named;  // the parts of the report's findings
   for (const auto& p : raw["pairs"])
     if (p.value("status", "") != "separated")

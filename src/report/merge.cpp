@@ -132,6 +132,9 @@ std::vector<json> owned_parts(const std::vector<ShardReport>& shards, long n) {
       const json& p = s.doc["parts"][k];
       if (p.contains("decomposition_seconds") && !parts[i].contains("decomposition_seconds"))
         parts[i] = p;
+      // A part whose convexity a pair of another shard measured
+      // (batch/convexity_on_demand.h): the same value wherever it was measured.
+      if (p.contains("convex") && !parts[i].contains("convex")) parts[i]["convex"] = p["convex"];
     }
   }
   return parts;

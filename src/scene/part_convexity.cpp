@@ -10,7 +10,7 @@
 namespace pd {
 
 bool convexity_unmeasured(const Part& p) {
-  return p.surface && p.mode == Pieces::kAuto && !p.convex && !p.error;
+  return p.convexity_on_demand() && !p.convex && !p.error;
 }
 
 void measure_convexity(Part& p, const std::string& cache_dir) {

@@ -99,6 +99,10 @@ struct Part {
     return surface && (mode == Pieces::kDecompose || (mode == Pieces::kAuto && convex == false));
   }
 
+  /// A pieces auto mesh part: its convexity is measured only where a pair's
+  /// verdict turns on it (batch/convexity_on_demand.h), so `convex` may stay unset.
+  bool convexity_on_demand() const { return surface && mode == Pieces::kAuto && !brep; }
+
   long hull_vertex_count() const;
 };
 
