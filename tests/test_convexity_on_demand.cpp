@@ -1,0 +1,143 @@
+// Convexity measured where a pair's verdict turns on it (batch/convexity_on_demand.h):
+// which parts are measured, and that a pair's result never depends on the
+// other pairs of the run.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "batch/run.h"
+#include "corpus/cad_shapes.h"
+#include "scene/scene.h"
+#include "scratch_dir.h"
+#include "stl_file.h"
+
+namespace {
+
+using nlohmann::json;
+using namespace pd;
+namespace shapes = pd::shapes;
+
+struct Made {
+  std::string id;
+  Mesh mesh;
+  Vec3 at;
+};
+
+// Pairs whose hulls interfere, each with a known answer:
+// - a plate with a hole (nonconvex, more vertices) round a pin that clears it:
+//   the plate is measured first and is nonconvex, so the pin is not measured;
+// - the pin against a box it overlaps by 1: the pin (more vertices) is measured,
+//   convex, then the box;
+// - a fine cylinder (convex, more vertices) in an L bracket's inner corner,
+//   inside the bracket's hull, 6 away from it: both measured, the bracket
+//   nonconvex, the pair separated on the surfaces;
+// - two boxes 1 deep into each other: both measured convex, the hull depth
+//   theirs; a lone box: never measured.
+std::vector<Made> parts() {
+  return {
+      {"plate", shapes::plate_with_hole(40, 6, 5, 48), Vec3(0, 0, 0)},
+      {"pin", shapes::cylinder(shapes::Vec2(0, 0), 4, -5, 15, 16), Vec3(0, 0, 0)},
+      {"stop", shapes::box(Vec3(3, -2, 12), Vec3(8, 2, 14)), Vec3(0, 0, 0)},
+      {"bracket", shapes::l_bracket(40, 5, 20), Vec3(100, 0, 0)},
+      {"roller", shapes::cylinder(shapes::Vec2(15, 15), 4, 2, 18, 32), Vec3(100, 0, 0)},
+      {"box_a", shapes::box(Vec3(0, 0, 0), Vec3(10, 10, 10)), Vec3(200, 0, 0)},
+      {"box_b", shapes::box(Vec3(9, 0, 0), Vec3(19, 10, 10)), Vec3(200, 0, 0)},
+      {"lone", shapes::box(Vec3(0, 0, 0), Vec3(10, 10, 10)), Vec3(300, 0, 0)},
+  };
+}
+
+json scene_json(const std::string& dir, const json& pairs = nullptr) {
+  json list = json::array();
+  for (const Made& m : parts()) {
+    const std::string file = dir + "/" + m.id + ".stl";
+    pd::test::write_binary_stl(file, m.mesh);
+    list.push_back({{"id", m.id},
+                    {"mesh", file},
+                    {"transform",
+                     {{1, 0, 0, m.at.x()}, {0, 1, 0, m.at.y()}, {0, 0, 1, m.at.z()}, {0, 0, 0, 1}}}});
+  }
+  json s = {{"tolerance", 0.1}, {"parts", list}};
+  if (!pairs.is_null()) s["pairs"] = pairs;
+  return s;
+}
+
+RunResult run(const json& scene) {
+  const SceneSpec spec = parse_scene_json(scene.dump(), "scene.json", "");
+  RunOptions o;
+  o.tolerance = 0.1;
+  o.quiet = true;
+  o.jobs = 2;
+  spec.solver.apply(o.solver);
+  return run_scene(spec, o);
+}
+
+const Part& part(const RunResult& r, const std::string& id) {
+  for (const Part& p : r.parts)
+    if (p.id == id) return p;
+  throw std::runtime_error("no part " + id);
+}
+
+const PairResult& pair(const RunResult& r, const std::string& a, const std::string& b) {
+  for (const PairResult& p : r.pairs) {
+    const std::string &x = r.parts[size_t(p.a)].id, &y = r.parts[size_t(p.b)].id;
+    if ((x == a && y == b) || (x == b && y == a)) return p;
+  }
+  throw std::runtime_error("no pair " + a + " " + b);
+}
+
+TEST(ConvexityOnDemand, APairMeasuresItsPartsUntilOneIsNonconvex) {
+  const std::string dir = pd_test::scratch_dir("on_demand", "which").string();
+  const RunResult r = run(scene_json(dir));
+  ASSERT_EQ(r.pairs.size(), 4u);
+  EXPECT_EQ(part(r, "plate").convex, false);
+  EXPECT_EQ(part(r, "pin").convex, true);  // by its pair with the stop
+  EXPECT_EQ(part(r, "stop").convex, true);
+  EXPECT_EQ(part(r, "roller").convex, true);
+  EXPECT_EQ(part(r, "bracket").convex, false);
+  EXPECT_EQ(part(r, "box_a").convex, true);
+  EXPECT_EQ(part(r, "box_b").convex, true);
+  EXPECT_FALSE(part(r, "lone").convex);  // no pair: never measured
+
+  const PairResult& plate_pin = pair(r, "plate", "pin");
+  EXPECT_EQ(plate_pin.status, Status::kSeparated);
+  EXPECT_EQ(plate_pin.depth_source, "mesh-test");
+  EXPECT_EQ(plate_pin.confirmed, true);
+  const PairResult& roller = pair(r, "bracket", "roller");
+  EXPECT_EQ(roller.status, Status::kSeparated);
+  EXPECT_EQ(roller.depth_source, "mesh-test");
+  const PairResult& boxes = pair(r, "box_a", "box_b");
+  EXPECT_EQ(boxes.status, Status::kInterference);
+  EXPECT_EQ(boxes.depth_source, "hull");
+  EXPECT_NEAR(boxes.depth, 1.0, 1e-9);  // two convex parts: the hull depth is exact
+  EXPECT_EQ(boxes.confirmed, true);
+  const PairResult& stop = pair(r, "pin", "stop");
+  EXPECT_EQ(stop.status, Status::kInterference);
+  EXPECT_NEAR(stop.depth, 1.0, 1e-6);
+}
+
+TEST(ConvexityOnDemand, APairsResultDoesNotDependOnTheOtherPairs) {
+  // Each pair alone (the scene lists it) against the whole run, where other
+  // pairs measure more parts (the pin): every field of the pair the same.
+  const std::string dir = pd_test::scratch_dir("on_demand", "alone").string();
+  const RunResult all = run(scene_json(dir));
+  for (const auto& [a, b] : std::vector<std::pair<std::string, std::string>>{
+           {"plate", "pin"}, {"pin", "stop"}, {"bracket", "roller"}, {"box_a", "box_b"}}) {
+    const RunResult alone = run(scene_json(dir, json::array({json::array({a, b})})));
+    const PairResult &x = pair(all, a, b), &y = pair(alone, a, b);
+    EXPECT_EQ(x.status, y.status) << a << " " << b;
+    EXPECT_EQ(x.depth, y.depth) << a << " " << b;
+    EXPECT_EQ(x.depth_source, y.depth_source) << a << " " << b;
+    EXPECT_EQ(x.confirmed, y.confirmed) << a << " " << b;
+    EXPECT_EQ(x.hull_depth, y.hull_depth) << a << " " << b;
+    EXPECT_EQ(x.depth_bounds, y.depth_bounds) << a << " " << b;
+  }
+  // The plate's pair alone does not measure the pin (the plate decides it).
+  const RunResult alone =
+      run(scene_json(dir, json::array({json::array({"plate", "pin"})})));
+  EXPECT_FALSE(part(alone, "pin").convex);
+  EXPECT_EQ(part(alone, "plate").convex, false);
+}
+
+}  // namespace
