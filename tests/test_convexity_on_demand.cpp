@@ -25,14 +25,16 @@ struct Made {
   Vec3 at;
 };
 
-// Pairs whose hulls interfere, each with a known answer:
-// - a plate with a hole (nonconvex, more vertices) round a pin that clears it:
-//   the plate is measured first and is nonconvex, so the pin is not measured;
-// - the pin against a box it overlaps by 1: the pin (more vertices) is measured,
-//   convex, then the box;
-// - a fine cylinder (convex, more vertices) in an L bracket's inner corner,
-//   inside the bracket's hull, 6 away from it: both measured, the bracket
-//   nonconvex, the pair separated on the surfaces;
+// Pairs whose hulls interfere, each with a known answer. A pair measures the
+// part with more vertices read per hull vertex first (STL files here: a
+// convex part reads 4.5-6 per hull vertex, the plate 60):
+// - a plate with a hole round a pin that clears it: the plate is measured
+//   first and is nonconvex, so the pin is not measured for this pair;
+// - the pin against a box it overlaps by 1: the pin is measured, convex, so
+//   the box is too;
+// - a cylinder in an L bracket's inner corner, inside the bracket's hull, 6
+//   away from it: the bracket (6 per hull vertex against 5.8) is nonconvex,
+//   the pair separated on the surfaces, the cylinder never measured;
 // - two boxes 1 deep into each other: both measured convex, the hull depth
 //   theirs; a lone box: never measured.
 std::vector<Made> parts() {
@@ -94,7 +96,7 @@ TEST(ConvexityOnDemand, APairMeasuresItsPartsUntilOneIsNonconvex) {
   EXPECT_EQ(part(r, "plate").convex, false);
   EXPECT_EQ(part(r, "pin").convex, true);  // by its pair with the stop
   EXPECT_EQ(part(r, "stop").convex, true);
-  EXPECT_EQ(part(r, "roller").convex, true);
+  EXPECT_FALSE(part(r, "roller").convex);
   EXPECT_EQ(part(r, "bracket").convex, false);
   EXPECT_EQ(part(r, "box_a").convex, true);
   EXPECT_EQ(part(r, "box_b").convex, true);

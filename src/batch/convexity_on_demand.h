@@ -11,10 +11,10 @@
 // - a pair that needs pieces (a clearance check, a `decompose` part): every
 //   on-demand part, since each nonconvex one is decomposed;
 // - a pair with a part already known nonconvex (decompose, B-rep): none;
-// - otherwise its on-demand parts one by one, the part with more vertices
-//   first (a bearing ring before its balls: the ring is nonconvex and the
-//   balls' pairs are then decided on the surfaces whatever the balls are),
-//   until one is nonconvex.
+// - otherwise its on-demand parts one by one, the likelier nonconvex first
+//   (more vertices read per hull vertex: a bearing ring before its balls; the
+//   ring is nonconvex and the balls' pairs are then decided on the surfaces
+//   whatever the balls are), until one is nonconvex.
 // Parts are measured in `options.jobs` threads, from the convexity cache when
 // it holds them. A pair the hull stage stopped early because a part might be
 // nonconvex (kAboveTolerance) and whose parts turn out convex is solved on its
