@@ -645,6 +645,18 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                                                    double cap) {
   const Vec3 box_lo = rg.lo(), box_hi = rg.hi();
   std::vector<PlaneGroup> groups;
+  // The groups by normal cell: a face joins a group whose normal is within
+  // 0.999 of its own (2.6°), so within 0.045 of it, and the cells of side
+  // 0.05 around its own hold every such group. (A curved surface makes a
+  // group of nearly every face: a scan of all groups would be quadratic.)
+  constexpr double kCell = 0.05;
+  using Cell = std::array<int, 3>;
+  const auto cell_of = [](const Vec3& n) {
+    return Cell{static_cast<int>(std::floor(n.x() / kCell)),
+                static_cast<int>(std::floor(n.y() / kCell)),
+                static_cast<int>(std::floor(n.z() / kCell))};
+  };
+  std::map<Cell, std::vector<size_t>> by_cell;
   size_t last = 0;
   for (int f : faces) {
     std::array<Vec3, 3> t = mesh.face(f);
@@ -659,16 +671,28 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                          [&](const Vec3& p) { return std::abs(q.plane.at(p)) <= cap; });
     };
     // A face's plane is most often the previous face's (a quad's two
-    // triangles, a fan), so that group is asked first.
-    auto g = last < groups.size() && same_plane(groups[last])
-                 ? groups.begin() + static_cast<std::ptrdiff_t>(last)
-                 : std::find_if(groups.begin(), groups.end(), same_plane);
-    if (g == groups.end()) {
-      groups.push_back({{n, n.dot(t[0])}, {}, true});
-      g = groups.end() - 1;
+    // triangles, a fan), so that group is asked first; else the first group
+    // (in the order they were made) that holds it.
+    size_t g = groups.size();
+    if (last < groups.size() && same_plane(groups[last])) {
+      g = last;
+    } else {
+      const Cell c = cell_of(n);
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const auto it = by_cell.find(Cell{c[0] + dx, c[1] + dy, c[2] + dz});
+            if (it == by_cell.end()) continue;
+            for (size_t k : it->second)
+              if (k < g && same_plane(groups[k])) g = k;
+          }
     }
-    last = static_cast<size_t>(g - groups.begin());
-    g->faces.push_back(std::move(part));
+    if (g == groups.size()) {
+      groups.push_back({{n, n.dot(t[0])}, {}, true});
+      by_cell[cell_of(n)].push_back(g);
+    }
+    last = g;
+    groups[g].faces.push_back(std::move(part));
   }
   return groups;
 }
