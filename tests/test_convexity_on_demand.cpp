@@ -55,10 +55,11 @@ json scene_json(const std::string& dir, const json& pairs = nullptr) {
   for (const Made& m : parts()) {
     const std::string file = dir + "/" + m.id + ".stl";
     pd::test::write_binary_stl(file, m.mesh);
-    list.push_back({{"id", m.id},
-                    {"mesh", file},
-                    {"transform",
-                     {{1, 0, 0, m.at.x()}, {0, 1, 0, m.at.y()}, {0, 0, 1, m.at.z()}, {0, 0, 0, 1}}}});
+    list.push_back(
+        {{"id", m.id},
+         {"mesh", file},
+         {"transform",
+          {{1, 0, 0, m.at.x()}, {0, 1, 0, m.at.y()}, {0, 0, 1, m.at.z()}, {0, 0, 0, 1}}}});
   }
   json s = {{"tolerance", 0.1}, {"parts", list}};
   if (!pairs.is_null()) s["pairs"] = pairs;
@@ -136,8 +137,7 @@ TEST(ConvexityOnDemand, APairsResultDoesNotDependOnTheOtherPairs) {
     EXPECT_EQ(x.depth_bounds, y.depth_bounds) << a << " " << b;
   }
   // The plate's pair alone does not measure the pin (the plate decides it).
-  const RunResult alone =
-      run(scene_json(dir, json::array({json::array({"plate", "pin"})})));
+  const RunResult alone = run(scene_json(dir, json::array({json::array({"plate", "pin"})})));
   EXPECT_FALSE(part(alone, "pin").convex);
   EXPECT_EQ(part(alone, "plate").convex, false);
 }
