@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/run_stages.h"
 #include "parallel_for.h"
@@ -69,6 +70,7 @@ std::vector<int> still_needed(const std::vector<Part>& parts, int a, int b,
 // surface lost from the store) counts as nonconvex: the refinement decides
 // its pairs and reports what it cannot read.
 void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunOptions& options) {
+  Progress progress(which.size(), options.quiet, "convexity measures");
   parallel_for(which.size(), options.jobs, [&](size_t k) {
     Part& p = parts[size_t(which[k])];
     try {
@@ -76,7 +78,9 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
     } catch (const std::exception&) {
       p.convex = false;
     }
+    progress.tick();
   });
+  progress.finish();
 }
 
 }  // namespace
