@@ -147,7 +147,20 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   }
   // Closed: every edge used an even number of times. Oriented as well: each
   // walked as often one way as the other, and the volume positive (outward).
-  std::sort(uses.begin(), uses.end());
+  // The uses put in order of their lower end by counting, then each vertex's
+  // few by their upper end: the uses of one edge are a run.
+  {
+    std::vector<size_t> start(m.points.size() + 1, 0);
+    for (const EdgeUse& u : uses) ++start[size_t(u.lo) + 1];
+    for (size_t v = 0; v < m.points.size(); ++v) start[v + 1] += start[v];
+    std::vector<EdgeUse> by_lo(uses.size());
+    std::vector<size_t> next(start.begin(), start.end() - 1);
+    for (const EdgeUse& u : uses) by_lo[next[size_t(u.lo)]++] = u;
+    for (size_t v = 0; v < m.points.size(); ++v)
+      std::sort(by_lo.begin() + std::ptrdiff_t(start[v]),
+                by_lo.begin() + std::ptrdiff_t(start[v + 1]));
+    uses = std::move(by_lo);
+  }
   bool even = !uses.empty(), balanced = true;
   for (size_t a = 0, b = 0; a < uses.size(); a = b) {
     int count = 0, balance = 0;
