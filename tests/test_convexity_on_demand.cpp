@@ -9,6 +9,7 @@
 
 #include "batch/run.h"
 #include "corpus/cad_shapes.h"
+#include "scene/part_convexity.h"
 #include "scene/scene.h"
 #include "scratch_dir.h"
 #include "stl_file.h"
@@ -140,6 +141,51 @@ TEST(ConvexityOnDemand, APairsResultDoesNotDependOnTheOtherPairs) {
   const RunResult alone = run(scene_json(dir, json::array({json::array({"plate", "pin"})})));
   EXPECT_FALSE(part(alone, "pin").convex);
   EXPECT_EQ(part(alone, "plate").convex, false);
+}
+
+TEST(ConvexityOnDemand, EveryInstanceOfAFileGetsTheSameMeasure) {
+  // One bracket file placed four ways (a quarter turn far from the origin, an
+  // arbitrary turn, in inches): measured in file coordinates from the file's
+  // own positions, the answer does not depend on which instance asks.
+  const std::string dir = pd_test::scratch_dir("on_demand", "instances").string();
+  const std::string file = dir + "/bracket.stl";
+  pd::test::write_binary_stl(file, shapes::l_bracket(40, 5, 20));
+  const json quarter = {{0, -1, 0, 20000.5}, {1, 0, 0, -15000.25}, {0, 0, 1, 9000}, {0, 0, 0, 1}};
+  const json odd = {{0.36, 0.48, -0.8, 20000.5},
+                    {-0.8, 0.6, 0, -15000.25},
+                    {0.48, 0.64, 0.6, 9000},
+                    {0, 0, 0, 1}};
+  const json scene = {{"tolerance", 0.1},
+                      {"parts",
+                       {{{"id", "plain"}, {"mesh", file}},
+                        {{"id", "quarter"}, {"mesh", file}, {"transform", quarter}},
+                        {{"id", "odd"}, {"mesh", file}, {"transform", odd}},
+                        {{"id", "inches"}, {"mesh", file}, {"units", "in"}}}}};
+  const SceneSpec spec = parse_scene_json(scene.dump(), "scene.json", "");
+  std::vector<Part> parts = build_parts(spec, 2);
+  ASSERT_EQ(parts.size(), 4u);
+  std::vector<StoredConvexity> c;
+  for (Part& p : parts) {
+    ASSERT_FALSE(p.error) << *p.error;
+    ASSERT_TRUE(convexity_unmeasured(p)) << p.id;
+    c.push_back(measure_file_convexity(p, ""));
+    set_convexity(p, c.back());
+    EXPECT_EQ(p.convex, false) << p.id;
+  }
+  EXPECT_GT(c[0].concavity, 0.1);
+  // A quarter turn stretches nothing: one key (the run measures the file
+  // once for both) and the same bits.
+  EXPECT_EQ(convexity_key_of(parts[0]), convexity_key_of(parts[1]));
+  EXPECT_EQ(c[0].concavity, c[1].concavity);
+  EXPECT_EQ(parts[0].surface->concavity, parts[1].surface->concavity);
+  // An arbitrary turn's stretch is 1 within rounding: its own key, the same
+  // measure.
+  EXPECT_DOUBLE_EQ(c[0].concavity, c[2].concavity);
+  // In inches the file is measured against its tolerance / 25.4: the same
+  // bracket, nonconvex by as much in scene units.
+  EXPECT_NE(convexity_key_of(parts[0]), convexity_key_of(parts[3]));
+  EXPECT_NEAR(parts[3].surface->concavity, 25.4 * c[0].concavity,
+              1e-6 * parts[3].surface->concavity);
 }
 
 }  // namespace

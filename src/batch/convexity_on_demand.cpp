@@ -1,6 +1,9 @@
 #include "batch/convexity_on_demand.h"
 
 #include <algorithm>
+#include <map>
+#include <optional>
+#include <string>
 #include <tuple>
 
 #include "batch/progress.h"
@@ -66,17 +69,28 @@ std::vector<int> still_needed(const std::vector<Part>& parts, int a, int b,
   return need;
 }
 
-// Measures the parts marked in `which`; a part that cannot be measured (its
-// surface lost from the store) counts as nonconvex: the refinement decides
-// its pairs and reports what it cannot read.
+// Measures the parts marked in `which`, each file at each stretch once (its
+// instances share the answer); a part that cannot be measured (its surface
+// lost from the store) counts as nonconvex: the refinement decides its pairs
+// and reports what it cannot read.
 void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunOptions& options) {
-  Progress progress(which.size(), options.quiet, "convexity measures");
-  parallel_for(which.size(), options.jobs, [&](size_t k) {
-    Part& p = parts[size_t(which[k])];
+  std::map<std::string, std::vector<int>> by_key;  // ordered: the same order on every run
+  for (int p : which) by_key[convexity_key_of(parts[size_t(p)])].push_back(p);
+  std::vector<const std::vector<int>*> files;
+  for (const auto& [key, instances] : by_key) files.push_back(&instances);
+  Progress progress(files.size(), options.quiet, "convexity measures");
+  parallel_for(files.size(), options.jobs, [&](size_t k) {
+    const std::vector<int>& instances = *files[k];
+    std::optional<StoredConvexity> c;
     try {
-      measure_convexity(p, options.cache_dir);
+      c = measure_file_convexity(parts[size_t(instances.front())], options.cache_dir);
     } catch (const std::exception&) {
-      p.convex = false;
+    }
+    for (int p : instances) {
+      if (c)
+        set_convexity(parts[size_t(p)], *c);
+      else
+        parts[size_t(p)].convex = false;
     }
     progress.tick();
   });

@@ -1,45 +1,60 @@
 #include "scene/part_convexity.h"
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/convexity.h"
-#include "scene/convexity_cache.h"
+#include "geometry/same_position.h"
 
 namespace pd {
+
+namespace {
+
+// File units, at this part's stretch: voids count at its tolerance, and the
+// estimate stops once it is nonconvex for it (or beyond the noise).
+double tolerance_of(const PartSurface& s) {
+  return s.concavity_tol / s.stretch;
+}
+double stop_above_of(const PartSurface& s) {
+  return std::max(tolerance_of(s), s.noise);
+}
+
+}  // namespace
 
 bool convexity_unmeasured(const Part& p) {
   return p.convexity_on_demand() && !p.convex && !p.error;
 }
 
-void measure_convexity(Part& p, const std::string& cache_dir) {
+std::string convexity_key_of(const Part& p) {
+  const PartSurface& s = *p.surface;
+  return convexity_key(s.file_hash, tolerance_of(s), stop_above_of(s));
+}
+
+StoredConvexity measure_file_convexity(const Part& p, const std::string& cache_dir) {
+  const PartSurface& s = *p.surface;
+  const std::string key = convexity_key_of(p);
+  if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
+  const std::shared_ptr<const Mesh> mesh = file_mesh_of(s);
+  // Its distinct positions spare the estimate's qhull the repeats of every
+  // corner (an STL file holds each about six times).
+  const Points distinct =
+      distinct_positions(mesh->vertices, first_at_same_position(mesh->vertices));
+  const ConvexityScreen screen =
+      screen_convexity(*mesh, tolerance_of(s), stop_above_of(s), &distinct);
+  const StoredConvexity c{screen.concavity.value, screen.closed};
+  write_cached_convexity(cache_dir, key, c);
+  return c;
+}
+
+void set_convexity(Part& p, const StoredConvexity& c) {
   PartSurface& s = *p.surface;
-  // File units, at this part's stretch: voids count at its tolerance, and the
-  // estimate stops once it is nonconvex for it (or beyond the noise).
-  const double tol = s.concavity_tol / s.stretch, stop_above = std::max(tol, s.noise);
-  const std::string key = convexity_key(s.file_hash, tol, stop_above);
-  StoredConvexity c;
-  if (auto hit = read_cached_convexity(cache_dir, key)) {
-    c = *hit;
-  } else {
-    const std::shared_ptr<const Mesh> mesh = file_mesh_of(s);
-    // The part's hull is its file's hull vertices placed: placed back, they
-    // spare the estimate a qhull of every vertex.
-    const Eigen::Matrix3d A = s.placement.topLeftCorner<3, 3>();
-    Points hull_points;
-    if (p.pieces.size() == 1 && A.determinant() != 0) {
-      const Eigen::Matrix3d inv = A.inverse();
-      hull_points = inv * (p.pieces[0].vertices.colwise() - s.placement.topRightCorner<3, 1>());
-    }
-    const ConvexityScreen screen =
-        screen_convexity(*mesh, tol, stop_above, hull_points.cols() ? &hull_points : nullptr);
-    c = {screen.concavity.value, screen.closed};
-    write_cached_convexity(cache_dir, key, c);
-  }
-  p.convex = c.concavity <= stop_above;
+  p.convex = c.concavity <= stop_above_of(s);
   s.concavity = c.concavity * s.stretch;
   s.closed = c.closed;
+}
+
+void measure_convexity(Part& p, const std::string& cache_dir) {
+  set_convexity(p, measure_file_convexity(p, cache_dir));
 }
 
 }  // namespace pd

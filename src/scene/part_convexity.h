@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "scene/convexity_cache.h"
 #include "scene/parts.h"
 
 namespace pd {
@@ -13,12 +14,24 @@ namespace pd {
 /// The part keeps a surface whose convexity is not measured yet.
 bool convexity_unmeasured(const Part& p);
 
-/// Measures it (from the convexity cache in `cache_dir` when it holds it, ""
-/// for none) and sets p.convex, p.surface->concavity and ->closed: convex when
-/// the file's concavity, at this part's stretch, is within its concavity
-/// tolerance or the coordinates' noise (as the parts stage decides it for
-/// decompose). Reads the surface from the mesh store; throws
-/// std::runtime_error when it cannot.
+/// What measuring the part's file at the part's stretch is keyed by: every
+/// instance of one file at one stretch gets the same measurement.
+std::string convexity_key_of(const Part& p);
+
+/// The file's concavity and closedness at the part's stretch (file units),
+/// from the convexity cache in `cache_dir` when it holds them ("" for none),
+/// else measured on the file's mesh from the mesh store (its distinct
+/// positions hulled in file coordinates, so the answer does not depend on
+/// which instance asks) and cached. Throws std::runtime_error when the
+/// surface cannot be read.
+StoredConvexity measure_file_convexity(const Part& p, const std::string& cache_dir);
+
+/// Sets p.convex, p.surface->concavity and ->closed from `c`: convex when the
+/// file's concavity, at this part's stretch, is within its concavity tolerance
+/// or the coordinates' noise (as the parts stage decides it for decompose).
+void set_convexity(Part& p, const StoredConvexity& c);
+
+/// Both: measures the part and sets what it found.
 void measure_convexity(Part& p, const std::string& cache_dir);
 
 }  // namespace pd
