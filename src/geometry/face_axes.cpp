@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace pd {
@@ -12,37 +13,36 @@ Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles) {
   // Area per rounded normal: the faces sorted by their normal's key (then by
   // their order, so each group sums its faces in the order given), the groups
   // in key order, so ties break the same way on every run. (A fine sphere
-  // makes a group per face: a sort, not a tree of nodes.)
-  using Key = std::array<long, 3>;
-  struct Face {
-    Key key;
-    size_t index;
-    Vec3 weighted;  ///< area × unit normal
-    double area;
-  };
-  std::vector<Face> faces;
-  faces.reserve(triangles.size());
+  // makes a group per face: a sort, not a tree of nodes.) A unit normal's
+  // rounded components lie in [-1000, 1000]: packed base 2001, the key's
+  // order is theirs.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order;  // key, face
+  std::vector<Vec3> weighted;                                  // area × unit normal
+  std::vector<double> area;
+  order.reserve(triangles.size());
+  weighted.reserve(triangles.size());
+  area.reserve(triangles.size());
   for (const auto& t : triangles) {
     const Vec3 c = (t[1] - t[0]).cross(t[2] - t[0]);
-    const double area = 0.5 * c.norm();
-    if (!(area > 0)) continue;
-    const Vec3 n = c / (2 * area);
-    faces.push_back(
-        {{std::lround(n.x() * 1000), std::lround(n.y() * 1000), std::lround(n.z() * 1000)},
-         faces.size(),
-         area * n,
-         area});
+    const double a = 0.5 * c.norm();
+    if (!(a > 0)) continue;
+    const Vec3 n = c / (2 * a);
+    if (!n.allFinite()) continue;
+    std::uint64_t key = 0;
+    for (int k = 0; k < 3; ++k)
+      key = key * 2001 + static_cast<std::uint64_t>(std::lround(n[k] * 1000) + 1000);
+    order.push_back({key, static_cast<std::uint32_t>(weighted.size())});
+    weighted.push_back(a * n);
+    area.push_back(a);
   }
-  std::sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) {
-    return x.key != y.key ? x.key < y.key : x.index < y.index;
-  });
+  std::sort(order.begin(), order.end());
   std::vector<std::pair<double, Vec3>> by_area;
-  for (size_t a = 0, b = 0; a < faces.size(); a = b) {
+  for (size_t i = 0, j = 0; i < order.size(); i = j) {
     Vec3 sum = Vec3::Zero();  // the area-weighted mean normal of the group
     double total = 0.0;
-    for (b = a; b < faces.size() && faces[b].key == faces[a].key; ++b) {
-      sum += faces[b].weighted;
-      total += faces[b].area;
+    for (j = i; j < order.size() && order[j].first == order[i].first; ++j) {
+      sum += weighted[order[j].second];
+      total += area[order[j].second];
     }
     by_area.push_back({total, sum.normalized()});
   }
