@@ -123,11 +123,12 @@ TEST(Parts, OneMeshFileUnderManyTransforms) {
   std::remove(obj.c_str());
 }
 
-TEST(Parts, ASoleInstancePlacedWithoutStretchKeepsTheDistancesItWasMeasuredOn) {
+TEST(Parts, EachPlacementIsMeasuredAtItsStretchAndReadsBackPlaced) {
   // Two shapes, each written to four files: one placed once, turned and moved
   // far away (rigid); one in inches, turned (a similarity); one under two
-  // placements; one stretched along x. Only the first two are measured on
-  // their placed meshes, whose distances the part keeps for the refinement.
+  // placements; one stretched along x. Each part is measured where a pair
+  // needs it (here: asked directly), its file at its own stretch, and its
+  // surface reads back from the mesh store placed as every stage places it.
   // - An L-bracket (legs 10 long, 2 thick): its hull's slanted face is 4 from
   //   the part at its middle, (a - t) / 2. Nonconvex at tolerance 0.1 (its
   //   concavity tolerance is 0.025): the estimate stops above it, never above 4.
