@@ -318,7 +318,14 @@ ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double
                                  const HullTriangles* hull_facets) {
   ConvexityScreen r;
   r.closed = part.closed();
-  const Points& points = hull_points ? *hull_points : m.vertices;
+  // Each position once (an STL file repeats every corner): hulled when no
+  // hull points are given, and the surface points the estimate projects.
+  std::optional<Points> distinct;
+  const auto distinct_of_m = [&]() -> const Points& {
+    if (!distinct) distinct = distinct_positions(m.vertices, first_at_same_position(m.vertices));
+    return *distinct;
+  };
+  const Points& points = hull_points ? *hull_points : distinct_of_m();
   const HullOfPoints h = hull_points && hull_facets ? hull_of_points(points, *hull_facets)
                                                     : hull_of_points(points);  // the estimate's too
   const double hull_volume = h.solid() ? h.volume : 0.0;
@@ -335,9 +342,8 @@ ConvexityScreen screen_convexity(const Mesh& m, const PreparedMesh& part, double
   // the part is convex within the tolerance (parts.cpp), and those cannot
   // take it there (a float32 shaft's caps lie a few float steps off its hull's).
   const SurfacePolygons faces = triangle_polygons(m, 0.25 * concavity_tol);
-  r.concavity = hull_concavity(h, part, concavity_tol, missing,
-                               distinct_positions(m.vertices, first_at_same_position(m.vertices)),
-                               kConvexitySamples, stop_above, &faces);
+  r.concavity = hull_concavity(h, part, concavity_tol, missing, distinct_of_m(), kConvexitySamples,
+                               stop_above, &faces);
   return r;
 }
 

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "geometry/convexity.h"
-#include "geometry/same_position.h"
 
 namespace pd {
 
@@ -35,12 +34,10 @@ StoredConvexity measure_file_convexity(const Part& p, const std::string& cache_d
   const std::string key = convexity_key_of(p);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
   const std::shared_ptr<const Mesh> mesh = file_mesh_of(s);
-  // Its distinct positions spare the estimate's qhull the repeats of every
-  // corner (an STL file holds each about six times).
-  const Points distinct =
-      distinct_positions(mesh->vertices, first_at_same_position(mesh->vertices));
-  const ConvexityScreen screen =
-      screen_convexity(*mesh, tolerance_of(s), stop_above_of(s), &distinct);
+  // No hull points: the screen hulls the file's own distinct positions (the
+  // same whichever instance asks) and welds the file once for that and its
+  // surface samples.
+  const ConvexityScreen screen = screen_convexity(*mesh, tolerance_of(s), stop_above_of(s));
   const StoredConvexity c{screen.concavity.value, screen.closed};
   write_cached_convexity(cache_dir, key, c);
   return c;

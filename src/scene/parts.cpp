@@ -171,7 +171,8 @@ bool keeps_surface(Pieces p) {
 // A pieces auto mesh part's convexity decides only pairs whose hulls
 // interfere, and only when the other part is convex too: the batch stage
 // measures it when such a pair needs it (scene/part_convexity.h). B-rep parts
-// and decompose keep measuring here.
+// and decompose keep measuring here. The loader's side of
+// Part::convexity_on_demand (a B-rep file is the one with a tessellation).
 bool convexity_left_for_pairs(const PartSpec& spec, const MeshFile& f) {
   return spec.pieces == Pieces::kAuto && !f.tessellation && f.deflection == 0;
 }
