@@ -10,6 +10,7 @@
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -89,6 +90,13 @@ TopoDS_Shape make(const BrepSolid& s) {
       const Handle(Geom_BSplineSurface) s = GeomAPI_PointsToBSplineSurface(grid).Surface();
       const TopoDS_Face f = BRepBuilderAPI_MakeFace(s, 1e-7).Face();
       return BRepPrimAPI_MakePrism(f, gp_Vec(0, 0, p[1])).Shape();
+    }
+    case BrepSolid::Kind::kChamferedSquare: {
+      // A cone through the square's corners cuts its four sides in hyperbolas.
+      const TopoDS_Shape block =
+          BRepPrimAPI_MakeBox(gp_Pnt(-p[0], -p[0], 0.0), 2 * p[0], 2 * p[0], p[1]).Shape();
+      const TopoDS_Shape cone = BRepPrimAPI_MakeCone(1.5 * p[0], 1.05 * p[0], p[1]).Shape();
+      return BRepAlgoAPI_Common(block, cone).Shape();
     }
     case BrepSolid::Kind::kTilted: {
       gp_Trsf a, b;

@@ -30,6 +30,8 @@ struct BrepSolid {
     kTwoBoxes,         ///< p: dx, dy, dz: two boxes face to face along x, one product
     kBoxShell,         ///< p: dx, dy, dz: a box's faces without a solid (a surface model)
     kTilted,           ///< a kBox p rotated 30° about x then 20° about z (free-form free)
+    kChamferedSquare,  ///< p: half-width, height: a square block, axis z from the origin,
+                       ///< chamfered by a cone (radius 1.5 → 1.05 half-widths): hyperbola edges
     kWavySlab,  ///< p: size, thickness: a non-rational B-spline face z = sin x cos y / 2 over
                 ///< [0, size]², extruded by the thickness (B-spline and extrusion faces)
   };

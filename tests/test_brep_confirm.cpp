@@ -78,6 +78,36 @@ TEST(BrepConfirm, TheBoundCertifiesOnlyWhatSurvivesTheWidening) {
   EXPECT_EQ(e->verdict, ExactVerdict::kSeparated);
 }
 
+// A pair the meshes found touching (no overlap above the coordinates'
+// resolution) or apart with no gap beyond the sags: the solids overlap by at
+// most the meshes' upper end plus twice the sag, certified within the
+// tolerance; the status stays the meshes'.
+TEST(BrepConfirm, AContactWithinTheToleranceIsCertifiedAndKeepsItsStatus) {
+  const ExactContext c = context(0.05, 0.0125);
+  PairResult seated = result(Status::kSeparated, 0.0, std::array{0.0, 0.008});
+  auto e = pd::certify_within_tolerance(seated, c);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->verdict, ExactVerdict::kFalsePositive);
+  EXPECT_EQ(e->basis, ExactBasis::kBound);
+  EXPECT_DOUBLE_EQ((*e->depth_bounds)[0], 0.0);
+  EXPECT_DOUBLE_EQ((*e->depth_bounds)[1], 0.033);
+  // Meshes apart (no bracket): the solids' overlap is at most 2s.
+  e = pd::certify_within_tolerance(result(Status::kSeparated, 0.0), c);
+  ASSERT_TRUE(e);
+  EXPECT_DOUBLE_EQ((*e->depth_bounds)[1], 0.025);
+  // Not when the widened end passes the tolerance, the sags are estimates, a
+  // clearance is checked (contact breaks it), or the meshes overlap.
+  EXPECT_FALSE(pd::certify_within_tolerance(seated, context(0.05, 0.025)));
+  EXPECT_FALSE(pd::certify_within_tolerance(seated, context(0.05, 0.0125, false)));
+  ExactContext clearance = c;
+  clearance.clearance = 0.1;
+  EXPECT_FALSE(pd::certify_within_tolerance(seated, clearance));
+  EXPECT_FALSE(pd::certify_within_tolerance(
+      result(Status::kFalsePositive, 0.008, std::array{0.004, 0.008}), c));
+  // Apart by no more than the sags is no certificate of being apart.
+  EXPECT_FALSE(pd::certify_by_bound(seated, {0, 0}, c, 0.02));
+}
+
 ExactMeasure measure(double distance, double lower, std::optional<double> upper,
                      std::optional<double> volume = {}) {
   ExactMeasure m;

@@ -57,7 +57,15 @@ TEST(RealBrepFiles, OpenCascadeSampleMechanismAgreesWithItsOwnBooleans) {
       ASSERT_TRUE(p.contains("exact")) << what;
       if (ref.common_volume < 1e-6) {  // touching: separated on the solids
         EXPECT_EQ(p["status"], "separated") << what;
-        EXPECT_EQ(p["exact"]["verdict"], "touching") << what;
+        // Found touching on the solids, or certified within the tolerance by
+        // the deflection bound (which claims no overlap: its bracket starts at 0).
+        if (p["exact"]["verdict"] == "false_positive") {
+          EXPECT_EQ(p["exact"]["by"], "deflection-bound") << what;
+          EXPECT_EQ(p["exact"]["depth_bounds"][0], 0.0) << what;
+          EXPECT_LE(p["exact"]["depth_bounds"][1].get<double>(), tolerance) << what;
+        } else {
+          EXPECT_EQ(p["exact"]["verdict"], "touching") << what;
+        }
       } else {  // overlapping by a volume: the depth bracket is above zero
         const double lo = p["exact"]["depth_bounds"][0], hi = p["exact"]["depth_bounds"][1];
         EXPECT_GT(hi, 0.0) << what;

@@ -10,6 +10,7 @@
 
 #include "brep_cases.h"
 #include "cli_support.h"
+#include "tolerances.h"
 
 namespace {
 
@@ -115,7 +116,10 @@ TEST(StepAssemblies, OneAssemblyFileEveryRelationConfirmed) {
   ASSERT_EQ(report["parts"].size(), 14u);
   for (const json& part : report["parts"]) {
     EXPECT_EQ(part["tessellation"]["basis"], "bound") << part.dump();
-    EXPECT_DOUBLE_EQ(part["tessellation"]["deflection"].get<double>(), 0.0025);
+    // A quarter of the tolerance, or finer where the sag bound asked for it.
+    const double deflection = part["tessellation"]["deflection"].get<double>();
+    EXPECT_LE(deflection, 0.0025);
+    EXPECT_GE(deflection, 0.0025 / pd::tol::kRemeshBelow);
   }
   expect_relations(report, "assembly");
 }

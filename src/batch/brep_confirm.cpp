@@ -7,9 +7,8 @@
 
 #include "batch/pair_tolerance.h"
 #include "batch/progress.h"
+#include "geometry/surface_gap.h"
 #include "scene/units.h"
-#include "solve/ipopt_local.h"
-#include "solve/signed_distance.h"
 #include "tolerances.h"
 #include "work_queue.h"
 
@@ -48,8 +47,7 @@ std::optional<ExactCheck> certify_by_bound(const PairResult& r, const std::array
     // clearance, as far as the sags leave of the meshes' distance).
     if (!hull_distance || !(*hull_distance > widen + touch_of(c))) return std::nullopt;
     if (c.clearance && !(*hull_distance - widen >= *c.clearance)) return std::nullopt;
-    ExactCheck e = check(ExactVerdict::kSeparated, ExactBasis::kBound, std::array{0.0, 0.0});
-    return e;
+    return check(ExactVerdict::kSeparated, ExactBasis::kBound, std::array{0.0, 0.0});
   }
   const double lo = mesh[0] - widen, hi = mesh[1] + widen;
   const double band = tol::kClassifyBand * c.pair_size;
@@ -59,6 +57,13 @@ std::optional<ExactCheck> certify_by_bound(const PairResult& r, const std::array
     return check(ExactVerdict::kFalsePositive, ExactBasis::kBound,
                  std::array{std::max(0.0, lo), hi});
   return std::nullopt;
+}
+
+std::optional<ExactCheck> certify_within_tolerance(const PairResult& r, const ExactContext& c) {
+  if (!c.bounds || r.status != Status::kSeparated || c.clearance) return std::nullopt;
+  const double hi = (r.depth_bounds ? (*r.depth_bounds)[1] : 0.0) + 2.0 * c.sag;
+  if (!(hi <= c.tolerance + tol::kClassifyBand * c.pair_size)) return std::nullopt;
+  return check(ExactVerdict::kFalsePositive, ExactBasis::kBound, std::array{0.0, hi});
 }
 
 void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactContext& c,
@@ -235,14 +240,18 @@ double slab_gap(const Part& a, const Part& b, const Vec3& v) {
   return gap;
 }
 
-double hull_gap(const Part& a, const Part& b, const SolverSettings& s, IpoptLocalSolver& ipopt) {
-  double gap = INFINITY;
-  for (const Hull& p : a.pieces)
-    for (const Hull& q : b.pieces)
-      gap = std::min(
-          gap,
-          std::max(0.0, -signed_distance(p.vertices, q.vertices, s, ipopt, std::nullopt).value));
-  return gap;
+// A lower bound of the distance between the meshes of two parts whose
+// surfaces do not meet and neither holds the other (the mesh test's
+// "separated"), sharpened up to `enough`: where the hulls overlap (parts that
+// interlock, a hinge's leaves) their gap says nothing, the meshes' does.
+double mesh_gap(const Part& a, const Part& b, double enough) {
+  if (!a.surface || !b.surface) return 0.0;
+  Mesh ma = placed_mesh_of(*a.surface), mb = placed_mesh_of(*b.surface);
+  if (ma.triangles.cols() > mb.triangles.cols()) std::swap(ma, mb);  // walk the smaller
+  std::vector<std::array<Vec3, 3>> tb(size_t(mb.triangles.cols()));
+  for (Eigen::Index t = 0; t < mb.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) tb[size_t(t)][size_t(k)] = mb.vertices.col(mb.triangles(k, t));
+  return surface_gap_lower_bound(ma, tb, TriangleTree(tb), enough);
 }
 
 }  // namespace
@@ -285,7 +294,10 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
                pb.brep->tessellation.basis == SagBasis::kBound;
     c.clearance = pc.clearance;
     mesh[k] = mesh_bracket(r, pa.convex.value_or(true) && pb.convex.value_or(true));
-    if (auto e = certify_by_bound(r, mesh[k], c, r.distance)) {
+    auto e = certify_by_bound(r, mesh[k], c, r.distance);
+    // Surfaces that meet (the thickness measured): no gap will show them apart.
+    if (!e && r.depth_bounds) e = certify_within_tolerance(r, c);
+    if (e) {
       r.exact = *e;
       r.confirmed = true;
       report(k);
@@ -299,21 +311,27 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
   const double seconds = options.pair_timeout > 0
                              ? std::min(options.pair_timeout, tol::kExactSeconds)
                              : tol::kExactSeconds;
-  std::unique_ptr<IpoptLocalSolver> ipopt;  // created in each worker on first use
   auto task = [&](size_t k) {
     const auto [a, b] = pairs[k];
     const Part &pa = parts[a], &pb = parts[b];
     const PairResult& r = results[k];
     const ExactContext& c = context[k];
     std::optional<double> gap;
-    if (r.status == Status::kSeparated || r.status == Status::kClearanceViolation) {
+    // Without certified sags no gap certifies anything: straight to the solids.
+    if (c.bounds && (r.status == Status::kSeparated || r.status == Status::kClearanceViolation)) {
       // The hull stage's direction first: its slab often certifies alone.
       PairResult probe = r;
       gap = slab_gap(pa, pb, r.direction);
       if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
-      if (!ipopt) ipopt = std::make_unique<IpoptLocalSolver>();
-      gap = std::max(*gap, hull_gap(pa, pb, options.solver, *ipopt));
-      if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
+      if (r.depth_source == "mesh-test" || r.depth_source == "hull") {
+        // Surfaces that do not meet, neither inside the other: their own gap
+        // (at least the hulls'), enough to certify (beyond both sags and the
+        // clearance, with room for its slack).
+        const double enough = 1.25 * (2.0 * c.sag + touch_of(c) + c.clearance.value_or(0.0));
+        gap = std::max(*gap, mesh_gap(pa, pb, enough));
+        if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
+      }
+      if (certify_within_tolerance(probe, c)) return encode(gap, std::nullopt).dump();
     }
     ExactRequest q;
     if (r.at) q.starts.push_back(*r.at);
@@ -338,6 +356,7 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
                                             : std::nullopt;
       if (!j.contains("measure")) {
         r.exact = certify_by_bound(r, mesh[k], c, gap);
+        if (!r.exact) r.exact = certify_within_tolerance(r, c);
         if (!r.exact) throw std::runtime_error("the hulls' gap certified nothing");
         r.confirmed = true;
       } else {

@@ -44,11 +44,21 @@ struct ExactContext {
 };
 
 /// Step 1: the verdict the widened bracket certifies, if any (basis kBound).
-/// A separated pair needs `hull_distance` (the hulls' gap, a lower bound of the
-/// meshes') beyond twice the sag.
+/// A separated pair needs `hull_distance` (a lower bound of the meshes'
+/// distance: the hulls' gap, or the meshes' own) beyond twice the sag.
 std::optional<ExactCheck> certify_by_bound(const PairResult& r, const std::array<double, 2>& mesh,
                                            const ExactContext& c,
                                            std::optional<double> hull_distance = std::nullopt);
+
+/// Step 1 for a pair the mesh stage found apart or touching (status
+/// separated, no clearance checked) that no gap certified apart: its meshes
+/// overlap by at most hi (`depth_bounds`' upper end where the surfaces meet,
+/// else 0), so the solids by at most hi + 2s. Within the tolerance that is
+/// certified (`false_positive` with `depth_bounds` [0, hi + 2s]: any overlap of
+/// the solids is one); whether the solids touch, overlap that little or stand
+/// apart, only they can say, and the status stays the meshes' (a contact's
+/// status does not follow the tolerance).
+std::optional<ExactCheck> certify_within_tolerance(const PairResult& r, const ExactContext& c);
 
 /// Step 2's verdict from the solids' measurements, and the pair made to agree
 /// with it: a decisive verdict that agrees with the widened mesh bracket sets

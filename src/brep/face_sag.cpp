@@ -14,6 +14,8 @@
 #include <gp_Cone.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Elips.hxx>
+#include <gp_Hypr.hxx>
+#include <gp_Parab.hxx>
 #include <gp_Sphere.hxx>
 #include <gp_Torus.hxx>
 #include <optional>
@@ -185,6 +187,17 @@ FaceSag edge_sag(const TopoDS_Edge& e, const Poly_Triangulation& t, const TopLoc
       dev = r * (1.0 - std::cos(0.5 * std::abs(t1 - t0)));
     } else if (type == GeomAbs_Ellipse) {
       dev = segment_interpolation_bound(t0, t1, c.Ellipse().MajorRadius());
+    } else if (type == GeomAbs_Hyperbola) {
+      // C(t) = (a cosh t, b sinh t): |C''| = |C − centre| grows with |t|, so it
+      // is largest at the segment's end farther from the vertex (a chamfer's
+      // cone cut by a hexagon's flat: every chamfered hex head and nut).
+      const gp_Hypr h = c.Hyperbola();
+      const double far = std::max(std::abs(t0), std::abs(t1));
+      dev = segment_interpolation_bound(
+          t0, t1, std::hypot(h.MajorRadius() * std::cosh(far), h.MinorRadius() * std::sinh(far)));
+    } else if (type == GeomAbs_Parabola) {
+      // C(t) = (t² / 4f, t): |C''| = 1 / 2f everywhere.
+      dev = segment_interpolation_bound(t0, t1, 0.5 / c.Parabola().Focal());
     }
     if (!std::isfinite(dev)) {
       out.bound = false;
