@@ -55,6 +55,8 @@ TEST(SurfaceGap, TheBoundIsTheGapUpToEnoughFarFromTheOrigin) {
     EXPECT_GE(got, gap - 1e-9);
     // Sharpened only up to what is asked: a proof that they are 0.2 apart.
     EXPECT_EQ(pd::surface_gap_lower_bound(a, tb, tree, 0.2), 0.2);
+    // Closer than what the caller can use: 0 at once (a valid bound).
+    EXPECT_EQ(pd::surface_gap_lower_bound(a, tb, tree, 1.0, 0.5), 0.0);
     // Touching: 0.
     const pd::Mesh c = pd::shapes::translated(
         pd::shapes::cylinder(Eigen::Vector2d(10.0, 0), 5.0, 0.0, 100.0, 48), at);

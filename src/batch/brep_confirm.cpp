@@ -7,7 +7,9 @@
 
 #include "batch/pair_tolerance.h"
 #include "batch/progress.h"
+#include "byte_cache.h"
 #include "geometry/surface_gap.h"
+#include "parallel_for.h"
 #include "scene/units.h"
 #include "tolerances.h"
 #include "work_queue.h"
@@ -187,25 +189,20 @@ namespace {
 
 using json = nlohmann::json;
 
-// The worker's answer: the hulls' gap, and the solids' measurements when the
-// gap did not certify the pair.
-json encode(const std::optional<double>& hull_distance, const std::optional<ExactMeasure>& m) {
-  json j = json::object();
-  if (hull_distance) j["hull_distance"] = *hull_distance;
-  if (!m) return j;
-  json x = {{"ok", m->ok},
-            {"error", m->error},
-            {"lower", m->lower},
-            {"seconds", m->seconds},
-            {"timed_out", m->common_timed_out},
-            {"common_error", m->common_error}};
-  if (m->distance) x["distance"] = *m->distance;
-  x["distance_exact"] = m->distance_exact;
-  x["distance_timed_out"] = m->distance_timed_out;
-  if (m->upper) x["upper"] = *m->upper;
-  if (m->volume) x["volume"] = *m->volume;
-  j["measure"] = x;
-  return j;
+// The worker's answer: the solids' measurements.
+json encode(const ExactMeasure& m) {
+  json x = {{"ok", m.ok},
+            {"error", m.error},
+            {"lower", m.lower},
+            {"seconds", m.seconds},
+            {"timed_out", m.common_timed_out},
+            {"common_error", m.common_error}};
+  if (m.distance) x["distance"] = *m.distance;
+  x["distance_exact"] = m.distance_exact;
+  x["distance_timed_out"] = m.distance_timed_out;
+  if (m.upper) x["upper"] = *m.upper;
+  if (m.volume) x["volume"] = *m.volume;
+  return x;
 }
 
 ExactMeasure measure_of(const json& x) {
@@ -240,18 +237,33 @@ double slab_gap(const Part& a, const Part& b, const Vec3& v) {
   return gap;
 }
 
-// A lower bound of the distance between the meshes of two parts whose
-// surfaces do not meet and neither holds the other (the mesh test's
-// "separated"), sharpened up to `enough`: where the hulls overlap (parts that
-// interlock, a hinge's leaves) their gap says nothing, the meshes' does.
-double mesh_gap(const Part& a, const Part& b, double enough) {
-  if (!a.surface || !b.surface) return 0.0;
-  Mesh ma = placed_mesh_of(*a.surface), mb = placed_mesh_of(*b.surface);
-  if (ma.triangles.cols() > mb.triangles.cols()) std::swap(ma, mb);  // walk the smaller
-  std::vector<std::array<Vec3, 3>> tb(size_t(mb.triangles.cols()));
-  for (Eigen::Index t = 0; t < mb.triangles.cols(); ++t)
-    for (int k = 0; k < 3; ++k) tb[size_t(t)][size_t(k)] = mb.vertices.col(mb.triangles(k, t));
-  return surface_gap_lower_bound(ma, tb, TriangleTree(tb), enough);
+// A part's placed surface and its triangle tree, for the meshes' gap.
+struct GapSurface {
+  Mesh mesh;
+  std::vector<std::array<Vec3, 3>> triangles;
+  TriangleTree tree;
+  explicit GapSurface(Mesh m) : mesh(std::move(m)) {
+    triangles.resize(size_t(mesh.triangles.cols()));
+    for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t)
+      for (int k = 0; k < 3; ++k)
+        triangles[size_t(t)][size_t(k)] = mesh.vertices.col(mesh.triangles(k, t));
+    tree = TriangleTree(triangles);
+  }
+  size_t bytes() const {
+    return size_t(mesh.vertices.size()) * sizeof(double) +
+           size_t(mesh.triangles.size()) * sizeof(int) + triangles.size() * 4 * 9 * sizeof(double);
+  }
+};
+
+// A lower bound of the distance between two parts' surfaces that do not meet
+// and neither holds the other (the mesh test's "separated", or hulls apart),
+// sharpened up to `enough`: where the hulls overlap (parts that interlock, a
+// hinge's leaves) their gap says nothing, the meshes' does.
+double mesh_gap(const GapSurface& a, const GapSurface& b, double enough, double useless) {
+  const bool a_smaller = a.mesh.triangles.cols() <= b.mesh.triangles.cols();
+  const GapSurface& walk = a_smaller ? a : b;  // the smaller walked, the larger's tree asked
+  const GapSurface& ask = a_smaller ? b : a;
+  return surface_gap_lower_bound(walk.mesh, ask.triangles, ask.tree, enough, useless);
 }
 
 }  // namespace
@@ -307,6 +319,60 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
   }
   if (to_measure.empty()) return;
 
+  // Pairs apart or touching with certified sags: the gap between their
+  // meshes, else the contact within the tolerance, before any solid.
+  {
+    std::vector<size_t> gapped, rest;
+    for (size_t k : to_measure) {
+      const Status s = results[k].status;
+      const bool apart = s == Status::kSeparated || s == Status::kClearanceViolation;
+      (context[k].bounds && apart ? gapped : rest).push_back(k);
+    }
+    ByteCache<int, GapSurface> surfaces(size_t(std::max(0.0, options.memory_mb)) << 20);
+    const auto surface_of = [&](int p) {
+      return surfaces.get(p, [&] {
+        auto g = std::make_shared<const GapSurface>(placed_mesh_of(*parts[p].surface));
+        return ByteCache<int, GapSurface>::Built{g, g->bytes()};
+      });
+    };
+    std::vector<std::optional<ExactCheck>> certified(gapped.size());
+    parallel_for(gapped.size(), options.jobs, [&](size_t n) {
+      const size_t k = gapped[n];
+      const auto [a, b] = pairs[k];
+      const PairResult& r = results[k];
+      const ExactContext& c = context[k];
+      // The hull stage's direction first: its slab often certifies alone.
+      double gap = slab_gap(parts[a], parts[b], r.direction);
+      certified[n] = certify_by_bound(r, mesh[k], c, gap);
+      if (!certified[n] && (r.depth_source == "mesh-test" || r.depth_source == "hull") &&
+          parts[a].surface && parts[b].surface) {
+        // Surfaces that do not meet, neither inside the other: their own gap
+        // (at least the hulls'), sharpened until it certifies (beyond both sags
+        // and the clearance, with room for its slack) or cannot.
+        const double needed = 2.0 * c.sag + touch_of(c) + c.clearance.value_or(0.0);
+        try {
+          gap = std::max(gap, mesh_gap(*surface_of(a), *surface_of(b), 1.25 * needed, needed));
+        } catch (const std::exception&) {  // no surface to read: the solids decide
+        }
+        certified[n] = certify_by_bound(r, mesh[k], c, gap);
+      }
+      if (!certified[n]) certified[n] = certify_within_tolerance(r, c);
+    });
+    for (size_t n = 0; n < gapped.size(); ++n) {
+      const size_t k = gapped[n];
+      if (!certified[n]) {
+        rest.push_back(k);
+        continue;
+      }
+      results[k].exact = *certified[n];
+      results[k].confirmed = true;
+      report(k);
+    }
+    std::sort(rest.begin(), rest.end());
+    to_measure.swap(rest);
+  }
+  if (to_measure.empty()) return;
+
   Progress progress(to_measure.size(), options.quiet, "exact solids");
   const double seconds = options.pair_timeout > 0
                              ? std::min(options.pair_timeout, tol::kExactSeconds)
@@ -316,23 +382,6 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     const Part &pa = parts[a], &pb = parts[b];
     const PairResult& r = results[k];
     const ExactContext& c = context[k];
-    std::optional<double> gap;
-    // Without certified sags no gap certifies anything: straight to the solids.
-    if (c.bounds && (r.status == Status::kSeparated || r.status == Status::kClearanceViolation)) {
-      // The hull stage's direction first: its slab often certifies alone.
-      PairResult probe = r;
-      gap = slab_gap(pa, pb, r.direction);
-      if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
-      if (r.depth_source == "mesh-test" || r.depth_source == "hull") {
-        // Surfaces that do not meet, neither inside the other: their own gap
-        // (at least the hulls'), enough to certify (beyond both sags and the
-        // clearance, with room for its slack).
-        const double enough = 1.25 * (2.0 * c.sag + touch_of(c) + c.clearance.value_or(0.0));
-        gap = std::max(*gap, mesh_gap(pa, pb, enough));
-        if (certify_by_bound(probe, mesh[k], c, gap)) return encode(gap, std::nullopt).dump();
-      }
-      if (certify_within_tolerance(probe, c)) return encode(gap, std::nullopt).dump();
-    }
     ExactRequest q;
     if (r.at) q.starts.push_back(*r.at);
     const Aabb meet = meeting_region(pa, pb);
@@ -341,8 +390,8 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     q.touch = std::max(touch_of(c), tol::kExactTouchMm / mm);
     q.mm_per_unit = mm;
     q.measure_within = c.clearance.value_or(0.0);
-    return encode(gap, measure_exact_pair({pa.brep->file, pa.brep->leaf, pa.brep->placement},
-                                          {pb.brep->file, pb.brep->leaf, pb.brep->placement}, q))
+    return encode(measure_exact_pair({pa.brep->file, pa.brep->leaf, pa.brep->placement},
+                                     {pb.brep->file, pb.brep->leaf, pb.brep->placement}, q))
         .dump();
   };
   auto done = [&](size_t k, bool ok, const std::string& payload) {
@@ -350,18 +399,7 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     const ExactContext& c = context[k];
     try {
       if (!ok) throw std::runtime_error(payload);
-      const json j = json::parse(payload);
-      const std::optional<double> gap = j.contains("hull_distance")
-                                            ? std::optional(j["hull_distance"].get<double>())
-                                            : std::nullopt;
-      if (!j.contains("measure")) {
-        r.exact = certify_by_bound(r, mesh[k], c, gap);
-        if (!r.exact) r.exact = certify_within_tolerance(r, c);
-        if (!r.exact) throw std::runtime_error("the hulls' gap certified nothing");
-        r.confirmed = true;
-      } else {
-        decide_exact(r, mesh[k], c, measure_of(j["measure"]));
-      }
+      decide_exact(r, mesh[k], c, measure_of(json::parse(payload)));
     } catch (const std::exception& e) {
       ExactCheck x;
       const bool late = !ok && payload.rfind("timed out", 0) == 0;

@@ -52,7 +52,7 @@ double triangle_distance(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>
 }
 
 double surface_gap_lower_bound(const Mesh& a, const std::vector<std::array<Vec3, 3>>& b,
-                               const TriangleTree& tree, double enough) {
+                               const TriangleTree& tree, double enough, double useless) {
   if (b.empty() || a.triangles.cols() == 0) return enough;
   // A distance computed from coordinates of magnitude m is within a few ulps
   // of m of the true one.
@@ -62,18 +62,23 @@ double surface_gap_lower_bound(const Mesh& a, const std::vector<std::array<Vec3,
   const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0);
   const Vec3 pad = Vec3::Constant(enough);
   double gap = enough;
+  using Tri = std::array<Vec3, 3>;
   std::vector<int> near;
   for (Eigen::Index k = 0; k < a.triangles.cols(); ++k) {
-    const std::array<Vec3, 3> t{a.vertices.col(a.triangles(0, k)),
-                                a.vertices.col(a.triangles(1, k)),
-                                a.vertices.col(a.triangles(2, k))};
+    const Tri t{a.vertices.col(a.triangles(0, k)), a.vertices.col(a.triangles(1, k)),
+                a.vertices.col(a.triangles(2, k))};
     const Vec3 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]) - pad;
     const Vec3 hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]) + pad;
     near.clear();
     tree.in_turned_box(Eigen::Matrix3d::Identity(), Vec3::Zero(), lo, hi, near);
     for (int j : near) {
-      gap = std::min(gap, std::max(0.0, triangle_distance(t, b[size_t(j)]) - rounding));
-      if (gap <= 0.0) return 0.0;
+      const Tri& q = b[size_t(j)];
+      // Boxes apart by at least the gap found: the triangles too.
+      const Vec3 qlo = q[0].cwiseMin(q[1]).cwiseMin(q[2]), qhi = q[0].cwiseMax(q[1]).cwiseMax(q[2]);
+      const Vec3 apart = (qlo - (hi - pad)).cwiseMax((lo + pad) - qhi).cwiseMax(0.0);
+      if (apart.norm() - rounding >= gap) continue;
+      gap = std::min(gap, std::max(0.0, triangle_distance(t, q) - rounding));
+      if (gap <= useless) return 0.0;
     }
   }
   return gap;
