@@ -5,7 +5,10 @@
 //    mesh stage's bracket of the depth, widened by twice the larger sag, holds
 //    for the solids (a mesh within s of its solid moves every signed distance,
 //    hence the overlap thickness's h and the penetration depth, by at most s
-//    per part), and decides the pair if it still does so widened;
+//    per part), and decides the pair if it still does so widened; a pair
+//    apart by more than both sags (its hulls' or its meshes' gap) is apart,
+//    and one the meshes found touching is within the tolerance when its
+//    bracket is, widened (its status stays the meshes');
 // 2. else confirmed on the solids in worker processes (brep/exact_pair.h):
 //    their distance, and where they meet a bracket of the overlap thickness,
 //    decided by the same rule as the mesh bracket, accepted when it agrees with
