@@ -431,22 +431,6 @@ inline constexpr int kSagPatchCells = 8;
 /// positive by the bound alone when hi + 2δ ≤ tolerance: at δ = tol/4, about
 /// 3δ ≤ tol with a quarter of the tolerance to spare for the bracket's width.
 inline constexpr double kDeflectionFraction = 0.25;
-/// Open CASCADE's mesher checks its deflection at sample points only, so a
-/// part's certified sag can come out above the deflection asked for (a small
-/// torus fillet, whose triangles' diagonals cut deeper than their sides). A
-/// part whose sag bound exceeds the deflection by more than kRemeshAbove (and
-/// at most kRemeshBelow) is meshed once more, at δ² / sag, and the finer mesh
-/// is kept when its sag is smaller: the sag, not the deflection, widens every
-/// bracket (at δ = tol/4 a contact is certified while hi + 2·sag ≤ tol).
-/// Measured on the STEP benchmark (scripts/bench_step_assemblies.py): from
-/// 2× (a pin's head fillet, a bolt's chamfer) the second mesh lets its
-/// contacts be certified without the solids; below it (bearing rings at
-/// 1.8–1.9×) remeshing cost more than it saved (1.31 s → 1.03 s without).
-/// Far above, a finer mesh shrinks the sag little while its triangles
-/// multiply (a pulley rim's torus at 7×: meshed at δ/4 it still read 2×,
-/// with 33× the vertices).
-inline constexpr double kRemeshAbove = 2.0;
-inline constexpr double kRemeshBelow = 3.0;
 /// Under tolerance auto, a B-rep part without a given deflection is meshed at
 /// this deflection in mm (its band then follows from the sags that gives):
 /// a 10 mm radius comes out in about 70 segments.

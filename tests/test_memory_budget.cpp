@@ -114,6 +114,14 @@ TEST(MeshStore, KeepsMeshesWholeAndMissesWhatIsDamaged) {
   std::filesystem::resize_file(entry, std::filesystem::file_size(entry) - 1);
   EXPECT_FALSE(store->has("a"));
   EXPECT_FALSE(store->get("a"));
+  // A B-rep surface's per-triangle sags, beside its mesh: whole, or a miss.
+  const std::vector<float> sags = {0.0f, 0.0125f, 0.0285f};
+  ASSERT_EQ(store->put_sags("b", sags), "");
+  EXPECT_EQ(store->get_sags("b"), sags);
+  EXPECT_FALSE(store->get_sags("a"));
+  const std::string sag_entry = d + "meshes/b.pds";
+  std::filesystem::resize_file(sag_entry, std::filesystem::file_size(sag_entry) - 1);
+  EXPECT_FALSE(store->get_sags("b"));
   std::string dir;
   {
     const auto temporary = MeshStore::temporary();

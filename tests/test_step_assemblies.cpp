@@ -10,7 +10,6 @@
 
 #include "brep_cases.h"
 #include "cli_support.h"
-#include "tolerances.h"
 
 namespace {
 
@@ -116,10 +115,7 @@ TEST(StepAssemblies, OneAssemblyFileEveryRelationConfirmed) {
   ASSERT_EQ(report["parts"].size(), 14u);
   for (const json& part : report["parts"]) {
     EXPECT_EQ(part["tessellation"]["basis"], "bound") << part.dump();
-    // A quarter of the tolerance, or finer where the sag bound asked for it.
-    const double deflection = part["tessellation"]["deflection"].get<double>();
-    EXPECT_LE(deflection, 0.0025);
-    EXPECT_GE(deflection, 0.0025 / pd::tol::kRemeshBelow);
+    EXPECT_DOUBLE_EQ(part["tessellation"]["deflection"].get<double>(), 0.0025);
   }
   expect_relations(report, "assembly");
 }
@@ -137,6 +133,35 @@ TEST(StepAssemblies, OneFilePerPartAndAPartList) {
   std::ofstream(dir + "parts.json") << scene.dump();
   expect_relations(run_json(dir + "parts.json"), "one file per part");
   expect_relations(run_json("- --tolerance 0.01", list), "part list");
+}
+
+// A shaft seated at an exact fit in a plate's 4 mm bore, with a groove (a
+// torus, whose certified sag is well above the deflection) 20 mm from the
+// plate: only the faces near the contact widen its bracket, so the fit is
+// certified by the bound where the shaft's worst sag alone would not.
+TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(
+      dir + "seat.step", {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+                          {"shaft", {Kind::kShaftWithGroove, {4, 40, 1.5, 30}}, Vec3(10, 10, -5)}});
+  std::ofstream(dir + "seat.json")
+      << R"({"units": "mm", "tolerance": 0.05, "parts": [{"id": "s", "mesh": "seat.step"}]})";
+  const auto r = pdcheck(dir + "seat.json --no-cache -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_EQ(report["pairs"].size(), 1u);
+  const json& pair = report["pairs"][0];
+  double shaft_sag = 0.0;
+  for (const json& part : report["parts"])
+    if (part["id"] == "s/shaft") shaft_sag = part["tessellation"]["sag"];
+  // The shaft's worst sag (its groove's) would not let the bound decide...
+  const double hi = pair.contains("depth_bounds") ? pair["depth_bounds"][1].get<double>() : 0.0;
+  ASSERT_GT(hi + 2.0 * shaft_sag, 0.05) << report.dump();
+  // ... its cylinder's does, and no solid is touched.
+  EXPECT_EQ(pair["status"], "separated");
+  EXPECT_EQ(pair["exact"]["by"], "deflection-bound") << pair.dump();
+  EXPECT_EQ(pair["exact"]["verdict"], "false_positive") << pair.dump();
+  EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.05);
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

@@ -242,7 +242,13 @@ struct GapSurface {
   Mesh mesh;
   std::vector<std::array<Vec3, 3>> triangles;
   TriangleTree tree;
-  explicit GapSurface(Mesh m) : mesh(std::move(m)) {
+  /// Per triangle, its face's sag (scene units); empty when not known.
+  std::vector<double> sags;
+  GapSurface(Mesh m, const Part& p) : mesh(std::move(m)) {
+    if (p.surface && p.surface->stored && p.surface->stored->store && p.brep)
+      if (auto s = p.surface->stored->store->get_sags(p.surface->stored->key))
+        if (long(s->size()) == mesh.triangles.cols())
+          for (float x : *s) sags.push_back(double(x) * p.brep->stretch);
     triangles.resize(size_t(mesh.triangles.cols()));
     for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t)
       for (int k = 0; k < 3; ++k)
@@ -251,9 +257,31 @@ struct GapSurface {
   }
   size_t bytes() const {
     return size_t(mesh.vertices.size()) * sizeof(double) +
-           size_t(mesh.triangles.size()) * sizeof(int) + triangles.size() * 4 * 9 * sizeof(double);
+           size_t(mesh.triangles.size()) * sizeof(int) + triangles.size() * 4 * 9 * sizeof(double) +
+           sags.size() * sizeof(double);
   }
 };
+
+// The largest face sag of `own`'s triangles within `reach` of `other`'s
+// surface (scene units), or `everywhere` when its faces' sags are not known.
+// A pair apart or touching is decided by points near both surfaces: a face
+// sag far from the other part (a fillet away from a seated bore) cannot move
+// them (docs/solver.md, "Where the sag is").
+double sag_near(const GapSurface& own, const GapSurface& other, double reach, double everywhere) {
+  if (own.sags.empty()) return everywhere;
+  double worst = 0.0;
+  std::vector<int> near;
+  for (size_t t = 0; t < own.triangles.size(); ++t) {
+    if (own.sags[t] <= worst) continue;
+    const auto& tri = own.triangles[t];
+    const Vec3 lo = tri[0].cwiseMin(tri[1]).cwiseMin(tri[2]).array() - reach;
+    const Vec3 hi = tri[0].cwiseMax(tri[1]).cwiseMax(tri[2]).array() + reach;
+    near.clear();
+    other.tree.in_turned_box(Eigen::Matrix3d::Identity(), Vec3::Zero(), lo, hi, near, 0);
+    if (!near.empty()) worst = own.sags[t];
+  }
+  return worst;
+}
 
 // A lower bound of the distance between two parts' surfaces that do not meet
 // and neither holds the other (the mesh test's "separated", or hulls apart),
@@ -331,7 +359,7 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     ByteCache<int, GapSurface> surfaces(size_t(std::max(0.0, options.memory_mb)) << 20);
     const auto surface_of = [&](int p) {
       return surfaces.get(p, [&] {
-        auto g = std::make_shared<const GapSurface>(placed_mesh_of(*parts[p].surface));
+        auto g = std::make_shared<const GapSurface>(placed_mesh_of(*parts[p].surface), parts[p]);
         return ByteCache<int, GapSurface>::Built{g, g->bytes()};
       });
     };
@@ -340,20 +368,36 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
       const size_t k = gapped[n];
       const auto [a, b] = pairs[k];
       const PairResult& r = results[k];
-      const ExactContext& c = context[k];
+      ExactContext& c = context[k];
       // The hull stage's direction first: its slab often certifies alone.
       double gap = slab_gap(parts[a], parts[b], r.direction);
       certified[n] = certify_by_bound(r, mesh[k], c, gap);
-      if (!certified[n] && (r.depth_source == "mesh-test" || r.depth_source == "hull") &&
-          parts[a].surface && parts[b].surface) {
+      if (certified[n] || !parts[a].surface || !parts[b].surface) {
+        if (!certified[n]) certified[n] = certify_within_tolerance(r, c);
+        return;
+      }
+      std::shared_ptr<const GapSurface> sa, sb;
+      try {
+        sa = surface_of(a);
+        sb = surface_of(b);
+      } catch (const std::exception&) {  // no surface to read: the solids decide
+        return;
+      }
+      // Only the sags of faces near both surfaces can move what decides a pair
+      // apart or touching: points within the bracket's half and both sags of
+      // each surface.
+      const double hi = r.depth_bounds ? (*r.depth_bounds)[1] : 0.0;
+      const double reach =
+          2.0 * (hi + 6.0 * c.sag + 1.25 * c.clearance.value_or(0.0)) + touch_of(c);
+      c.sag = std::min(
+          c.sag, std::max(sag_near(*sa, *sb, reach, c.sag), sag_near(*sb, *sa, reach, c.sag)));
+      certified[n] = certify_by_bound(r, mesh[k], c, gap);
+      if (!certified[n] && (r.depth_source == "mesh-test" || r.depth_source == "hull")) {
         // Surfaces that do not meet, neither inside the other: their own gap
         // (at least the hulls'), sharpened until it certifies (beyond both sags
         // and the clearance, with room for its slack) or cannot.
         const double needed = 2.0 * c.sag + touch_of(c) + c.clearance.value_or(0.0);
-        try {
-          gap = std::max(gap, mesh_gap(*surface_of(a), *surface_of(b), 1.25 * needed, needed));
-        } catch (const std::exception&) {  // no surface to read: the solids decide
-        }
+        gap = std::max(gap, mesh_gap(*sa, *sb, 1.25 * needed, needed));
         certified[n] = certify_by_bound(r, mesh[k], c, gap);
       }
       if (!certified[n]) certified[n] = certify_within_tolerance(r, c);

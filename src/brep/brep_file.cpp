@@ -10,7 +10,6 @@
 
 #include "brep/shape_mesh.h"
 #include "brep/shape_tree.h"
-#include "tolerances.h"
 
 namespace pd {
 
@@ -40,24 +39,18 @@ Tessellation combine(const Tessellation& a, const Tessellation& b) {
 
 namespace {
 
-// A product meshed at `deflection`, and once more finer where its certified
-// sag came out above it (tol::kRemeshAbove).
-ShapeMesh mesh_within_deflection(const TopoDS_Shape& product, double deflection) {
-  ShapeMesh m = mesh_solids(product, deflection);
-  const Tessellation& t = m.tessellation;
-  if (!(deflection > 0) || t.basis != SagBasis::kBound ||
-      !(t.sag > tol::kRemeshAbove * deflection) || t.sag > tol::kRemeshBelow * deflection)
-    return m;
-  const double finer = deflection * deflection / t.sag;
-  ShapeMesh again = mesh_solids(product, finer);
-  return again.tessellation.sag < t.sag ? again : m;
-}
-
 BrepLeaf placed_leaf(const ShapeTree::Leaf& l, const ShapeMesh& m) {
   BrepLeaf leaf;
   leaf.solids = m.solids;
   leaf.tessellation = m.tessellation;
   leaf.tessellation.sag *= std::abs(l.place.ScaleFactor());
+  leaf.triangle_sags.reserve(m.triangle_sags.size());
+  for (double s : m.triangle_sags) {
+    s *= std::abs(l.place.ScaleFactor());
+    float f = float(s);
+    if (double(f) < s) f = std::nextafter(f, INFINITY);  // never below the face's
+    leaf.triangle_sags.push_back(f);
+  }
   leaf.tessellation.deflection = m.tessellation.deflection;
   leaf.mesh.triangles = m.mesh.triangles;
   leaf.mesh.vertices.resize(3, m.mesh.vertices.cols());
@@ -87,7 +80,7 @@ BrepFile read_brep_file(const std::string& path, double deflection) {
     for (const ShapeTree::Leaf& l : tree.leaves) {
       auto it = meshed.find(l.product_key);
       if (it == meshed.end())
-        it = meshed.emplace(l.product_key, mesh_within_deflection(l.product, deflection)).first;
+        it = meshed.emplace(l.product_key, mesh_solids(l.product, deflection)).first;
       out.leaves.push_back(placed_leaf(l, it->second));
       if (it->second.open_edges > 0 && it->second.solids > 0)
         out.warnings.push_back("\"" + l.name_path + "\": its mesh has " +

@@ -53,6 +53,9 @@ struct BrepNode {
 struct BrepLeaf {
   Mesh mesh;  ///< its faces' triangles, placed by the assembly (file units, welded shells)
   Tessellation tessellation;
+  /// Per triangle of `mesh`: the sag of the face it was made for (file units,
+  /// rounded up to float): where on the part its sag is.
+  std::vector<float> triangle_sags;
   int solids = 0;  ///< solids in the product's shape
   /// Why the leaf cannot be checked (no solid: a surface model), naming it.
   std::optional<std::string> error;

@@ -144,6 +144,7 @@ ShapeMesh mesh_solids(const TopoDS_Shape& shape, double deflection) {
       }
       const FaceSag sag = face_sag(face, t, loc);
       out.tessellation.sag = std::max(out.tessellation.sag, sag.value);
+      out.triangle_sags.resize(triangles.size(), sag.value);  // this face's triangles
       if (!sag.bound) {
         ++out.tessellation.free_form;
         out.tessellation.basis = SagBasis::kEstimate;

@@ -12,7 +12,8 @@ struct ShapeMesh {
   Mesh mesh;  ///< the solids' faces, in the shape's coordinates
   Tessellation tessellation;
   int solids = 0;
-  long open_edges = 0;  ///< mesh edges used by an odd number of triangles
+  long open_edges = 0;                ///< mesh edges used by an odd number of triangles
+  std::vector<double> triangle_sags;  ///< per triangle of `mesh`: its face's sag
 };
 
 /// Meshes the solids of `shape` at linear deflection `deflection` (angular

@@ -55,19 +55,23 @@ NodeMeshes load_brep_meshes(const std::string& path, double deflection, bool by_
     for (BrepLeaf& l : f.leaves) {
       out.meshes.push_back(std::move(l.mesh));
       out.tessellations.push_back(l.tessellation);
+      out.triangle_sags.push_back(std::move(l.triangle_sags));
       out.leaf_errors.push_back(l.error.value_or(""));
     }
     return out;
   }
   std::vector<Mesh> meshes;
   Tessellation t;
+  std::vector<float> sags;  // in join_meshes' order: the leaves' triangles one after another
   for (size_t k = 0; k < f.leaves.size(); ++k) {
     if (f.leaves[k].error) throw MeshError(*f.leaves[k].error);
     t = k == 0 ? f.leaves[k].tessellation : combine(t, f.leaves[k].tessellation);
     meshes.push_back(std::move(f.leaves[k].mesh));
+    sags.insert(sags.end(), f.leaves[k].triangle_sags.begin(), f.leaves[k].triangle_sags.end());
   }
   out.meshes = {join_meshes(meshes)};
   out.tessellations = {t};
+  if (long(sags.size()) == out.meshes[0].triangles.cols()) out.triangle_sags = {std::move(sags)};
   out.leaf_errors = {""};
   return out;
 }

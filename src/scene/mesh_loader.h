@@ -42,6 +42,8 @@ struct NodeMeshes {
   /// and why its leaf cannot be checked ("" when it can). Empty otherwise.
   std::vector<Tessellation> tessellations;
   std::vector<std::string> leaf_errors;
+  /// B-rep files, per mesh: each triangle's face sag (BrepLeaf::triangle_sags).
+  std::vector<std::vector<float>> triangle_sags;
 };
 NodeMeshes load_node_meshes(const std::string& path, std::vector<std::string>* warnings = nullptr);
 /// load_node_meshes from a file's bytes (as read_meshes).
@@ -106,6 +108,7 @@ struct LoadedMeshes {
   /// distinct path when node_names_only).
   std::vector<Tessellation> tessellations;
   std::vector<std::string> leaf_errors;
+  std::vector<std::vector<float>> triangle_sags;  ///< B-rep files: NodeMeshes' (per mesh)
 };
 
 /// Tests only (fault injection): runs in a loader process before it reads the

@@ -182,6 +182,7 @@ LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb) {
       out.nodes = std::move(read.nodes);
       out.tessellations = std::move(read.tessellations);
       out.leaf_errors = std::move(read.leaf_errors);
+      out.triangle_sags = std::move(read.triangle_sags);
       return out;
     }
     // A node's meshes come together (collect_by_node), and paths are unique.

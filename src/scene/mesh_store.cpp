@@ -21,6 +21,8 @@ namespace {
 // the coordinates and the corner indices as stored in memory (a store is read
 // on the machine that wrote it, or is a miss: the key names the layout).
 constexpr CacheKind kMeshKind{"pdcheck-mesh-1", ".pdm"};
+// Per-triangle floats: their count, then the values as stored in memory.
+constexpr CacheKind kSagsKind{"pdcheck-sags-1", ".pds"};
 
 bool fits_float(const Points& p) {
   const double* d = p.data();
@@ -82,6 +84,25 @@ std::string MeshStore::put(const std::string& key, const Mesh& mesh) const {
   body.append(reinterpret_cast<const char*>(mesh.triangles.data()),
               mesh.triangles.size() * sizeof(int));
   return write_cache_entry(dir_, kMeshKind, key, body);
+}
+
+std::string MeshStore::put_sags(const std::string& key, const std::vector<float>& sags) const {
+  std::string body;
+  put_raw(body, std::int64_t(sags.size()));
+  body.append(reinterpret_cast<const char*>(sags.data()), sags.size() * sizeof(float));
+  return write_cache_entry(dir_, kSagsKind, key, body);
+}
+
+std::optional<std::vector<float>> MeshStore::get_sags(const std::string& key) const {
+  const std::optional<std::string> body = read_cache_entry(dir_, kSagsKind, key);
+  if (!body) return std::nullopt;
+  std::int64_t n = 0;
+  if (body->size() < sizeof n) return std::nullopt;
+  std::memcpy(&n, body->data(), sizeof n);
+  if (n < 0 || body->size() != sizeof n + size_t(n) * sizeof(float)) return std::nullopt;
+  std::vector<float> out(static_cast<size_t>(n));
+  if (n > 0) std::memcpy(out.data(), body->data() + sizeof n, size_t(n) * sizeof(float));
+  return out;
 }
 
 std::optional<Mesh> MeshStore::get(const std::string& key) const {

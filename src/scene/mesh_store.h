@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "geometry/mesh.h"
 #include "termination.h"
@@ -36,6 +37,11 @@ class MeshStore {
   std::string put(const std::string& key, const Mesh& mesh) const;
   /// The mesh stored under `key`, or nullopt when it is absent or not whole.
   std::optional<Mesh> get(const std::string& key) const;
+  /// Stores per-triangle values of the mesh under `key` (a B-rep surface's
+  /// face sags), beside it: "" or why not.
+  std::string put_sags(const std::string& key, const std::vector<float>& sags) const;
+  /// The values stored under `key`, or nullopt when absent or not whole.
+  std::optional<std::vector<float>> get_sags(const std::string& key) const;
   /// Whether an entry is there (not read: get() checks it).
   bool has(const std::string& key) const;
 

@@ -259,6 +259,7 @@ LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_n
     if (!file.leaf_errors[k].empty()) out.error = file.leaf_errors[k];
     out.meshes = {file.meshes[k]};
     out.tessellations = {file.tessellations[k]};
+    if (k < file.triangle_sags.size()) out.triangle_sags = {file.triangle_sags[k]};
     return out;
   }
   std::vector<Mesh> meshes;
@@ -356,7 +357,12 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
         f.concavity = c.concavity;
         f.closed = c.closed;
       }
-      const std::string why = cache.meshes->put(f.hash, meshes[0]);
+      std::string why = cache.meshes->put(f.hash, meshes[0]);
+      // A B-rep surface's triangles carry their faces' sags (where on the part
+      // its sag is): kept beside it for the exact stage.
+      if (why.empty() && !f.read.triangle_sags.empty() &&
+          long(f.read.triangle_sags[0].size()) == meshes[0].triangles.cols())
+        why = cache.meshes->put_sags(f.hash, f.read.triangle_sags[0]);
       if (!why.empty())
         throw std::runtime_error("its surface cannot be kept for the refinement: " + why);
       f.stored = StoredMesh{nullptr, f.hash};
@@ -563,6 +569,7 @@ Part build_part(const PartSpec& spec, const MeshFile* file, const PartsCache& ca
       b.placement = placement(spec);
       b.tessellation = *file->tessellation;
       const double s = stretch(b.placement);
+      b.stretch = s;
       b.tessellation.deflection *= s;
       b.tessellation.sag *= s;
       b.tessellation.tolerance *= s;

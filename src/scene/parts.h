@@ -69,6 +69,7 @@ struct PartBrep {
   std::string file;                   ///< the B-rep file
   int leaf = -1;                      ///< its leaf instance in the file (BrepFile::leaves); -1: all
   Mat4 placement = Mat4::Identity();  ///< file units → scene units (units, then transform)
+  double stretch = 1.0;               ///< the placement's largest stretch of lengths
   Tessellation tessellation;          ///< in scene units (deflection, sag)
 };
 
