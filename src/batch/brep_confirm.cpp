@@ -385,12 +385,14 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
       }
       // Only the sags of faces near both surfaces can move what decides a pair
       // apart or touching: points within the bracket's half and both sags of
-      // each surface.
-      const double hi = r.depth_bounds ? (*r.depth_bounds)[1] : 0.0;
-      const double reach =
-          2.0 * (hi + 6.0 * c.sag + 1.25 * c.clearance.value_or(0.0)) + touch_of(c);
-      c.sag = std::min(
-          c.sag, std::max(sag_near(*sa, *sb, reach, c.sag), sag_near(*sb, *sa, reach, c.sag)));
+      // each surface. (A clearance violation may overlap: its whole sags stay.)
+      if (r.status == Status::kSeparated) {
+        const double hi = r.depth_bounds ? (*r.depth_bounds)[1] : 0.0;
+        const double reach =
+            2.0 * (hi + 6.0 * c.sag + 1.25 * c.clearance.value_or(0.0)) + touch_of(c);
+        c.sag = std::min(
+            c.sag, std::max(sag_near(*sa, *sb, reach, c.sag), sag_near(*sb, *sa, reach, c.sag)));
+      }
       certified[n] = certify_by_bound(r, mesh[k], c, gap);
       if (!certified[n] && (r.depth_source == "mesh-test" || r.depth_source == "hull")) {
         // Surfaces that do not meet, neither inside the other: their own gap
