@@ -48,20 +48,20 @@ TEST(SurfaceGap, TheBoundIsTheGapUpToEnoughFarFromTheOrigin) {
         pd::shapes::cylinder(Eigen::Vector2d(0, 0), 5.0, 0.0, 100.0, 48), at);
     const pd::Mesh b = pd::shapes::translated(
         pd::shapes::cylinder(Eigen::Vector2d(10.0 + gap, 0), 5.0, 0.0, 100.0, 48), at);
-    const std::vector<Tri> tb = triangles_of(b);
+    const std::vector<Tri> ta = triangles_of(a), tb = triangles_of(b);
     const pd::TriangleTree tree(tb);
-    const double got = pd::surface_gap_lower_bound(a, tb, tree, 1.0);
+    const double got = pd::surface_gap_lower_bound(ta, tb, tree, 1.0);
     EXPECT_LE(got, gap) << "never above the distance";
     EXPECT_GE(got, gap - 1e-9);
     // Sharpened only up to what is asked: a proof that they are 0.2 apart.
-    EXPECT_EQ(pd::surface_gap_lower_bound(a, tb, tree, 0.2), 0.2);
+    EXPECT_EQ(pd::surface_gap_lower_bound(ta, tb, tree, 0.2), 0.2);
     // Closer than what the caller can use: 0 at once (a valid bound).
-    EXPECT_EQ(pd::surface_gap_lower_bound(a, tb, tree, 1.0, 0.5), 0.0);
+    EXPECT_EQ(pd::surface_gap_lower_bound(ta, tb, tree, 1.0, 0.5), 0.0);
     // Touching: 0.
     const pd::Mesh c = pd::shapes::translated(
         pd::shapes::cylinder(Eigen::Vector2d(10.0, 0), 5.0, 0.0, 100.0, 48), at);
     const std::vector<Tri> tc = triangles_of(c);
-    EXPECT_LE(pd::surface_gap_lower_bound(a, tc, pd::TriangleTree(tc), 1.0), 1e-9);
+    EXPECT_LE(pd::surface_gap_lower_bound(ta, tc, pd::TriangleTree(tc), 1.0), 1e-9);
   }
 }
 

@@ -239,26 +239,23 @@ double slab_gap(const Part& a, const Part& b, const Vec3& v) {
 
 // A part's placed surface and its triangle tree, for the meshes' gap.
 struct GapSurface {
-  Mesh mesh;
   std::vector<std::array<Vec3, 3>> triangles;
   TriangleTree tree;
   /// Per triangle, its face's sag (scene units); empty when not known.
   std::vector<double> sags;
-  GapSurface(Mesh m, const Part& p) : mesh(std::move(m)) {
-    if (p.surface && p.surface->stored && p.surface->stored->store && p.brep)
-      if (auto s = p.surface->stored->store->get_sags(p.surface->stored->key))
-        if (long(s->size()) == mesh.triangles.cols())
-          for (float x : *s) sags.push_back(double(x) * p.brep->stretch);
+  GapSurface(const Mesh& mesh, const Part& p) {
     triangles.resize(size_t(mesh.triangles.cols()));
     for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t)
       for (int k = 0; k < 3; ++k)
         triangles[size_t(t)][size_t(k)] = mesh.vertices.col(mesh.triangles(k, t));
     tree = TriangleTree(triangles);
+    if (p.surface && p.surface->stored && p.surface->stored->store && p.brep)
+      if (auto s = p.surface->stored->store->get_sags(p.surface->stored->key))
+        if (s->size() == triangles.size())
+          for (float x : *s) sags.push_back(double(x) * p.brep->stretch);
   }
-  size_t bytes() const {
-    return size_t(mesh.vertices.size()) * sizeof(double) +
-           size_t(mesh.triangles.size()) * sizeof(int) + triangles.size() * 4 * 9 * sizeof(double) +
-           sags.size() * sizeof(double);
+  size_t bytes() const {  // the corners, and the tree about as much again
+    return triangles.size() * (2 * sizeof(triangles[0]) + sizeof(double)) + (64u << 10);
   }
 };
 
@@ -288,10 +285,10 @@ double sag_near(const GapSurface& own, const GapSurface& other, double reach, do
 // sharpened up to `enough`: where the hulls overlap (parts that interlock, a
 // hinge's leaves) their gap says nothing, the meshes' does.
 double mesh_gap(const GapSurface& a, const GapSurface& b, double enough, double useless) {
-  const bool a_smaller = a.mesh.triangles.cols() <= b.mesh.triangles.cols();
+  const bool a_smaller = a.triangles.size() <= b.triangles.size();
   const GapSurface& walk = a_smaller ? a : b;  // the smaller walked, the larger's tree asked
   const GapSurface& ask = a_smaller ? b : a;
-  return surface_gap_lower_bound(walk.mesh, ask.triangles, ask.tree, enough, useless);
+  return surface_gap_lower_bound(walk.triangles, ask.triangles, ask.tree, enough, useless);
 }
 
 }  // namespace

@@ -51,22 +51,22 @@ double triangle_distance(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>
   return std::sqrt(best);
 }
 
-double surface_gap_lower_bound(const Mesh& a, const std::vector<std::array<Vec3, 3>>& b,
-                               const TriangleTree& tree, double enough, double useless) {
-  if (b.empty() || a.triangles.cols() == 0) return enough;
+double surface_gap_lower_bound(const std::vector<std::array<Vec3, 3>>& a,
+                               const std::vector<std::array<Vec3, 3>>& b, const TriangleTree& tree,
+                               double enough, double useless) {
+  if (a.empty() || b.empty()) return enough;
   // A distance computed from coordinates of magnitude m is within a few ulps
   // of m of the true one.
-  double scale = a.vertices.cwiseAbs().maxCoeff();
-  for (const auto& t : b)
-    for (const Vec3& v : t) scale = std::max(scale, v.cwiseAbs().maxCoeff());
+  double scale = 0.0;
+  for (const auto* set : {&a, &b})
+    for (const auto& t : *set)
+      for (const Vec3& v : t) scale = std::max(scale, v.cwiseAbs().maxCoeff());
   const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0);
   const Vec3 pad = Vec3::Constant(enough);
   double gap = enough;
   using Tri = std::array<Vec3, 3>;
   std::vector<int> near;
-  for (Eigen::Index k = 0; k < a.triangles.cols(); ++k) {
-    const Tri t{a.vertices.col(a.triangles(0, k)), a.vertices.col(a.triangles(1, k)),
-                a.vertices.col(a.triangles(2, k))};
+  for (const Tri& t : a) {
     const Vec3 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]) - pad;
     const Vec3 hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]) + pad;
     near.clear();
