@@ -123,7 +123,7 @@ TEST(BrepFile, EveryFaceLiesWithinTheSagBoundOfTheMesh) {
       // triangle: at the fine deflection that is what the bound reads.
       const bool wave = m.nodes[k] == "wave";
       if (worst > 0 && (!wave || deflection > 0.1)) {
-        EXPECT_LE(m.tessellations[k].sag, (wave ? 15.0 : 6.0) * worst) << m.nodes[k];
+        EXPECT_LE(m.tessellations[k].sag, (wave ? 15.0 : 3.0) * worst) << m.nodes[k];
       }
     }
   }

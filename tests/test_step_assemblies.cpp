@@ -144,8 +144,11 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
   pd_test::write_step_assembly(
       dir + "seat.step", {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
                           {"shaft", {Kind::kShaftWithGroove, {4, 40, 1.5, 30}}, Vec3(10, 10, -5)}});
-  std::ofstream(dir + "seat.json")
-      << R"({"units": "mm", "tolerance": 0.05, "parts": [{"id": "s", "mesh": "seat.step"}]})";
+  // Meshed at the deflection the default would pick for a 0.05 tolerance, and
+  // checked against a tighter one: the groove's sag (≈ δ) counts, the
+  // cylinder's (≈ δ/2) does not.
+  std::ofstream(dir + "seat.json") << R"({"units": "mm", "tolerance": 0.02, "deflection": 0.0125,
+      "parts": [{"id": "s", "mesh": "seat.step"}]})";
   const auto r = pdcheck(dir + "seat.json --no-cache -q");
   ASSERT_EQ(r.code, 0) << r.err;
   const json report = json::parse(r.out);
@@ -156,12 +159,12 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
     if (part["id"] == "s/shaft") shaft_sag = part["tessellation"]["sag"];
   // The shaft's worst sag (its groove's) would not let the bound decide...
   const double hi = pair.contains("depth_bounds") ? pair["depth_bounds"][1].get<double>() : 0.0;
-  ASSERT_GT(hi + 2.0 * shaft_sag, 0.05) << report.dump();
+  ASSERT_GT(hi + 2.0 * shaft_sag, 0.02) << report.dump();
   // ... its cylinder's does, and no solid is touched.
   EXPECT_EQ(pair["status"], "separated");
   EXPECT_EQ(pair["exact"]["by"], "deflection-bound") << pair.dump();
   EXPECT_EQ(pair["exact"]["verdict"], "false_positive") << pair.dump();
-  EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.05);
+  EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.02);
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

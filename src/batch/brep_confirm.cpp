@@ -61,6 +61,13 @@ std::optional<ExactCheck> certify_by_bound(const PairResult& r, const std::array
   return std::nullopt;
 }
 
+std::optional<double> bound_widening(const Part& a, const Part& b) {
+  if (!a.brep || !b.brep || a.brep->tessellation.basis != SagBasis::kBound ||
+      b.brep->tessellation.basis != SagBasis::kBound)
+    return std::nullopt;
+  return 2.0 * std::max(a.brep->tessellation.sag, b.brep->tessellation.sag);
+}
+
 std::optional<ExactCheck> certify_within_tolerance(const PairResult& r, const ExactContext& c) {
   if (!c.bounds || r.status != Status::kSeparated || c.clearance) return std::nullopt;
   const double hi = (r.depth_bounds ? (*r.depth_bounds)[1] : 0.0) + 2.0 * c.sag;
@@ -327,8 +334,7 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     c.tolerance = pair_tolerance_of(pc, options.tolerance);
     c.pair_size = pair_size(pa, pb);
     c.sag = std::max(pa.brep->tessellation.sag, pb.brep->tessellation.sag);
-    c.bounds = pa.brep->tessellation.basis == SagBasis::kBound &&
-               pb.brep->tessellation.basis == SagBasis::kBound;
+    c.bounds = bound_widening(pa, pb).has_value();
     c.clearance = pc.clearance;
     mesh[k] = mesh_bracket(r, pa.convex.value_or(true) && pb.convex.value_or(true));
     auto e = certify_by_bound(r, mesh[k], c, r.distance);

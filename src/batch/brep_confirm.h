@@ -46,6 +46,12 @@ struct ExactContext {
   std::optional<double> clearance;
 };
 
+/// How far the mesh bracket of a pair of B-rep parts widens for their solids:
+/// twice the larger sag, when both sags are bounds (else none: nothing is
+/// certified by the bound). The refinement narrows a thin overlap's bracket
+/// until this widening still leaves it within the tolerance.
+std::optional<double> bound_widening(const Part& a, const Part& b);
+
 /// Step 1: the verdict the widened bracket certifies, if any (basis kBound).
 /// A separated pair needs `hull_distance` (a lower bound of the meshes'
 /// distance: the hulls' gap, or the meshes' own) beyond twice the sag.

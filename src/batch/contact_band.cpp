@@ -75,7 +75,13 @@ ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance
   // Touching to the coordinates' resolution is touching against any band.
   if (!(local < tolerance) || t.upper <= local || t.lower > local || t.upper <= t.resolution)
     return t;
-  ThicknessResult again = overlap_thickness(a, b, local, t.upper);
+  return thickness_again(a, b, t, local, tolerance);
+}
+
+ThicknessResult thickness_again(const SolidDistance& a, const SolidDistance& b,
+                                const ThicknessResult& t, double threshold, double tolerance) {
+  using Outcome = ThicknessResult::Outcome;
+  ThicknessResult again = overlap_thickness(a, b, threshold, t.upper);
   again.evaluations += t.evaluations;
   again.cells += t.cells;
   if (!(again.lower > t.lower)) {  // keep the better lower bound with its witness

@@ -59,4 +59,11 @@ ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance
                                      double tolerance, const PairTolerance* band, double upper_hint,
                                      const std::function<std::optional<Vec3>()>& surface_at);
 
+/// A bracket `t` (decided against `tolerance`) narrowed once more against a
+/// lower `threshold`, warm (t's upper end as the hint), and merged: the higher
+/// lower bound with its witness, the lower upper bound, the outcome said
+/// against `tolerance` again.
+ThicknessResult thickness_again(const SolidDistance& a, const SolidDistance& b,
+                                const ThicknessResult& t, double threshold, double tolerance);
+
 }  // namespace pd

@@ -10,6 +10,7 @@
 #include <memory>
 #include <tuple>
 
+#include "batch/brep_confirm.h"
 #include "batch/contact_band.h"
 #include "batch/decomposition_cache.h"
 #include "batch/pair_workers.h"
@@ -332,9 +333,13 @@ std::vector<std::pair<size_t, StoredRefinement>> take_cached(
 // overlap needs no guard against, and only a point deeper than the tolerance
 // can decide: it is sought only there, unless the contact's band needs its
 // place.
+//
+// `widen` (bound_widening: B-rep parts with certified sags) narrows a thin
+// overlap's bracket until, widened so for the solids, it still lies within
+// the tolerance: the bound then certifies the pair and no solid is read.
 ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b, double tolerance,
-                                  const PairTolerance* band, PairResult& r, MeshVerdict& v,
-                                  std::string& why_not) {
+                                  const PairTolerance* band, std::optional<double> widen,
+                                  PairResult& r, MeshVerdict& v, std::string& why_not) {
   const auto t0 = Clock::now();
   bool sought = false, whole = false;
   const auto deepest = [&](double only_above) {
@@ -356,6 +361,9 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
     if (!whole) deepest(-INFINITY);
     return v.vertex_at;
   });
+  if (widen && t.outcome == ThicknessResult::Outcome::kBelow && t.upper + *widen > tolerance &&
+      t.lower + *widen <= tolerance && tolerance - *widen > t.resolution)
+    t = thickness_again(a, b, t, tolerance - *widen, tolerance);
   // Only a point deeper than the tolerance and the coordinates' resolution
   // decides; and an overlap certified within the resolution is touching: a
   // part thinner than the resolution is not resolved either.
@@ -500,9 +508,9 @@ class Refinement {
       if (by_pieces) {
         pieces[n] = verdicts_[n].intersect || c.clearance;
       } else if (verdicts_[n].intersect || c.clearance) {
-        thickness_[n] =
-            measure_thickness(*sa, *sb, tolerance(n), c.tolerance ? &*c.tolerance : nullptr,
-                              results_[flagged_[n]], verdicts_[n], why_not_[n]);
+        thickness_[n] = measure_thickness(
+            *sa, *sb, tolerance(n), c.tolerance ? &*c.tolerance : nullptr,
+            bound_widening(parts_[a], parts_[b]), results_[flagged_[n]], verdicts_[n], why_not_[n]);
       }
       // What the cache dropped goes back to the system, not to a heap that
       // would keep it resident for the rest of the run.

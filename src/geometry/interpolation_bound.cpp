@@ -54,6 +54,17 @@ double triangle_interpolation_bound(const std::array<Vec2, 3>& uv,
   return best;
 }
 
+double refined_interpolation_bound(const std::array<Vec2, 3>& uv, const SecondDerivativeBounds& m,
+                                   int n,
+                                   const std::function<double(const Eigen::Vector3d&)>& error) {
+  n = std::max(n, 1);
+  double measured = 0.0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j)
+      measured = std::max(measured, error(Eigen::Vector3d(i, j, n - i - j) / n));
+  return measured + triangle_interpolation_bound(uv, m) / (double(n) * n);
+}
+
 double segment_interpolation_bound(double t0, double t1, double m) {
   const double d = t1 - t0;
   return m * d * d / 8.0;

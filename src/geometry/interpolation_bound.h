@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 
 namespace pd {
 
@@ -39,6 +40,20 @@ double smallest_enclosing_radius(const Vec2& a, const Vec2& b, const Vec2& c);
 /// derivatives of S on the triangle are bounded by `m`. 0 when every bound is 0
 /// (a plane). Pure.
 double triangle_interpolation_bound(const std::array<Vec2, 3>& uv, const SecondDerivativeBounds& m);
+
+/// A sharper bound of max |S(p) − (L P)(p)| over the parameter triangle `uv`,
+/// L P interpolating the points P_i stored for its corners (on S up to
+/// rounding): `error(w)` measures |S − L P| at the point of barycentric weights
+/// w. The triangle is cut into n² copies of itself scaled by 1/n; on each, S −
+/// L P is its linear interpolation at the copy's corners (a convex combination
+/// of measured errors, no longer than the largest) plus S's own interpolation
+/// error there, at most triangle_interpolation_bound / n². So the result is the
+/// largest error measured at the (n + 1)(n + 2)/2 grid points plus that
+/// remainder: within coarse/n² of the true error, where the coarse bound alone
+/// can be twice it (a saddle, a torus's inner side). n ≥ 1. Pure if `error` is.
+double refined_interpolation_bound(const std::array<Vec2, 3>& uv, const SecondDerivativeBounds& m,
+                                   int n,
+                                   const std::function<double(const Eigen::Vector3d&)>& error);
 
 /// An upper bound of max |C(t) − (L C)(t)| over [t0, t1] for a curve whose
 /// second derivative is at most `m` long there: m·(t1 − t0)²/8.

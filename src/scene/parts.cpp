@@ -228,13 +228,14 @@ std::string file_hash(const std::string& path, const PartsCache& cache) {
 
 // The cache key of a part's geometry: its file's content hash, and for a node
 // part the node path with it (a node's hulls, sag and convexity are its own);
-// for a B-rep file the deflection it is meshed at too.
+// for a B-rep file the deflection it is meshed at too, and the version of the
+// sag bound its entries hold (raised whenever the bound changes).
 std::string geometry_hash(const PartSpec& spec, const PartsCache& cache, double deflection) {
   const std::string file = file_hash(*spec.mesh, cache);
   if (deflection > 0) {
     char d[32];
     std::snprintf(d, sizeof d, "%.17g", deflection);
-    return Hasher().add("pdcheck-brep-v1").add(file).add(spec.node.value_or("")).add(d).hex();
+    return Hasher().add("pdcheck-brep-v2").add(file).add(spec.node.value_or("")).add(d).hex();
   }
   if (!spec.node) return file;
   return Hasher().add("pdcheck-node-v1").add(file).add(*spec.node).hex();
