@@ -136,8 +136,8 @@ TEST(StepAssemblies, OneFilePerPartAndAPartList) {
 }
 
 // A shaft seated at an exact fit in a plate's 4 mm bore, with a groove (a
-// torus, whose certified sag is well above the deflection) 20 mm from the
-// plate: only the faces near the contact widen its bracket, so the fit is
+// torus, whose certified sag is about the deflection, twice the cylinder's)
+// 20 mm from the plate: only the faces near the contact widen its bracket, so the fit is
 // certified by the bound where the shaft's worst sag alone would not.
 TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
   const std::string dir = pd_test::process_dir();
@@ -165,6 +165,27 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
   EXPECT_EQ(pair["exact"]["by"], "deflection-bound") << pair.dump();
   EXPECT_EQ(pair["exact"]["verdict"], "false_positive") << pair.dump();
   EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.02);
+}
+
+// A post standing in a plate's bore, 0.049 into the plate's hull and nowhere
+// near its material: the hulls' depth is within the tolerance, so no pair
+// measures the plate's convexity, and a part not known convex does not make
+// the hull depth a lower bound: the solids, apart, are not "inconsistent".
+TEST(StepAssemblies, AHullDepthOfPartsNotKnownConvexBoundsNothingFromBelow) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(dir + "post.step",
+                               {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+                                {"post", {Kind::kBox, {2, 2, 10}}, Vec3(9, 9, 5 - 0.049)}});
+  std::ofstream(dir + "post.json")
+      << R"({"units": "mm", "tolerance": 0.05, "parts": [{"id": "s", "mesh": "post.step"}]})";
+  const auto r = pdcheck(dir + "post.json --no-cache -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_EQ(report["pairs"].size(), 1u);
+  const json& pair = report["pairs"][0];
+  for (const json& part : report["parts"]) EXPECT_FALSE(part.contains("convex")) << part.dump();
+  EXPECT_EQ(pair["exact"]["verdict"], "separated") << pair.dump();
+  EXPECT_EQ(pair["status"], "separated") << pair.dump();
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

@@ -336,7 +336,8 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
     c.sag = std::max(pa.brep->tessellation.sag, pb.brep->tessellation.sag);
     c.bounds = bound_widening(pa, pb).has_value();
     c.clearance = pc.clearance;
-    mesh[k] = mesh_bracket(r, pa.convex.value_or(true) && pb.convex.value_or(true));
+    // A convexity left unmeasured (no pair turned on it) is not known convex.
+    mesh[k] = mesh_bracket(r, pa.convex.value_or(false) && pb.convex.value_or(false));
     auto e = certify_by_bound(r, mesh[k], c, r.distance);
     // Surfaces that meet (the thickness measured): no gap will show them apart.
     if (!e && r.depth_bounds) e = certify_within_tolerance(r, c);

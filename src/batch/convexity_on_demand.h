@@ -1,6 +1,6 @@
 // Between the hull stage and the refinement: the convexity of the pieces auto
-// mesh parts (Part::convexity_on_demand), measured where a pair's verdict
-// turns on it and nowhere else.
+// parts, mesh files and B-rep alike (Part::convexity_on_demand), measured
+// where a pair's verdict turns on it and nowhere else.
 //
 // A part's convexity decides only pairs whose hulls interfere beyond the
 // tolerance: such a pair with a nonconvex part is decided on the surfaces, one
@@ -10,7 +10,8 @@
 // alike for every pair they share (and report the same thing of it):
 // - a pair that needs pieces (a clearance check, a `decompose` part): every
 //   on-demand part, since each nonconvex one is decomposed;
-// - a pair with a part already known nonconvex (decompose, B-rep): none;
+// - a pair with a part already known nonconvex (decompose, or measured for
+//   another pair): none;
 // - otherwise its on-demand parts one by one, the likelier nonconvex first
 //   (more vertices read per hull vertex: a bearing ring before its balls; the
 //   ring is nonconvex and the balls' pairs are then decided on the surfaces

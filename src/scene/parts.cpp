@@ -170,11 +170,11 @@ bool keeps_surface(Pieces p) {
 
 // A pieces auto mesh part's convexity decides only pairs whose hulls
 // interfere, and only when the other part is convex too: the batch stage
-// measures it when such a pair needs it (scene/part_convexity.h). B-rep parts
-// and decompose keep measuring here. The loader's side of
-// Part::convexity_on_demand (a B-rep file is the one with a tessellation).
-bool convexity_left_for_pairs(const PartSpec& spec, const MeshFile& f) {
-  return spec.pieces == Pieces::kAuto && !f.tessellation && f.deflection == 0;
+// measures it when such a pair needs it (scene/part_convexity.h), B-rep parts
+// as well; decompose parts keep measuring here. The loader's side of
+// Part::convexity_on_demand.
+bool convexity_left_for_pairs(const PartSpec& spec) {
+  return spec.pieces == Pieces::kAuto;
 }
 
 // Whether a placement stretches every length alike (units and a rotation):
@@ -351,7 +351,7 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
       // own stretch (a sole instance placed without stretch is measured on its
       // placed mesh). Voids count at the strictest instance's tolerance; the
       // estimate stops once it is nonconvex for the most lenient one.
-      if (convexity_left_for_pairs(spec, f)) {
+      if (convexity_left_for_pairs(spec)) {
         f.concavity = std::numeric_limits<double>::quiet_NaN();  // unmeasured
       } else {
         const StoredConvexity c = convexity_of(spec, f, meshes[0], f.concavity_tol, cache.dir);
@@ -477,7 +477,7 @@ bool settled_from_cache(const PartSpec& spec, MeshFile& f, double concavity_tol,
   settle_hulls(f, concavity_tol, auto_tol);
   if (!keeps_surface(spec.pieces)) return true;
   if (f.counts.size() != 1 || !cache.meshes || !cache.meshes->has(f.hash)) return false;
-  if (convexity_left_for_pairs(spec, f)) {
+  if (convexity_left_for_pairs(spec)) {
     f.concavity = std::numeric_limits<double>::quiet_NaN();
     f.stored = StoredMesh{cache.meshes, f.hash};
     return true;

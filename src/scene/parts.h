@@ -102,7 +102,7 @@ struct Part {
 
   /// A pieces auto mesh part: its convexity is measured only where a pair's
   /// verdict turns on it (batch/convexity_on_demand.h), so `convex` may stay unset.
-  bool convexity_on_demand() const { return surface && mode == Pieces::kAuto && !brep; }
+  bool convexity_on_demand() const { return surface && mode == Pieces::kAuto; }
 
   long hull_vertex_count() const;
 };
