@@ -182,6 +182,21 @@ TEST(BrepConfirm, TheSolidsDecideWhereTheyAgreeWithTheWidenedBracket) {
   EXPECT_EQ(r.exact->verdict, ExactVerdict::kSeparated);
   EXPECT_DOUBLE_EQ(*r.distance, 0.1);
 
+  // A depth the hulls measured is a move, which the solids' thickness bounds
+  // from below only: thinner than the move (a ball buried in a block), not
+  // inconsistent, and within the tolerance not a false positive; thicker than
+  // the tolerance, an interference.
+  r = result(Status::kInterference, 12.97);
+  pd::decide_exact(r, {12.97, 12.97}, context(12.95, 0.04), measure(0.0, 6.0, 6.0));
+  EXPECT_EQ(r.exact->verdict, ExactVerdict::kFailed);
+  EXPECT_FALSE(r.exact->depth_bounds);
+  EXPECT_EQ(r.status, Status::kInterference);
+  EXPECT_DOUBLE_EQ(r.depth, 12.97);
+  r = result(Status::kInterference, 12.97);
+  pd::decide_exact(r, {12.97, 12.97}, context(5.0, 0.04), measure(0.0, 6.0, 6.0));
+  EXPECT_EQ(r.exact->verdict, ExactVerdict::kInterference);
+  EXPECT_EQ(r.status, Status::kInterference);
+
   // A failure keeps the mesh verdict with its reason.
   r = result(Status::kFalsePositive, 0.01);
   ExactMeasure failed;

@@ -167,6 +167,63 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
   EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.02);
 }
 
+// The same shaft pressed into the bore, 0.008 over it: the meshes overlap,
+// and the overlap's deepest points lie in both parts, near the bore; the
+// groove, outside the plate, cannot move them.
+TEST(StepAssemblies, AnOverlapIsWidenedOnlyByTheFacesInOrNearTheOtherPart) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(
+      dir + "press.step",
+      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+       {"shaft", {Kind::kShaftWithGroove, {4.008, 40, 1.5, 30}}, Vec3(10, 10, -5)}});
+  std::ofstream(dir + "press.json") << R"({"units": "mm", "tolerance": 0.03, "deflection": 0.0125,
+      "parts": [{"id": "s", "mesh": "press.step"}]})";
+  const auto r = pdcheck(dir + "press.json --no-cache -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_EQ(report["pairs"].size(), 1u);
+  const json& pair = report["pairs"][0];
+  double shaft_sag = 0.0;
+  for (const json& part : report["parts"])
+    if (part["id"] == "s/shaft") shaft_sag = part["tessellation"]["sag"];
+  ASSERT_EQ(pair["status"], "false_positive") << pair.dump();
+  const double lo = pair["depth_bounds"][0], hi = pair["depth_bounds"][1];
+  EXPECT_GT(lo, 0.0);
+  ASSERT_GT(hi + 2.0 * shaft_sag, 0.03) << pair.dump();  // the groove's sag would not do
+  EXPECT_EQ(pair["exact"]["by"], "deflection-bound") << pair.dump();
+  EXPECT_EQ(pair["exact"]["verdict"], "false_positive") << pair.dump();
+  EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.03);
+}
+
+// A ball of radius 3 buried in a block, 7 from every face of it: both convex,
+// so the depth is the move that frees the ball, 13 (the mesh's inscribed ball
+// comes out by up to its sag less), while the solids' overlap is the ball, 6
+// thick. Against a tolerance just below 13 the bound cannot decide, and the
+// solids' thickness, a lower bound of the move, neither contradicts the depth
+// nor makes it a false positive.
+TEST(StepAssemblies, ABuriedBallsThicknessIsNotItsDepth) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(
+      dir + "buried.step",
+      {{"block", {Kind::kBox, {20, 20, 20}}}, {"ball", {Kind::kSphere, {3}}, Vec3(10, 10, 10)}});
+  std::ofstream(dir + "buried.json") << R"({"units": "mm", "tolerance": 12.95, "deflection": 0.05,
+      "parts": [{"id": "s", "mesh": "buried.step"}]})";
+  const auto r = pdcheck(dir + "buried.json --no-cache -q");
+  ASSERT_EQ(r.code, 1) << r.err;
+  const json report = json::parse(r.out);
+  ASSERT_EQ(report["pairs"].size(), 1u) << r.out;
+  const json& pair = report["pairs"][0];
+  ASSERT_EQ(pair["status"], "interference") << pair.dump();
+  ASSERT_GT(pair["depth"].get<double>(), 12.95) << pair.dump();
+  ASSERT_LT(pair["depth"].get<double>(), 13.0) << pair.dump();
+  EXPECT_NE(pair["exact"]["verdict"], "inconsistent") << pair.dump();
+  EXPECT_NE(pair["exact"]["verdict"], "false_positive") << pair.dump();
+  if (pair["exact"].contains("depth_bounds")) {
+    EXPECT_LE(pair["exact"]["depth_bounds"][0].get<double>(), 13.0) << pair.dump();
+    EXPECT_GE(pair["exact"]["depth_bounds"][1].get<double>(), 13.0) << pair.dump();
+  }
+}
+
 // A post standing in a plate's bore, 0.049 into the plate's hull and nowhere
 // near its material: the hulls' depth is within the tolerance, so no pair
 // measures the plate's convexity, and a part not known convex does not make

@@ -8,6 +8,8 @@
 #include "batch/pair_tolerance.h"
 #include "batch/progress.h"
 #include "byte_cache.h"
+#include "geometry/convexity.h"
+#include "geometry/ray_parity.h"
 #include "geometry/surface_gap.h"
 #include "parallel_for.h"
 #include "scene/units.h"
@@ -123,9 +125,13 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
       e.reason = why;
     }
   } else {
+    // A depth the hulls measured is the move that frees the pair: the solids'
+    // overlap thickness bounds it from below only (a ball buried in a block is
+    // its diameter thick, its move out is half the block's width and more).
+    const bool depth_is_move = r.depth_source == "hull";
     double lo = m.lower, hi = m.upper ? *m.upper : INFINITY;
     if (c.bounds) hi = std::min(hi, mesh[1] + 2.0 * c.sag);  // certified already
-    if (lo > mesh_hi + touch || (m.upper && *m.upper + touch < mesh_lo)) {
+    if (lo > mesh_hi + touch || (m.upper && !depth_is_move && *m.upper + touch < mesh_lo)) {
       std::snprintf(why, sizeof why,
                     "the solids' thickness is within [%.6g, %.6g], the meshes' within "
                     "[%.6g, %.6g] with the sags",
@@ -141,8 +147,16 @@ void decide_exact(PairResult& r, const std::array<double, 2>& mesh, const ExactC
       e.depth_bounds = {{0.0, 0.0}};
     } else if (lo > c.tolerance + band) {
       e.verdict = ExactVerdict::kInterference;
-    } else if (hi <= c.tolerance + band) {
+    } else if (hi <= c.tolerance + band && !depth_is_move) {
       e.verdict = ExactVerdict::kFalsePositive;
+    } else if (hi <= c.tolerance + band) {
+      e.verdict = ExactVerdict::kFailed;
+      std::snprintf(why, sizeof why,
+                    "the solids' thickness is within [%.6g, %.6g], within the tolerance, and "
+                    "bounds from below only the move that frees them, the pair's depth",
+                    lo, hi);
+      e.reason = why;
+      e.depth_bounds.reset();  // of the thickness, not of the depth
     } else {
       e.verdict = m.common_timed_out ? ExactVerdict::kTimeout : ExactVerdict::kFailed;
       if (!m.common_error.empty()) {
@@ -250,27 +264,69 @@ struct GapSurface {
   TriangleTree tree;
   /// Per triangle, its face's sag (scene units); empty when not known.
   std::vector<double> sags;
+  std::vector<int> shell;  ///< per triangle, its shell (for the inside test)
+  int shells = 0;
+  bool closed = false;  ///< every edge used by an even number of triangles
+  Aabb box;             ///< of the corners
   GapSurface(const Mesh& mesh, const Part& p) {
     triangles.resize(size_t(mesh.triangles.cols()));
     for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t)
       for (int k = 0; k < 3; ++k)
         triangles[size_t(t)][size_t(k)] = mesh.vertices.col(mesh.triangles(k, t));
     tree = TriangleTree(triangles);
+    if (mesh.vertices.cols() > 0) box = Aabb::of(mesh.vertices);
+    const std::vector<std::vector<int>> of_shell = shell_triangles(mesh);
+    shells = int(of_shell.size());
+    shell.assign(triangles.size(), 0);
+    for (size_t s = 0; s < of_shell.size(); ++s)
+      for (int t : of_shell[s]) shell[size_t(t)] = int(s);
+    closed = every_edge_paired(mesh);
     if (p.surface && p.surface->stored && p.surface->stored->store && p.brep)
       if (auto s = p.surface->stored->store->get_sags(p.surface->stored->key))
         if (s->size() == triangles.size())
           for (float x : *s) sags.push_back(double(x) * p.brep->stretch);
   }
   size_t bytes() const {  // the corners, and the tree about as much again
-    return triangles.size() * (2 * sizeof(triangles[0]) + sizeof(double)) + (64u << 10);
+    return triangles.size() * (2 * sizeof(triangles[0]) + sizeof(double) + sizeof(int)) +
+           (64u << 10);
+  }
+  /// Whether q may lie inside the solid: strictly inside one of its shells,
+  /// or anywhere in its box when the mesh is open (parity means nothing).
+  bool may_hold(const Vec3& q) const {
+    if ((q.array() < box.lo.array()).any() || (q.array() > box.hi.array()).any()) return false;
+    if (!closed) return true;
+    std::vector<RaySide> sides(size_t(std::max(shells, 1)));
+    ray_parity_sides(tree, shell, box.lo, box.hi, q, sides.data(), sides.size());
+    return std::any_of(sides.begin(), sides.end(),
+                       [](RaySide s) { return s != RaySide::kOutside; });
+  }
+
+ private:
+  static bool every_edge_paired(const Mesh& m) {
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(size_t(3 * m.triangles.cols()));
+    for (Eigen::Index t = 0; t < m.triangles.cols(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int u = m.triangles(k, t), v = m.triangles((k + 1) % 3, t);
+        edges.emplace_back(std::min(u, v), std::max(u, v));
+      }
+    std::sort(edges.begin(), edges.end());
+    for (size_t i = 0; i < edges.size();) {
+      size_t j = i;
+      while (j < edges.size() && edges[j] == edges[i]) ++j;
+      if ((j - i) % 2) return false;
+      i = j;
+    }
+    return !edges.empty();
   }
 };
 
 // The largest face sag of `own`'s triangles within `reach` of `other`'s
-// surface (scene units), or `everywhere` when its faces' sags are not known.
-// A pair apart or touching is decided by points near both surfaces: a face
-// sag far from the other part (a fillet away from a seated bore) cannot move
-// them (docs/solver.md, "Where the sag is").
+// solid — near its surface or inside it — (scene units), or `everywhere` when
+// its faces' sags are not known. Only points in or near both solids decide a
+// pair's depth, overlap or gap; a face sag away from the other part (a fillet
+// away from a seated bore, a pulley's rim away from its hub) cannot move them
+// (docs/solver.md, "Where the sag is").
 double sag_near(const GapSurface& own, const GapSurface& other, double reach, double everywhere) {
   if (own.sags.empty()) return everywhere;
   double worst = 0.0;
@@ -282,7 +338,9 @@ double sag_near(const GapSurface& own, const GapSurface& other, double reach, do
     const Vec3 hi = tri[0].cwiseMax(tri[1]).cwiseMax(tri[2]).array() + reach;
     near.clear();
     other.tree.in_turned_box(Eigen::Matrix3d::Identity(), Vec3::Zero(), lo, hi, near, 0);
-    if (!near.empty()) worst = own.sags[t];
+    // Farther than `reach` from the other's surface, the triangle lies wholly
+    // on one side of it: one corner tells which.
+    if (!near.empty() || other.may_hold(tri[0])) worst = own.sags[t];
   }
   return worst;
 }
@@ -351,14 +409,15 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
   }
   if (to_measure.empty()) return;
 
-  // Pairs apart or touching with certified sags: the gap between their
-  // meshes, else the contact within the tolerance, before any solid.
+  // Pairs with certified sags, before any solid: the sags of the faces in or
+  // near the other part only; for pairs apart or touching, the gap between
+  // their meshes, else the contact within the tolerance.
   {
     std::vector<size_t> gapped, rest;
     for (size_t k : to_measure) {
       const Status s = results[k].status;
       const bool apart = s == Status::kSeparated || s == Status::kClearanceViolation;
-      (context[k].bounds && apart ? gapped : rest).push_back(k);
+      (context[k].bounds && (apart || results[k].depth_bounds) ? gapped : rest).push_back(k);
     }
     ByteCache<int, GapSurface> surfaces(size_t(std::max(0.0, options.memory_mb)) << 20);
     const auto surface_of = [&](int p) {
@@ -373,9 +432,10 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
       const auto [a, b] = pairs[k];
       const PairResult& r = results[k];
       ExactContext& c = context[k];
+      const bool apart = r.status == Status::kSeparated || r.status == Status::kClearanceViolation;
       // The hull stage's direction first: its slab often certifies alone.
-      double gap = slab_gap(parts[a], parts[b], r.direction);
-      certified[n] = certify_by_bound(r, mesh[k], c, gap);
+      double gap = apart ? slab_gap(parts[a], parts[b], r.direction) : 0.0;
+      if (apart) certified[n] = certify_by_bound(r, mesh[k], c, gap);
       if (certified[n] || !parts[a].surface || !parts[b].surface) {
         if (!certified[n]) certified[n] = certify_within_tolerance(r, c);
         return;
@@ -387,18 +447,19 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
       } catch (const std::exception&) {  // no surface to read: the solids decide
         return;
       }
-      // Only the sags of faces near both surfaces can move what decides a pair
-      // apart or touching: points within the bracket's half and both sags of
-      // each surface. (A clearance violation may overlap: its whole sags stay.)
-      if (r.status == Status::kSeparated) {
+      // Only the sags of faces in or near the other part can move what decides
+      // a pair: a deepest point lies in both solids, nearest points of a gap
+      // within it and the sags of both (docs/solver.md, "Where the sag is").
+      {
         const double hi = r.depth_bounds ? (*r.depth_bounds)[1] : 0.0;
         const double reach =
             2.0 * (hi + 6.0 * c.sag + 1.25 * c.clearance.value_or(0.0)) + touch_of(c);
         c.sag = std::min(
             c.sag, std::max(sag_near(*sa, *sb, reach, c.sag), sag_near(*sb, *sa, reach, c.sag)));
       }
-      certified[n] = certify_by_bound(r, mesh[k], c, gap);
-      if (!certified[n] && (r.depth_source == "mesh-test" || r.depth_source == "hull")) {
+      certified[n] =
+          certify_by_bound(r, mesh[k], c, apart ? std::optional<double>(gap) : r.distance);
+      if (!certified[n] && apart && (r.depth_source == "mesh-test" || r.depth_source == "hull")) {
         // Surfaces that do not meet, neither inside the other: their own gap
         // (at least the hulls'), sharpened until it certifies (beyond both sags
         // and the clearance, with room for its slack) or cannot.
