@@ -1,5 +1,6 @@
 // B-rep files as the mesh loader hands files over (scene/mesh_loader.h):
 // their leaf instances as meshes named by node paths.
+#include <cstdio>
 #include <stdexcept>
 
 #include "scene/mesh_loader.h"
@@ -50,26 +51,32 @@ NodeMeshes load_brep_meshes(const std::string& path, double deflection, bool by_
   }
   if (warnings) warnings->insert(warnings->end(), f.warnings.begin(), f.warnings.end());
   NodeMeshes out;
-  if (by_node) {
-    out.nodes = leaf_paths(f);
-    for (BrepLeaf& l : f.leaves) {
-      out.meshes.push_back(std::move(l.mesh));
-      out.tessellations.push_back(l.tessellation);
-      out.triangle_sags.push_back(std::move(l.triangle_sags));
-      out.leaf_errors.push_back(l.error.value_or(""));
-    }
-    return out;
+  out.nodes = leaf_paths(f);
+  for (BrepLeaf& l : f.leaves) {
+    out.meshes.push_back(std::move(l.mesh));
+    out.tessellations.push_back(l.tessellation);
+    out.triangle_sags.push_back(std::move(l.triangle_sags));
+    out.leaf_errors.push_back(l.error.value_or(""));
   }
-  std::vector<Mesh> meshes;
+  return by_node ? out : join_brep_leaves(std::move(out));
+}
+
+std::string brep_read_key(const std::string& path, double deflection) {
+  char d[32];
+  std::snprintf(d, sizeof d, "%.17g|", deflection);
+  return d + path;
+}
+
+NodeMeshes join_brep_leaves(NodeMeshes by_node) {
+  NodeMeshes out;
   Tessellation t;
   std::vector<float> sags;  // in join_meshes' order: the leaves' triangles one after another
-  for (size_t k = 0; k < f.leaves.size(); ++k) {
-    if (f.leaves[k].error) throw MeshError(*f.leaves[k].error);
-    t = k == 0 ? f.leaves[k].tessellation : combine(t, f.leaves[k].tessellation);
-    meshes.push_back(std::move(f.leaves[k].mesh));
-    sags.insert(sags.end(), f.leaves[k].triangle_sags.begin(), f.leaves[k].triangle_sags.end());
+  for (size_t k = 0; k < by_node.meshes.size(); ++k) {
+    if (!by_node.leaf_errors[k].empty()) throw MeshError(by_node.leaf_errors[k]);
+    t = k == 0 ? by_node.tessellations[k] : combine(t, by_node.tessellations[k]);
+    sags.insert(sags.end(), by_node.triangle_sags[k].begin(), by_node.triangle_sags[k].end());
   }
-  out.meshes = {join_meshes(meshes)};
+  out.meshes = {join_meshes(by_node.meshes)};
   out.tessellations = {t};
   if (long(sags.size()) == out.meshes[0].triangles.cols()) out.triangle_sags = {std::move(sags)};
   out.leaf_errors = {""};

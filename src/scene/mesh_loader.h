@@ -60,6 +60,12 @@ NodeMeshes read_node_meshes(std::string_view bytes, const std::string& extension
 NodeMeshes load_brep_meshes(const std::string& path, double deflection, bool by_node,
                             std::vector<std::string>* warnings = nullptr);
 
+/// load_brep_meshes' one mesh of a file's leaves (`by_node` false) from its
+/// meshes by node: the meshes joined, their tessellations combined, the
+/// triangles' sags in the joined order; a leaf that cannot be checked is the
+/// file's error (MeshError).
+NodeMeshes join_brep_leaves(NodeMeshes by_node);
+
 /// One mesh of `pieces`: vertices concatenated, triangle indices offset.
 Mesh join_meshes(const std::vector<Mesh>& pieces);
 
@@ -85,6 +91,8 @@ constexpr double kDefaultLoadTimeout = 60.0;
 constexpr double kAutoLoadMemory = -1.0;
 
 /// One file for load_meshes_isolated.
+struct LoadedMeshes;
+
 struct MeshRequest {
   std::string path;
   bool split_instances = false;
@@ -95,7 +103,14 @@ struct MeshRequest {
   bool node_names_only = false;
   /// B-rep files: the linear deflection to mesh them at (file units).
   double deflection = 0.0;
+  /// The file as this process read it already, by node at `deflection`
+  /// (split_node_parts: SceneSpec::brep_reads): a loader, forked from this
+  /// process, takes it as read (joined when not `by_node`) and reads nothing.
+  const LoadedMeshes* read = nullptr;
 };
+
+/// The key of a B-rep file read at a deflection (SceneSpec::brep_reads).
+std::string brep_read_key(const std::string& path, double deflection);
 
 /// What load_meshes returned, or why the file cannot be used (names the file).
 struct LoadedMeshes {

@@ -56,7 +56,8 @@ void put_strings(std::string& out, const std::vector<std::string>& list) {
 std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::string>& warnings,
                    const std::vector<std::string>& nodes,
                    const std::vector<Tessellation>& tessellations = {},
-                   const std::vector<std::string>& leaf_errors = {}) {
+                   const std::vector<std::string>& leaf_errors = {},
+                   const std::vector<std::vector<float>>& triangle_sags = {}) {
   size_t bytes = 1 + 8;
   for (const Mesh& m : meshes)
     bytes += 16 + m.vertices.size() * sizeof(double) + m.triangles.size() * sizeof(int);
@@ -76,6 +77,11 @@ std::string encode(const std::vector<Mesh>& meshes, const std::vector<std::strin
   put(out, std::uint64_t(tessellations.size()));
   for (const Tessellation& t : tessellations) put(out, t);
   put_strings(out, leaf_errors);
+  put(out, std::uint64_t(triangle_sags.size()));
+  for (const std::vector<float>& v : triangle_sags) {
+    put(out, std::uint64_t(v.size()));
+    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float));
+  }
   return out;
 }
 
@@ -136,6 +142,15 @@ LoadedMeshes decode(const std::string& payload) {
   for (std::uint64_t k = 0; k < tessellations; ++k)
     out.tessellations.push_back(r.get<Tessellation>());
   out.leaf_errors = r.strings();
+  const auto sagged = r.get<std::uint64_t>();
+  if (sagged > payload.size()) throw std::runtime_error("malformed answer from the loader process");
+  for (std::uint64_t k = 0; k < sagged; ++k) {
+    const auto n = r.get<std::uint64_t>();
+    if (n > payload.size()) throw std::runtime_error("malformed answer from the loader process");
+    std::vector<float> v(n);
+    r.take(v.data(), n * sizeof(float));
+    out.triangle_sags.push_back(std::move(v));
+  }
   return out;
 }
 
@@ -171,6 +186,17 @@ LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb) {
   LoadedMeshes out;
   try {
     const bool brep = is_brep_path(f.path);
+    if (f.read) {  // read by node already, in the process this loader was forked from
+      if (f.by_node) return *f.read;
+      NodeMeshes joined = join_brep_leaves({f.read->meshes, f.read->nodes, f.read->tessellations,
+                                            f.read->leaf_errors, f.read->triangle_sags});
+      out.warnings = f.read->warnings;
+      out.meshes = std::move(joined.meshes);
+      out.tessellations = std::move(joined.tessellations);
+      out.leaf_errors = std::move(joined.leaf_errors);
+      out.triangle_sags = std::move(joined.triangle_sags);
+      return out;
+    }
     if (!f.by_node && !brep) {
       out.meshes = load_meshes(f.path, f.split_instances, &out.warnings);
       return out;
@@ -270,7 +296,8 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
   std::vector<LoadedMeshes> out(files.size());
   auto digest = [](size_t, LoadedMeshes&& read) {
     if (read.error) return "E" + *read.error;
-    return encode(read.meshes, read.warnings, read.nodes, read.tessellations, read.leaf_errors);
+    return encode(read.meshes, read.warnings, read.nodes, read.tessellations, read.leaf_errors,
+                  read.triangle_sags);
   };
   auto take = [&](size_t k, std::string&& payload) {
     try {

@@ -1,6 +1,5 @@
 #include "scene/parts.h"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -23,6 +22,7 @@
 #include "scene/convexity_cache.h"
 #include "scene/hull_cache.h"
 #include "scene/mesh_loader.h"
+#include "scene/placement.h"
 #include "scene/setup_warnings.h"
 #include "scene/split_nodes.h"
 #include "scene/units.h"
@@ -56,30 +56,6 @@ long Part::hull_vertex_count() const {
 }
 
 namespace {
-
-// File coordinates to scene units: the unit conversion, then the transform.
-Mat4 placement(const PartSpec& spec) {
-  Mat4 m = spec.transform;
-  m.topLeftCorner<3, 3>() *= spec.to_scene_units;
-  return m;
-}
-
-// The placement's stretch factors, largest first.
-Vec3 stretches(const Mat4& placement) {
-  return Eigen::JacobiSVD<Eigen::Matrix3d>(placement.topLeftCorner<3, 3>()).singularValues();
-}
-
-// The largest factor by which the placement stretches a length.
-double stretch(const Mat4& placement) {
-  return stretches(placement)(0);
-}
-
-// A B-rep part's linear deflection in its file's units (0 for a mesh file):
-// the scene's length over the placement's largest stretch.
-double file_deflection(const SceneSpec& scene, const PartSpec& spec) {
-  if (!spec.mesh || !is_brep_path(*spec.mesh)) return 0.0;
-  return brep_deflection(scene, spec) / stretch(placement(spec));
-}
 
 std::string instance_key(const PartSpec& s, double deflection) {
   std::ostringstream k;
@@ -695,6 +671,12 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   for (size_t f = 0; f < distinct.files; ++f) {
     const PartSpec& spec = *file_spec[f];
     const double deflection = mesh_files[f].deflection;
+    // A B-rep file split_node_parts read whole at this deflection is not read again.
+    const auto read_already = [&](const PartSpec& p) -> const LoadedMeshes* {
+      if (!scene.brep_reads || deflection == 0) return nullptr;
+      const auto it = scene.brep_reads->find(brep_read_key(*p.mesh, deflection));
+      return it == scene.brep_reads->end() ? nullptr : &it->second;
+    };
     // A B-rep file is always read: its tessellation is in no cache.
     if (cached_hulls(spec, mesh_files[f], with_store) &&
         settled_from_cache(spec, mesh_files[f], concavity_tol, with_store, auto_tol)) {
@@ -707,13 +689,14 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       key << deflection << '|' << *spec.mesh;
       const auto [it, fresh] = by_node.emplace(key.str(), requests.size());
       if (fresh) {
-        requests.push_back({*spec.mesh, true, true, false, deflection});
+        requests.push_back({*spec.mesh, true, true, false, deflection, read_already(spec)});
         requested.emplace_back();
       }
       requested[it->second].push_back(f);
       continue;
     }
-    requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection});
+    requests.push_back(
+        {*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection, read_already(spec)});
     requested.push_back({f});
   }
   if (!requests.empty()) {

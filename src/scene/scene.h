@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,6 +20,8 @@
 #include "user_error.h"
 
 namespace pd {
+
+struct LoadedMeshes;  // scene/mesh_loader.h
 
 /// An unusable scene or bad usage (exit code 2). The message names the file and
 /// the JSON path of the offending field.
@@ -138,12 +142,20 @@ struct SceneSpec {
   Checks checks;
   std::optional<Rules> rules;  ///< the scene's `rules`, or --rules FILE
   bool part_list = false;      ///< read from a plain part list (parse_part_list), not a scene JSON
+  /// The B-rep files split_node_parts read, meshed by node at their parts'
+  /// deflection (key brep_read_key): the parts stage's loaders, forked from
+  /// this process, take them as read instead of reading the files again.
+  std::shared_ptr<const std::map<std::string, LoadedMeshes>> brep_reads;
 };
 
 /// The linear deflection a B-rep part is meshed at (scene units): its own
 /// `deflection`, else the scene's, else tol::kDeflectionFraction of the scene's
 /// tolerance, else (tolerance auto) tol::kAutoDeflectionMm in the scene's unit.
 double brep_deflection(const SceneSpec& s, const PartSpec& p);
+
+/// The same in the part's file units (0 for a mesh file): brep_deflection over
+/// its placement's largest stretch.
+double file_deflection(const SceneSpec& s, const PartSpec& p);
 
 /// Why the scene gives nothing to check, when it has no part: a scene whose
 /// `parts` is empty, or a part list without a path (a failed export upstream).

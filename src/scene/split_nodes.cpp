@@ -1,6 +1,7 @@
 #include "scene/split_nodes.h"
 
 #include <map>
+#include <memory>
 
 #include "file_hash.h"
 #include "scene/node_names.h"
@@ -81,17 +82,30 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
         f.nodes = std::move(*hit);
         continue;
       }
-    requests.push_back({*p.mesh, true, true, true});
+    // A B-rep file is read whole, meshed at its parts' deflection: reading it
+    // is most of meshing it, and the parts stage takes it from here.
+    const double deflection = file_deflection(s, p);
+    requests.push_back({*p.mesh, true, true, deflection == 0, deflection});
     hashes.push_back(hash);
   }
   if (files.empty()) return;
   std::vector<LoadedMeshes> read =
       load_meshes_isolated(requests, load.threads, load.timeout, load.memory_mb, load.before_load);
+  auto whole = std::make_shared<std::map<std::string, LoadedMeshes>>();
   for (size_t r = 0; r < read.size(); ++r) {
-    if (!read[r].error && !hashes[r].empty())
-      write_cached_node_names(load.cache_dir, node_names_key(hashes[r]), read[r].nodes);
-    files[requests[r].path] = std::move(read[r]);
+    LoadedMeshes& got = read[r];
+    if (!requests[r].node_names_only && !got.error) {  // kept whole; the split takes the names
+      LoadedMeshes names;
+      for (const std::string& n : got.nodes)  // a node's meshes come together
+        if (names.nodes.empty() || names.nodes.back() != n) names.nodes.push_back(n);
+      whole->emplace(brep_read_key(requests[r].path, requests[r].deflection), std::move(got));
+      got = std::move(names);
+    }
+    if (!got.error && !hashes[r].empty())
+      write_cached_node_names(load.cache_dir, node_names_key(hashes[r]), got.nodes);
+    files[requests[r].path] = std::move(got);
   }
+  if (!whole->empty()) s.brep_reads = whole;
 
   std::vector<PartSpec> parts;
   parts.reserve(s.parts.size());
