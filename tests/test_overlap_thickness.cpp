@@ -216,6 +216,28 @@ TEST(OverlapThickness, FarFromTheOriginInFloat32StaysDecided) {
       << r.lower << " " << exact << " " << r.upper;
 }
 
+// Meshes in doubles far from the origin (B-rep meshes): the float32 steps
+// there make anything thinner than ~0.02 a contact, unless the caller asks for
+// a finer resolution; the bracket is then narrowed to it.
+TEST(OverlapThickness, AFinerResolutionNarrowsAThinBracketToIt) {
+  const Vec3 far(35000, 12000, -800);
+  const Mesh plate = sh::translated(sh::plate_with_hole(40, 6, 5, 32), far);
+  const Mesh pin = sh::translated(sh::prism(sh::circle({0, 0}, 5, 32, M_PI / 32), -4, 10), far);
+  const SolidDistance a(pin), b(plate);
+  const ThicknessResult coarse = overlap_thickness(a, b, 0.05);
+  ASSERT_EQ(coarse.outcome, Outcome::kBelow);
+  EXPECT_GT(coarse.resolution, 0.01);
+  pd::ThicknessLimits limits;
+  limits.resolution = coarse.resolution / 16;
+  const ThicknessResult fine = overlap_thickness(a, b, 0.05, INFINITY, limits);
+  EXPECT_EQ(fine.outcome, Outcome::kBelow);
+  EXPECT_EQ(fine.resolution, *limits.resolution);
+  EXPECT_TRUE(fine.upper <= *limits.resolution || fine.lower > *limits.resolution)
+      << fine.lower << " " << fine.upper;
+  const double exact = half_step_pin_thickness(5, 32);
+  EXPECT_TRUE(brackets(fine, exact, 1e-9)) << fine.lower << " " << exact << " " << fine.upper;
+}
+
 TEST(OverlapThickness, MultiBodyBoltIsTheUnionOfItsShells) {
   // Head and shank as two closed bodies face to face (as multi-body exports
   // write them); the block overlaps both across the shared face, where the

@@ -79,9 +79,11 @@ ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance
 }
 
 ThicknessResult thickness_again(const SolidDistance& a, const SolidDistance& b,
-                                const ThicknessResult& t, double threshold, double tolerance) {
+                                const ThicknessResult& t, double threshold, double tolerance,
+                                const ThicknessLimits& limits) {
   using Outcome = ThicknessResult::Outcome;
-  ThicknessResult again = overlap_thickness(a, b, threshold, t.upper);
+  ThicknessResult again = overlap_thickness(a, b, threshold, t.upper, limits);
+  again.resolution = t.resolution;  // what the coordinates resolve: what is touching
   again.evaluations += t.evaluations;
   again.cells += t.cells;
   if (!(again.lower > t.lower)) {  // keep the better lower bound with its witness

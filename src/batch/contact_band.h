@@ -62,8 +62,9 @@ ThicknessResult thickness_at_contact(const SolidDistance& a, const SolidDistance
 /// A bracket `t` (decided against `tolerance`) narrowed once more against a
 /// lower `threshold`, warm (t's upper end as the hint), and merged: the higher
 /// lower bound with its witness, the lower upper bound, the outcome said
-/// against `tolerance` again.
+/// against `tolerance` again, t's resolution kept (`limits` may search finer).
 ThicknessResult thickness_again(const SolidDistance& a, const SolidDistance& b,
-                                const ThicknessResult& t, double threshold, double tolerance);
+                                const ThicknessResult& t, double threshold, double tolerance,
+                                const ThicknessLimits& limits = {});
 
 }  // namespace pd

@@ -361,9 +361,19 @@ ThicknessResult measure_thickness(const SolidDistance& a, const SolidDistance& b
     if (!whole) deepest(-INFINITY);
     return v.vertex_at;
   });
+  // B-rep meshes are doubles: the search may narrow below the float32 steps
+  // that make a mesh file's contact, down to what the bound needs. Only a
+  // bracket within a few times of it, with up to twice the work it took:
+  // past that the faces near the contact (the exact stage's local sags) or the
+  // solids decide for less.
+  const double target = widen ? tolerance - *widen : 0.0;
   if (widen && t.outcome == ThicknessResult::Outcome::kBelow && t.upper + *widen > tolerance &&
-      t.lower + *widen <= tolerance && tolerance - *widen > t.resolution)
-    t = thickness_again(a, b, t, tolerance - *widen, tolerance);
+      t.lower + *widen <= tolerance && target >= tol::kBoundNarrowing * t.upper) {
+    ThicknessLimits limits;
+    limits.resolution = target;
+    limits.max_evaluations = 2 * std::max(t.evaluations, tol::kThicknessBracketMinEvaluations);
+    t = thickness_again(a, b, t, target, tolerance, limits);
+  }
   // Only a point deeper than the tolerance and the coordinates' resolution
   // decides; and an overlap certified within the resolution is touching: a
   // part thinner than the resolution is not resolved either.

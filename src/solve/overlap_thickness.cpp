@@ -285,7 +285,7 @@ ThicknessResult overlap_thickness(const SolidDistance& a, const SolidDistance& b
                                   double upper_hint, const ThicknessLimits& limits) {
   using Outcome = ThicknessResult::Outcome;
   ThicknessResult res;
-  res.resolution = thickness_resolution(a, b);
+  res.resolution = limits.resolution.value_or(thickness_resolution(a, b));
   const double cap = 0.5 * upper_hint;  // on h
   // An interference's overlap is above the threshold and the resolution alike.
   const double bar = std::max(threshold, res.resolution);

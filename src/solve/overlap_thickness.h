@@ -18,6 +18,8 @@
 // docs/solver.md says why each bound is sound.
 #pragma once
 
+#include <optional>
+
 #include "geometry/solid_distance.h"
 #include "geometry/types.h"
 #include "tolerances.h"
@@ -27,6 +29,10 @@ namespace pd {
 struct ThicknessLimits {
   long max_evaluations = tol::kThicknessMaxEvaluations;
   double seconds = tol::kThicknessSeconds;
+  /// Replaces thickness_resolution(a, b) (float32 steps) where the parts'
+  /// coordinates are finer (B-rep meshes, in doubles) and the caller asks no
+  /// finer: a thin bracket is narrowed to it and no further.
+  std::optional<double> resolution;
 };
 
 struct ThicknessResult {
