@@ -438,6 +438,12 @@ inline constexpr int kSagPatchCells = 8;
 /// positive by the bound alone when hi + 2δ ≤ tolerance: at δ = tol/4, about
 /// 3δ ≤ tol with a quarter of the tolerance to spare for the bracket's width.
 inline constexpr double kDeflectionFraction = 0.25;
+/// Effort, not accuracy: a triangle of a B-rep face whose coarse sag bound
+/// would raise its face's sag is measured at the corners of this many cuts a
+/// side ((n + 1)(n + 2)/2 surface points), the remainder the coarse bound over
+/// n²: 4 gives 15 points and a sixteenth, within a quarter of the true error
+/// where the coarse bound can be twice it (geometry/interpolation_bound.h).
+inline constexpr int kSagRefineCuts = 4;
 /// Under tolerance auto, a B-rep part without a given deflection is meshed at
 /// this deflection in mm (its band then follows from the sags that gives):
 /// a 10 mm radius comes out in about 70 segments.

@@ -24,15 +24,13 @@
 #include "brep/spline_net.h"
 #include "geometry/interpolation_bound.h"
 #include "geometry/triangle_tree.h"
+#include "tolerances.h"
 
 namespace pd {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Cuts per side of a triangle whose bound is sharpened by measuring: 15
-// surface points, the remainder 1/16 of the coarse bound.
-constexpr int kRefine = 4;
 
 // Whether [a, b] holds a + k·period point `at` (mod period).
 bool holds(double a, double b, double at, double period) {
@@ -273,8 +271,8 @@ FaceSag face_sag(const TopoDS_Face& face, const Handle(Poly_Triangulation) & han
       // the coarse bound can be twice the error (a torus's, a spline's).
       if (std::isfinite(dev)) {
         if (dev + corner > triangles) {
-          const double sharp =
-              refined_interpolation_bound(at, m, kRefine, [&](const Eigen::Vector3d& w) {
+          const double sharp = refined_interpolation_bound(
+              at, m, tol::kSagRefineCuts, [&](const Eigen::Vector3d& w) {
                 const Vec2 q = w[0] * at[0] + w[1] * at[1] + w[2] * at[2];
                 const gp_XYZ flat = w[0] * p[0].XYZ() + w[1] * p[1].XYZ() + w[2] * p[2].XYZ();
                 return (s.Value(q.x(), q.y()).XYZ() - flat).Modulus();
