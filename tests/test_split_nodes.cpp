@@ -306,6 +306,29 @@ TEST(SplitNodes, NodeNamesCachedByFileContent) {
   EXPECT_EQ(changed[0].rfind("box cannot load mesh file", 0), 0u) << changed[0];
 }
 
+// The split says how many files it reads and when each is done (progress: a
+// STEP file is read and meshed there); a cached file is not counted.
+TEST(SplitNodes, ReportsTheFilesItReads) {
+  const std::string cache = dir() + "progress-cache";
+  std::filesystem::remove_all(cache);
+  const std::string path = scene_file(
+      "progress.json",
+      {{"units", "mm"}, {"tolerance", 0.01}, {"parts", {split_part("box", groups_obj())}}});
+  size_t total = 0, read = 0;
+  pd::SplitLoad load;
+  load.cache_dir = cache;
+  load.on_files = [&](size_t n) { total += n; };
+  load.on_read = [&] { ++read; };
+  pd::SceneSpec s = pd::load_scene_file(path);
+  pd::split_node_parts(s, load);
+  EXPECT_EQ(total, 1u);
+  EXPECT_EQ(read, 1u);
+  pd::SceneSpec again = pd::load_scene_file(path);
+  pd::split_node_parts(again, load);  // from the cache: nothing read
+  EXPECT_EQ(total, 1u);
+  EXPECT_EQ(read, 1u);
+}
+
 TEST(SplitNodes, UnreadableFileIsOnePartErrorAndClashesNameBoth) {
   const std::string garbage = dir() + "garbage.glb";
   std::ofstream(garbage) << "glTF not really";

@@ -10,6 +10,8 @@
 
 #include "brep_cases.h"
 #include "cli_support.h"
+#include "scene/parts.h"
+#include "scene/split_nodes.h"
 
 namespace {
 
@@ -243,6 +245,29 @@ TEST(StepAssemblies, AHullDepthOfPartsNotKnownConvexBoundsNothingFromBelow) {
   for (const json& part : report["parts"]) EXPECT_FALSE(part.contains("convex")) << part.dump();
   EXPECT_EQ(pair["exact"]["verdict"], "separated") << pair.dump();
   EXPECT_EQ(pair["status"], "separated") << pair.dump();
+}
+
+// A STEP file is read (and meshed) once, when it is split: the parts stage
+// takes its meshes from there, as a part file's (one leaf, kept whole) too. A
+// read in the parts stage would crash its loader: a part error.
+TEST(StepAssemblies, AFileIsReadOnceForTheSplitAndTheParts) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(dir + "once.step", {{"a", {Kind::kBox, {10, 10, 10}}},
+                                                   {"b", {Kind::kSphere, {3}}, Vec3(20, 0, 0)}});
+  pd_test::write_step_part(dir + "part.step", {"c", {Kind::kCylinder, {2, 5}}, Vec3(40, 0, 0)});
+  std::ofstream(dir + "once.json") << R"({"units": "mm", "tolerance": 0.05,
+      "parts": [{"id": "s", "mesh": "once.step"}, {"id": "p", "mesh": "part.step"}]})";
+  pd::SceneSpec scene = pd::load_scene_file(dir + "once.json");
+  pd::split_node_parts(scene);
+  ASSERT_EQ(scene.parts.size(), 3u);
+  const std::vector<pd::Part> parts =
+      pd::build_parts(scene, 1, {}, pd::kDefaultLoadTimeout, {}, pd::kAutoLoadMemory,
+                      [](const std::string&) { abort(); });
+  for (const pd::Part& p : parts) {
+    EXPECT_FALSE(p.error) << p.id << ": " << *p.error;
+    ASSERT_TRUE(p.brep) << p.id;
+    EXPECT_GT(p.vertex_count, 0) << p.id;  // meshed
+  }
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

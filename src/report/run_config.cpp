@@ -6,6 +6,7 @@
 #include <istream>
 #include <iterator>
 
+#include "batch/progress.h"
 #include "batch/rule_scope.h"
 #include "cache_file.h"
 #include "memory_limit.h"
@@ -66,13 +67,18 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
     scene = load_scene_file(a.scene, units, a.jobs, /*keep_vertices=*/!shard);
   }
   // Node parts are parts from here on: rules, pairs and shards plan with them.
-  split_node_parts(scene, {a.jobs,
-                           a.load_timeout,
-                           a.load_memory,
-                           {},
-                           a.no_cache            ? ""
-                           : a.cache_dir.empty() ? default_cache_dir()
-                                                 : a.cache_dir});
+  std::optional<Progress> split_progress;
+  split_node_parts(scene,
+                   {a.jobs,
+                    a.load_timeout,
+                    a.load_memory,
+                    {},
+                    a.no_cache            ? ""
+                    : a.cache_dir.empty() ? default_cache_dir()
+                                          : a.cache_dir,
+                    [&](size_t files) { split_progress.emplace(files, a.quiet, "files split"); },
+                    [&] { split_progress->tick(); }});
+  if (split_progress) split_progress->finish();
   if (a.tolerance && *a.tolerance == "auto") {
     if (!scene.auto_tolerance) {  // a scene's own auto keeps its clamps
       scene.auto_tolerance = AutoTolerance{};

@@ -135,10 +135,12 @@ using MeshLoadHook = std::function<void(const std::string& path)>;
 /// allocates more than `memory_mb` MB (kAutoLoadMemory: a share of the
 /// machine's; 0 = no limit) gets an error and costs nothing else. Forks: call
 /// it from a process with one thread (see mesh_loader_processes.cpp).
+/// `on_file`, when given, is called (in this process) as each file is done.
 std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
                                                double timeout = kDefaultLoadTimeout,
                                                double memory_mb = kAutoLoadMemory,
-                                               const MeshLoadHook& before_load = {});
+                                               const MeshLoadHook& before_load = {},
+                                               const std::function<void()>& on_file = {});
 
 /// What a loader process makes of a file it has read (runs there, may hull,
 /// measure and store what it read): the bytes the parent needs of it.

@@ -286,13 +286,17 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
                                    : "")));
   };
   QueueOptions queue{loaders, timeout, {}, {}};
-  if (before_load) queue.before_task = [&](size_t k) { before_load(files[k].path); };
+  if (before_load)  // a file read already (MeshRequest::read) is not read again
+    queue.before_task = [&](size_t k) {
+      if (!files[k].read) before_load(files[k].path);
+    };
   run_work_queue(order, queue, task, done);
 }
 
 std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& files, int jobs,
                                                double timeout, double memory_mb,
-                                               const MeshLoadHook& before_load) {
+                                               const MeshLoadHook& before_load,
+                                               const std::function<void()>& on_file) {
   std::vector<LoadedMeshes> out(files.size());
   auto digest = [](size_t, LoadedMeshes&& read) {
     if (read.error) return "E" + *read.error;
@@ -306,8 +310,12 @@ std::vector<LoadedMeshes> load_meshes_isolated(const std::vector<MeshRequest>& f
       out[k] = {};
       out[k].error = "cannot load mesh file " + files[k].path + ": " + e.what();
     }
+    if (on_file) on_file();
   };
-  auto failed = [&](size_t k, const std::string& why) { out[k].error = why; };
+  auto failed = [&](size_t k, const std::string& why) {
+    out[k].error = why;
+    if (on_file) on_file();
+  };
   digest_meshes_isolated(files, jobs, timeout, memory_mb, before_load, digest, take, failed);
   return out;
 }

@@ -794,7 +794,7 @@ std::vector<Part> load_scene_parts(const std::string& path, const std::optional<
                                    std::optional<double> tolerance, int threads,
                                    double load_timeout) {
   SceneSpec scene = load_scene_file(path, units, threads);
-  split_node_parts(scene, {threads, load_timeout, kAutoLoadMemory, {}, ""});
+  split_node_parts(scene, {threads, load_timeout, kAutoLoadMemory, {}, "", {}, {}});
   if (tolerance) scene.tolerance = *tolerance;
   return build_parts(scene, threads, {}, load_timeout);
 }

@@ -89,8 +89,9 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
     hashes.push_back(hash);
   }
   if (files.empty()) return;
-  std::vector<LoadedMeshes> read =
-      load_meshes_isolated(requests, load.threads, load.timeout, load.memory_mb, load.before_load);
+  if (load.on_files && !requests.empty()) load.on_files(requests.size());
+  std::vector<LoadedMeshes> read = load_meshes_isolated(
+      requests, load.threads, load.timeout, load.memory_mb, load.before_load, load.on_read);
   auto whole = std::make_shared<std::map<std::string, LoadedMeshes>>();
   for (size_t r = 0; r < read.size(); ++r) {
     LoadedMeshes& got = read[r];

@@ -2,6 +2,8 @@
 // (docs/scene-format.md "Split by node").
 #pragma once
 
+#include <functional>
+
 #include "scene/mesh_loader.h"
 #include "scene/scene.h"
 
@@ -15,6 +17,11 @@ struct SplitLoad {
   MeshLoadHook before_load;  ///< tests only
   /// Where node paths are cached per file content (node_names_cache.h); "" = none.
   std::string cache_dir;
+  /// Progress: called with the number of files to read before reading them,
+  /// then once per file read (a STEP file is read and meshed here: minutes
+  /// for a large assembly).
+  std::function<void(size_t files)> on_files;
+  std::function<void()> on_read;
 };
 
 /// Replaces every `"split": "nodes"` part by one part per node of its mesh file
