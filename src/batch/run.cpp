@@ -166,6 +166,8 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
         {options.cache_dir, &file_hashes}, options.load_memory_mb, options.faults.before_mesh_load);
     progress.finish();
   }
+  scene.brep_reads.reset();  // the parts have their meshes: the files' go
+  shard_scene.brep_reads.reset();
   for (size_t k = 0; k < out.parts.size(); ++k)
     out.part_hashes.push_back(hashes[plan ? loaded[k] : k]);
   out.labels = part_labels(scene, loaded, out.parts.size(), rules ? &*rules : nullptr);

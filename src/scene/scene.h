@@ -144,8 +144,10 @@ struct SceneSpec {
   bool part_list = false;      ///< read from a plain part list (parse_part_list), not a scene JSON
   /// The B-rep files split_node_parts read, meshed by node at their parts'
   /// deflection (key brep_read_key): the parts stage's loaders, forked from
-  /// this process, take them as read instead of reading the files again.
-  std::shared_ptr<const std::map<std::string, LoadedMeshes>> brep_reads;
+  /// this process, take them as read instead of reading the files again, and
+  /// the run lets them go once the parts are built (mutable: a cache of the
+  /// files, not the scene's content; a later build reads the files).
+  mutable std::shared_ptr<const std::map<std::string, LoadedMeshes>> brep_reads;
 };
 
 /// The linear deflection a B-rep part is meshed at (scene units): its own
