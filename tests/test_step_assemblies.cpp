@@ -108,6 +108,28 @@ json run_json(const std::string& args, const std::string& stdin_text = "") {
   return json::parse(r.out);
 }
 
+// Two parts written as one assembly `name`.step, checked with the scene's
+// `settings` (JSON members before "parts"): the report, which must exit with
+// `code` and hold one pair.
+json one_pair_report(const std::string& name, const std::vector<BrepCasePart>& parts,
+                     const std::string& settings, int code) {
+  const std::string dir = pd_test::process_dir();
+  pd_test::write_step_assembly(dir + name + ".step", parts);
+  std::ofstream(dir + name + ".json")
+      << "{" << settings << R"(, "parts": [{"id": "s", "mesh": ")" << name << R"(.step"}]})";
+  const auto r = pdcheck(dir + name + ".json --no-cache -q");
+  EXPECT_EQ(r.code, code) << r.err;
+  json report = json::parse(r.out);
+  EXPECT_EQ(report["pairs"].size(), 1u) << r.out;
+  return report;
+}
+
+double sag_of(const json& report, const std::string& id) {
+  for (const json& part : report["parts"])
+    if (part["id"] == id) return part["tessellation"]["sag"];
+  return 0.0;
+}
+
 TEST(StepAssemblies, OneAssemblyFileEveryRelationConfirmed) {
   const std::string dir = pd_test::process_dir();
   pd_test::write_step_assembly(dir + "mechanisms.step", mechanisms());
@@ -142,26 +164,19 @@ TEST(StepAssemblies, OneFilePerPartAndAPartList) {
 // 20 mm from the plate: only the faces near the contact widen its bracket, so the fit is
 // certified by the bound where the shaft's worst sag alone would not.
 TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
-  const std::string dir = pd_test::process_dir();
-  pd_test::write_step_assembly(
-      dir + "seat.step", {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
-                          {"shaft", {Kind::kShaftWithGroove, {4, 40, 1.5, 30}}, Vec3(10, 10, -5)}});
   // Meshed at the deflection the default would pick for a 0.05 tolerance, and
   // checked against a tighter one: the groove's sag (≈ δ) counts, the
   // cylinder's (≈ δ/2) does not.
-  std::ofstream(dir + "seat.json") << R"({"units": "mm", "tolerance": 0.02, "deflection": 0.0125,
-      "parts": [{"id": "s", "mesh": "seat.step"}]})";
-  const auto r = pdcheck(dir + "seat.json --no-cache -q");
-  ASSERT_EQ(r.code, 0) << r.err;
-  const json report = json::parse(r.out);
+  const json report =
+      one_pair_report("seat",
+                      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+                       {"shaft", {Kind::kShaftWithGroove, {4, 40, 1.5, 30}}, Vec3(10, 10, -5)}},
+                      R"("units": "mm", "tolerance": 0.02, "deflection": 0.0125)", 0);
   ASSERT_EQ(report["pairs"].size(), 1u);
   const json& pair = report["pairs"][0];
-  double shaft_sag = 0.0;
-  for (const json& part : report["parts"])
-    if (part["id"] == "s/shaft") shaft_sag = part["tessellation"]["sag"];
   // The shaft's worst sag (its groove's) would not let the bound decide...
   const double hi = pair.contains("depth_bounds") ? pair["depth_bounds"][1].get<double>() : 0.0;
-  ASSERT_GT(hi + 2.0 * shaft_sag, 0.02) << report.dump();
+  ASSERT_GT(hi + 2.0 * sag_of(report, "s/shaft"), 0.02) << report.dump();
   // ... its cylinder's does, and no solid is touched.
   EXPECT_EQ(pair["status"], "separated");
   EXPECT_EQ(pair["exact"]["by"], "deflection-bound") << pair.dump();
@@ -173,25 +188,18 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
 // and the overlap's deepest points lie in both parts, near the bore; the
 // groove, outside the plate, cannot move them.
 TEST(StepAssemblies, AnOverlapIsWidenedOnlyByTheFacesInOrNearTheOtherPart) {
-  const std::string dir = pd_test::process_dir();
-  pd_test::write_step_assembly(
-      dir + "press.step",
-      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
-       {"shaft", {Kind::kShaftWithGroove, {4.008, 40, 1.5, 30}}, Vec3(10, 10, -5)}});
-  std::ofstream(dir + "press.json") << R"({"units": "mm", "tolerance": 0.03, "deflection": 0.0125,
-      "parts": [{"id": "s", "mesh": "press.step"}]})";
-  const auto r = pdcheck(dir + "press.json --no-cache -q");
-  ASSERT_EQ(r.code, 0) << r.err;
-  const json report = json::parse(r.out);
+  const json report =
+      one_pair_report("press",
+                      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+                       {"shaft", {Kind::kShaftWithGroove, {4.008, 40, 1.5, 30}}, Vec3(10, 10, -5)}},
+                      R"("units": "mm", "tolerance": 0.03, "deflection": 0.0125)", 0);
   ASSERT_EQ(report["pairs"].size(), 1u);
   const json& pair = report["pairs"][0];
-  double shaft_sag = 0.0;
-  for (const json& part : report["parts"])
-    if (part["id"] == "s/shaft") shaft_sag = part["tessellation"]["sag"];
   ASSERT_EQ(pair["status"], "false_positive") << pair.dump();
   const double lo = pair["depth_bounds"][0], hi = pair["depth_bounds"][1];
   EXPECT_GT(lo, 0.0);
-  ASSERT_GT(hi + 2.0 * shaft_sag, 0.03) << pair.dump();  // the groove's sag would not do
+  // The groove's sag would not do.
+  ASSERT_GT(hi + 2.0 * sag_of(report, "s/shaft"), 0.03) << pair.dump();
   EXPECT_EQ(pair["exact"]["by"], "deflection-bound") << pair.dump();
   EXPECT_EQ(pair["exact"]["verdict"], "false_positive") << pair.dump();
   EXPECT_LE(pair["exact"]["depth_bounds"][1].get<double>(), 0.03);
@@ -204,16 +212,11 @@ TEST(StepAssemblies, AnOverlapIsWidenedOnlyByTheFacesInOrNearTheOtherPart) {
 // solids' thickness, a lower bound of the move, neither contradicts the depth
 // nor makes it a false positive.
 TEST(StepAssemblies, ABuriedBallsThicknessIsNotItsDepth) {
-  const std::string dir = pd_test::process_dir();
-  pd_test::write_step_assembly(
-      dir + "buried.step",
-      {{"block", {Kind::kBox, {20, 20, 20}}}, {"ball", {Kind::kSphere, {3}}, Vec3(10, 10, 10)}});
-  std::ofstream(dir + "buried.json") << R"({"units": "mm", "tolerance": 12.95, "deflection": 0.05,
-      "parts": [{"id": "s", "mesh": "buried.step"}]})";
-  const auto r = pdcheck(dir + "buried.json --no-cache -q");
-  ASSERT_EQ(r.code, 1) << r.err;
-  const json report = json::parse(r.out);
-  ASSERT_EQ(report["pairs"].size(), 1u) << r.out;
+  const json report = one_pair_report(
+      "buried",
+      {{"block", {Kind::kBox, {20, 20, 20}}}, {"ball", {Kind::kSphere, {3}}, Vec3(10, 10, 10)}},
+      R"("units": "mm", "tolerance": 12.95, "deflection": 0.05)", 1);
+  ASSERT_EQ(report["pairs"].size(), 1u);
   const json& pair = report["pairs"][0];
   ASSERT_EQ(pair["status"], "interference") << pair.dump();
   ASSERT_GT(pair["depth"].get<double>(), 12.95) << pair.dump();
@@ -231,15 +234,10 @@ TEST(StepAssemblies, ABuriedBallsThicknessIsNotItsDepth) {
 // measures the plate's convexity, and a part not known convex does not make
 // the hull depth a lower bound: the solids, apart, are not "inconsistent".
 TEST(StepAssemblies, AHullDepthOfPartsNotKnownConvexBoundsNothingFromBelow) {
-  const std::string dir = pd_test::process_dir();
-  pd_test::write_step_assembly(dir + "post.step",
-                               {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
-                                {"post", {Kind::kBox, {2, 2, 10}}, Vec3(9, 9, 5 - 0.049)}});
-  std::ofstream(dir + "post.json")
-      << R"({"units": "mm", "tolerance": 0.05, "parts": [{"id": "s", "mesh": "post.step"}]})";
-  const auto r = pdcheck(dir + "post.json --no-cache -q");
-  ASSERT_EQ(r.code, 0) << r.err;
-  const json report = json::parse(r.out);
+  const json report = one_pair_report("post",
+                                      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+                                       {"post", {Kind::kBox, {2, 2, 10}}, Vec3(9, 9, 5 - 0.049)}},
+                                      R"("units": "mm", "tolerance": 0.05)", 0);
   ASSERT_EQ(report["pairs"].size(), 1u);
   const json& pair = report["pairs"][0];
   for (const json& part : report["parts"]) EXPECT_FALSE(part.contains("convex")) << part.dump();
