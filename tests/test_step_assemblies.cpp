@@ -266,6 +266,15 @@ TEST(StepAssemblies, AFileIsReadOnceForTheSplitAndTheParts) {
     ASSERT_TRUE(p.brep) << p.id;
     EXPECT_GT(p.vertex_count, 0) << p.id;  // meshed
   }
+  // Meshes larger than the run's memory budget are not kept: the split takes
+  // the names, the parts stage reads the file again.
+  pd::SceneSpec large = pd::load_scene_file(dir + "once.json");
+  pd::SplitLoad load;
+  load.keep_mb = 1e-6;
+  pd::split_node_parts(large, load);
+  ASSERT_EQ(large.parts.size(), 3u);
+  EXPECT_FALSE(large.brep_reads);
+  for (const pd::Part& p : pd::build_parts(large)) EXPECT_FALSE(p.error) << p.id;
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

@@ -52,6 +52,11 @@ std::optional<ShardSpec> resolve_shard(const CheckArgs& a,
 }
 
 // The scene with the command line's overrides over it.
+// The run's --memory budget (MB): given, else memory_budget_mb's share.
+double run_memory_mb(const CheckArgs& a) {
+  return a.memory.empty() ? memory_budget_mb(available_memory_mb()) : parse_memory_mb(a.memory);
+}
+
 SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSettings& solver) {
   std::optional<std::string> units;
   if (!a.units.empty()) {
@@ -76,6 +81,7 @@ SceneSpec load_scene(const CheckArgs& a, bool shard, std::istream& in, SolverSet
                     a.no_cache            ? ""
                     : a.cache_dir.empty() ? default_cache_dir()
                                           : a.cache_dir,
+                    run_memory_mb(a),
                     [&](size_t files) { split_progress.emplace(files, a.quiet, "files split"); },
                     [&] { split_progress->tick(); }});
   if (split_progress) split_progress->finish();
@@ -177,8 +183,7 @@ void resolve_run_config(const CheckArgs& a, std::istream& in,
   o.pair_timeout = a.pair_timeout;
   o.load_timeout = a.load_timeout;
   o.load_memory_mb = a.load_memory;
-  o.memory_mb =
-      a.memory.empty() ? memory_budget_mb(available_memory_mb()) : parse_memory_mb(a.memory);
+  o.memory_mb = run_memory_mb(a);
   o.quiet = a.quiet;
   o.shard = out.shard;
   if (!a.no_cache) o.cache_dir = a.cache_dir.empty() ? default_cache_dir() : a.cache_dir;

@@ -1,6 +1,7 @@
 // Mesh files through assimp (STL, OBJ, PLY, glTF, …).
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -103,6 +104,10 @@ struct MeshRequest {
   bool node_names_only = false;
   /// B-rep files: the linear deflection to mesh them at (file units).
   double deflection = 0.0;
+  /// With by_node, a B-rep file read whole for its names (split_node_parts):
+  /// its meshes cross the pipe only when they take at most this many bytes,
+  /// else the names alone do (node_names_only).
+  double keep_bytes = INFINITY;
   /// The file as this process read it already, by node at `deflection`
   /// (split_node_parts: SceneSpec::brep_reads): a loader, forked from this
   /// process, takes it as read (joined when not `by_node`) and reads nothing.

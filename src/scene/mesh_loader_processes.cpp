@@ -203,7 +203,12 @@ LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb) {
     }
     NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, f.by_node, &out.warnings)
                            : load_node_meshes(f.path, &out.warnings);
-    if (!f.node_names_only) {
+    double bytes = 0.0;  // what the meshes cost to hand over and keep
+    for (size_t k = 0; k < read.meshes.size(); ++k)
+      bytes += read.meshes[k].vertices.size() * sizeof(double) +
+               read.meshes[k].triangles.size() * sizeof(int) +
+               (k < read.triangle_sags.size() ? read.triangle_sags[k].size() * sizeof(float) : 0);
+    if (!f.node_names_only && bytes <= f.keep_bytes) {
       out.meshes = std::move(read.meshes);
       out.nodes = std::move(read.nodes);
       out.tessellations = std::move(read.tessellations);

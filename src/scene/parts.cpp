@@ -689,14 +689,15 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       key << deflection << '|' << *spec.mesh;
       const auto [it, fresh] = by_node.emplace(key.str(), requests.size());
       if (fresh) {
-        requests.push_back({*spec.mesh, true, true, false, deflection, read_already(spec)});
+        requests.push_back(
+            {*spec.mesh, true, true, false, deflection, INFINITY, read_already(spec)});
         requested.emplace_back();
       }
       requested[it->second].push_back(f);
       continue;
     }
-    requests.push_back(
-        {*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection, read_already(spec)});
+    requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection,
+                        INFINITY, read_already(spec)});
     requested.push_back({f});
   }
   if (!requests.empty()) {
@@ -794,7 +795,7 @@ std::vector<Part> load_scene_parts(const std::string& path, const std::optional<
                                    std::optional<double> tolerance, int threads,
                                    double load_timeout) {
   SceneSpec scene = load_scene_file(path, units, threads);
-  split_node_parts(scene, {threads, load_timeout, kAutoLoadMemory, {}, "", {}, {}});
+  split_node_parts(scene, {threads, load_timeout, kAutoLoadMemory, {}, "", 256.0, {}, {}});
   if (tolerance) scene.tolerance = *tolerance;
   return build_parts(scene, threads, {}, load_timeout);
 }

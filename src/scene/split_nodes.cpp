@@ -85,7 +85,8 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
     // A B-rep file is read whole, meshed at its parts' deflection: reading it
     // is most of meshing it, and the parts stage takes it from here.
     const double deflection = file_deflection(s, p);
-    requests.push_back({*p.mesh, true, true, deflection == 0, deflection});
+    requests.push_back(
+        {*p.mesh, true, true, deflection == 0, deflection, load.keep_mb * 1048576.0});
     hashes.push_back(hash);
   }
   if (files.empty()) return;
@@ -95,7 +96,8 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
   auto whole = std::make_shared<std::map<std::string, LoadedMeshes>>();
   for (size_t r = 0; r < read.size(); ++r) {
     LoadedMeshes& got = read[r];
-    if (!requests[r].node_names_only && !got.error) {  // kept whole; the split takes the names
+    // Kept whole (unless too large: names only came back); the split takes the names.
+    if (!requests[r].node_names_only && !got.error && !got.meshes.empty()) {
       LoadedMeshes names;
       for (const std::string& n : got.nodes)  // a node's meshes come together
         if (names.nodes.empty() || names.nodes.back() != n) names.nodes.push_back(n);

@@ -17,6 +17,9 @@ struct SplitLoad {
   MeshLoadHook before_load;  ///< tests only
   /// Where node paths are cached per file content (node_names_cache.h); "" = none.
   std::string cache_dir;
+  /// A B-rep file read whole keeps its meshes for the parts stage when they
+  /// take at most this (MB; the run's --memory budget), else its names alone.
+  double keep_mb = 256.0;
   /// Progress: called with the number of files to read before reading them,
   /// then once per file read (a STEP file is read and meshed here: minutes
   /// for a large assembly).
