@@ -124,6 +124,13 @@ json one_pair_report(const std::string& name, const std::vector<BrepCasePart>& p
   return report;
 }
 
+// A plate with a 4 mm bore and a shaft of `radius` through it, grooved (a
+// torus cut) 20 mm from the plate.
+std::vector<BrepCasePart> plate_and_grooved_shaft(double radius) {
+  return {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
+          {"shaft", {Kind::kShaftWithGroove, {radius, 40, 1.5, 30}}, Vec3(10, 10, -5)}};
+}
+
 double sag_of(const json& report, const std::string& id) {
   for (const json& part : report["parts"])
     if (part["id"] == id) return part["tessellation"]["sag"];
@@ -168,9 +175,7 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
   // checked against a tighter one: the groove's sag (≈ δ) counts, the
   // cylinder's (≈ δ/2) does not.
   const json report =
-      one_pair_report("seat",
-                      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
-                       {"shaft", {Kind::kShaftWithGroove, {4, 40, 1.5, 30}}, Vec3(10, 10, -5)}},
+      one_pair_report("seat", plate_and_grooved_shaft(4),
                       R"("units": "mm", "tolerance": 0.02, "deflection": 0.0125)", 0);
   ASSERT_EQ(report["pairs"].size(), 1u);
   const json& pair = report["pairs"][0];
@@ -189,9 +194,7 @@ TEST(StepAssemblies, AContactIsWidenedOnlyByTheFacesNearIt) {
 // groove, outside the plate, cannot move them.
 TEST(StepAssemblies, AnOverlapIsWidenedOnlyByTheFacesInOrNearTheOtherPart) {
   const json report =
-      one_pair_report("press",
-                      {{"plate", {Kind::kPlateWithHole, {20, 20, 5, 4}}},
-                       {"shaft", {Kind::kShaftWithGroove, {4.008, 40, 1.5, 30}}, Vec3(10, 10, -5)}},
+      one_pair_report("press", plate_and_grooved_shaft(4.008),
                       R"("units": "mm", "tolerance": 0.03, "deflection": 0.0125)", 0);
   ASSERT_EQ(report["pairs"].size(), 1u);
   const json& pair = report["pairs"][0];
