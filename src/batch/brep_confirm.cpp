@@ -10,6 +10,7 @@
 #include "byte_cache.h"
 #include "geometry/convexity.h"
 #include "geometry/ray_parity.h"
+#include "geometry/same_position.h"
 #include "geometry/surface_gap.h"
 #include "parallel_for.h"
 #include "scene/units.h"
@@ -280,7 +281,7 @@ struct GapSurface {
     shell.assign(triangles.size(), 0);
     for (size_t s = 0; s < of_shell.size(); ++s)
       for (int t : of_shell[s]) shell[size_t(t)] = int(s);
-    closed = every_edge_paired(mesh);
+    closed = mesh.triangles.cols() > 0 && boundary_edges(mesh) == 0;
     if (p.surface && p.surface->stored && p.surface->stored->store && p.brep)
       if (auto s = p.surface->stored->store->get_sags(p.surface->stored->key))
         if (s->size() == triangles.size())
@@ -299,25 +300,6 @@ struct GapSurface {
     ray_parity_sides(tree, shell, box.lo, box.hi, q, sides.data(), sides.size());
     return std::any_of(sides.begin(), sides.end(),
                        [](RaySide s) { return s != RaySide::kOutside; });
-  }
-
- private:
-  static bool every_edge_paired(const Mesh& m) {
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(size_t(3 * m.triangles.cols()));
-    for (Eigen::Index t = 0; t < m.triangles.cols(); ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int u = m.triangles(k, t), v = m.triangles((k + 1) % 3, t);
-        edges.emplace_back(std::min(u, v), std::max(u, v));
-      }
-    std::sort(edges.begin(), edges.end());
-    for (size_t i = 0; i < edges.size();) {
-      size_t j = i;
-      while (j < edges.size() && edges[j] == edges[i]) ++j;
-      if ((j - i) % 2) return false;
-      i = j;
-    }
-    return !edges.empty();
   }
 };
 
