@@ -75,7 +75,10 @@ std::vector<int> still_needed(const std::vector<Part>& parts, int a, int b,
 // instances share the answer); a part that cannot be measured (its surface
 // lost from the store) counts as nonconvex: the refinement decides its pairs
 // and reports what it cannot read.
-void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunOptions& options) {
+// A file placed as it is by one of its instances is measured with that
+// instance's distances from `solids`, which the refinement then finds built.
+void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunOptions& options,
+             PartSolids& solids) {
   std::map<std::string, std::vector<int>> by_key;  // ordered: the same order on every run
   for (int p : which) by_key[convexity_key_of(parts[size_t(p)])].push_back(p);
   std::vector<const std::vector<int>*> files;
@@ -84,8 +87,15 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
   parallel_for(files.size(), options.jobs, [&](size_t k) {
     const std::vector<int>& instances = *files[k];
     std::optional<StoredConvexity> c;
+    const auto as_file = std::find_if(instances.begin(), instances.end(),
+                                      [&](int p) { return placed_as_file(parts[size_t(p)]); });
+    const auto prepared = [&]() -> std::shared_ptr<const PreparedMesh> {
+      if (as_file == instances.end()) return nullptr;
+      const std::shared_ptr<const SolidDistance> d = solids.of(*as_file);
+      return {d, &d->mesh()};  // keeps the distances alive
+    };
     try {
-      c = measure_file_convexity(parts[size_t(instances.front())], options.cache_dir);
+      c = measure_file_convexity(parts[size_t(instances.front())], options.cache_dir, prepared);
     } catch (const std::exception&) {
     }
     for (int p : instances) {
@@ -94,9 +104,9 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
       else
         parts[size_t(p)].convex = false;
     }
-    // The file's mesh and distances go back to the system, not to a thread's
-    // heap that would keep them resident through the refinement (100M
-    // triangles: 0.9 GB of them).
+    // The file's mesh and the distances the cache let go go back to the
+    // system, not to a thread's heap that would keep them resident through
+    // the refinement (100M triangles: 0.9 GB of them).
     malloc_trim(0);
     progress.tick();
   });
@@ -112,7 +122,8 @@ bool turns_on_convexity(const PairResult& r, const Part& a, const Part& b) {
 void measure_convexity_on_demand(std::vector<Part>& parts,
                                  const std::vector<std::pair<int, int>>& pairs,
                                  std::vector<PairResult>& results, const RunOptions& options,
-                                 const std::function<PairChecks(int, int)>& checks) {
+                                 const std::function<PairChecks(int, int)>& checks,
+                                 PartSolids& solids) {
   std::vector<size_t> open;
   for (size_t k = 0; k < pairs.size(); ++k)
     if (turns_on_convexity(results[k], parts[size_t(pairs[k].first)],
@@ -130,7 +141,7 @@ void measure_convexity_on_demand(std::vector<Part>& parts,
     for (size_t p = 0; p < parts.size(); ++p)
       if (chosen[p]) which.push_back(static_cast<int>(p));
     if (which.empty()) break;
-    measure(parts, which, options);
+    measure(parts, which, options, solids);
   }
   // Pairs stopped early for a part that turned out convex, with a convex
   // partner: their hulls decide, so they are solved on them in full.

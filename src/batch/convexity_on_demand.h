@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "batch/part_solids.h"
 #include "batch/run.h"
 #include "results/pair_result.h"
 #include "scene/parts.h"
@@ -37,9 +38,12 @@ namespace pd {
 /// back from the report until that is measured.
 bool turns_on_convexity(const PairResult& r, const Part& a, const Part& b);
 
+/// A part placed as its file is measured with its distances from `solids`,
+/// kept there for the refinement.
 void measure_convexity_on_demand(std::vector<Part>& parts,
                                  const std::vector<std::pair<int, int>>& pairs,
                                  std::vector<PairResult>& results, const RunOptions& options,
-                                 const std::function<PairChecks(int, int)>& checks);
+                                 const std::function<PairChecks(int, int)>& checks,
+                                 PartSolids& solids);
 
 }  // namespace pd

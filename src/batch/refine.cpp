@@ -14,9 +14,9 @@
 #include "batch/contact_band.h"
 #include "batch/decomposition_cache.h"
 #include "batch/pair_workers.h"
+#include "batch/part_solids.h"
 #include "batch/progress.h"
 #include "batch/refine_cache.h"
-#include "byte_cache.h"
 #include "geometry/decompose.h"
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
@@ -185,34 +185,6 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// The surface a mesh test sees: the part's own, else (inline or convex parts
-// without one kept) the triangulated hull of each of its pieces.
-Mesh surface_mesh(const Part& p) {
-  if (p.surface) return placed_mesh_of(*p.surface);
-  Mesh m;
-  std::vector<Vec3> v;
-  std::vector<std::array<int, 3>> t;
-  for (const Hull& h : p.pieces) {
-    HullFacets f;
-    if (!hull_facets(h.vertices, f)) continue;
-    const int base = static_cast<int>(v.size());
-    for (Eigen::Index k = 0; k < h.vertices.cols(); ++k) v.push_back(h.vertices.col(k));
-    for (size_t k = 0; k < f.triangles.size(); ++k) {  // outward, as the normal says
-      auto tri = f.triangles[k];
-      const Vec3 n = (h.vertices.col(tri[1]) - h.vertices.col(tri[0]))
-                         .cross(h.vertices.col(tri[2]) - h.vertices.col(tri[0]));
-      if (n.dot(f.normals[k]) < 0) std::swap(tri[1], tri[2]);
-      t.push_back({base + tri[0], base + tri[1], base + tri[2]});
-    }
-  }
-  m.vertices.resize(3, v.size());
-  for (size_t k = 0; k < v.size(); ++k) m.vertices.col(k) = v[k];
-  m.triangles.resize(3, t.size());
-  for (size_t k = 0; k < t.size(); ++k)
-    m.triangles.col(k) = Eigen::Vector3i(t[k][0], t[k][1], t[k][2]);
-  return m;
-}
 
 // The surfaces' verdict. The thickness path samples the surfaces itself
 // (surface_depth, every vertex included), so only the pieces path asks for
@@ -400,13 +372,6 @@ std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& part
   return out;
 }
 
-// What a part's distances (SolidDistance) hold, for the cache's budget:
-// measured as the resident growth of building them on closed CAD meshes of
-// 10^4–10^6 triangles (scripts/bench_scale.py's parts), rounded up.
-size_t solid_bytes(long triangles) {
-  return size_t(std::max(0L, triangles)) * tol::kSolidBytesPerTriangle + (64u << 10);
-}
-
 // The order in which the flagged pairs are refined: by where their parts sit
 // (a Morton curve over the parts' box centres), so that a part's pairs run
 // close together and its distances, built once, serve them from the cache.
@@ -452,8 +417,13 @@ class Refinement {
  public:
   Refinement(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
              std::vector<PairResult>& results, const RunOptions& options,
-             const std::function<PairChecks(int, int)>& checks)
-      : parts_(parts), pairs_(pairs), results_(results), options_(options), checks_(checks) {
+             const std::function<PairChecks(int, int)>& checks, PartSolids& solids)
+      : parts_(parts),
+        pairs_(pairs),
+        results_(results),
+        options_(options),
+        checks_(checks),
+        solids_(solids) {
     for (size_t k = 0; k < pairs.size(); ++k) {
       const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
       if (!results[k].reused && needs_refinement(results[k], a, b)) flagged_.push_back(k);
@@ -489,13 +459,9 @@ class Refinement {
     no_solid_.assign(flagged_.size(), 0);
     std::vector<char> pieces(flagged_.size(), 0);
     const std::vector<size_t> order = by_locality(parts_, pairs_, flagged_);
-    ByteCache<int, SolidDistance> solids(size_t(std::max(0.0, options_.memory_mb)) << 20);
     const auto solid_of = [&](int p) -> std::shared_ptr<const SolidDistance> {
       try {  // once per part while it stays in the cache, shared by its pairs and threads
-        return solids.get(p, [&] {
-          auto d = std::make_shared<const SolidDistance>(surface_mesh(parts_[p]));
-          return ByteCache<int, SolidDistance>::Built{d, solid_bytes(d->mesh().faces())};
-        });
+        return solids_.of(p);
       } catch (const std::exception&) {  // no triangles: nothing to test, the pieces decide
         return nullptr;
       }
@@ -524,15 +490,13 @@ class Refinement {
       }
       // What the cache dropped goes back to the system, not to a heap that
       // would keep it resident for the rest of the run.
-      if (const size_t dropped = solids.drops(); dropped > trimmed.exchange(dropped))
+      if (const size_t dropped = solids_.drops(); dropped > trimmed.exchange(dropped))
         malloc_trim(0);
       progress.tick();
     });
     progress.finish();
     for (size_t n = 0; n < flagged_.size(); ++n)
       if (pieces[n]) solve_.push_back(n);
-    solid_builds_ = solids.builds();
-    solid_peak_bytes_ = solids.peak_bytes();
   }
 
   // 3. Decompose the refinable parts of the pairs that need pieces, and 4.
@@ -617,7 +581,7 @@ class Refinement {
   std::vector<size_t> reused_pieces_;  ///< reused refined pairs whose parts' pieces decided
   std::vector<std::string> keys_;
   std::vector<std::pair<size_t, StoredRefinement>> hits_;
-  size_t solid_builds_ = 0, solid_peak_bytes_ = 0;  ///< the distance cache's, steps 1–2
+  PartSolids& solids_;  ///< each part's distances, steps 1–2
   // Per flagged pair (index n into flagged_):
   std::vector<MeshVerdict> verdicts_;
   std::vector<char> no_solid_;  ///< a part of the pair has no surface to test
@@ -632,7 +596,14 @@ class Refinement {
 void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks) {
-  Refinement refinement(parts, pairs, results, options, checks);
+  PartSolids solids(parts, size_t(std::max(0.0, options.memory_mb)) << 20);
+  refine_nonconvex_pairs(parts, pairs, results, options, checks, solids);
+}
+
+void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
+                            std::vector<PairResult>& results, const RunOptions& options,
+                            const std::function<PairChecks(int, int)>& checks, PartSolids& solids) {
+  Refinement refinement(parts, pairs, results, options, checks, solids);
   if (refinement.empty()) return;
   refinement.take_from_cache();
   refinement.test_and_measure();

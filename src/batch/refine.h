@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "batch/pair_solve.h"
+#include "batch/part_solids.h"
 #include "batch/run.h"
 #include "results/pair_result.h"
 #include "scene/parts.h"
@@ -65,5 +66,10 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
 void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks);
+/// The same, each part's distances from `solids` (those the convexity
+/// measures built are not built again).
+void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
+                            std::vector<PairResult>& results, const RunOptions& options,
+                            const std::function<PairChecks(int, int)>& checks, PartSolids& solids);
 
 }  // namespace pd

@@ -47,15 +47,23 @@ Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles) {
     by_area.push_back({total, sum.normalized()});
   }
   if (by_area.empty()) return Eigen::Matrix3d::Identity();
-  std::stable_sort(by_area.begin(), by_area.end(),
-                   [](const auto& x, const auto& y) { return x.first > y.first; });
-  const Vec3 first = by_area.front().second;
+  // The largest group, then the largest within about 12° of square to it; on
+  // equal areas the earlier in key order (two scans: no sort of every group).
+  const auto larger = [](const auto& x, const auto& y) { return x.first > y.first; };
+  size_t top = 0;
+  for (size_t k = 1; k < by_area.size(); ++k)
+    if (larger(by_area[k], by_area[top])) top = k;
+  const Vec3 first = by_area[top].second;
   Vec3 second = first.unitOrthogonal();
-  for (const auto& [area, n] : by_area)
-    if (std::abs(n.dot(first)) < 0.2) {  // within about 12° of square
-      second = (n - n.dot(first) * first).normalized();
-      break;
-    }
+  size_t across = by_area.size();
+  for (size_t k = 0; k < by_area.size(); ++k)
+    if (std::abs(by_area[k].second.dot(first)) < 0.2 &&
+        (across == by_area.size() || larger(by_area[k], by_area[across])))
+      across = k;
+  if (across < by_area.size()) {
+    const Vec3& n = by_area[across].second;
+    second = (n - n.dot(first) * first).normalized();
+  }
   Eigen::Matrix3d r;
   r.col(0) = first;
   r.col(1) = second;

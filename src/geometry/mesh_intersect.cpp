@@ -92,6 +92,11 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   m.merged.assign(n, -1);
   const std::vector<int> first = first_at_same_position(mesh.vertices);
   std::vector<int> point_of(n, -1);  // by a position's first column
+  // Sized once (a large part's vectors would otherwise be copied as they grow).
+  size_t positions = 0;
+  for (long v = 0; v < n; ++v) positions += first[size_t(v)] == v;
+  m.points.reserve(positions);
+  m.faces.reserve(size_t(mesh.triangles.cols()));
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles(k, t);

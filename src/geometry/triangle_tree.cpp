@@ -146,15 +146,15 @@ TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
   if (rotated_) frame_ = axes_.transpose();
   for (const auto& t : triangles)
     for (const Vec3& v : t) extent_ = std::max(extent_, v.cwiseAbs().maxCoeff());
-  std::vector<std::array<Vec3, 3>> framed(triangles);
-  if (rotated_)
-    for (auto& t : framed)
-      for (Vec3& v : t) v = frame_ * v;
+  // Each triangle taken into the frame on its own: no framed copy of them all.
   std::vector<Vec3> centroids(triangles.size());
   std::vector<std::array<Vec3, 2>> framed_boxes(triangles.size());
   for (size_t i = 0; i < triangles.size(); ++i) {
-    centroids[i] = (framed[i][0] + framed[i][1] + framed[i][2]) / 3;
-    framed_boxes[i] = box_of(framed[i]);
+    std::array<Vec3, 3> f = triangles[i];
+    if (rotated_)
+      for (Vec3& v : f) v = frame_ * v;
+    centroids[i] = (f[0] + f[1] + f[2]) / 3;
+    framed_boxes[i] = box_of(f);
   }
   nodes_.reserve(triangles.size() / kLeafSize + 2);
   root_ = build(0, static_cast<int>(triangles.size()), framed_boxes, centroids, 0);

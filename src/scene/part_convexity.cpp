@@ -29,7 +29,9 @@ std::string convexity_key_of(const Part& p) {
   return convexity_key(s.file_hash, tolerance_of(s), stop_above_of(s));
 }
 
-StoredConvexity measure_file_convexity(const Part& p, const std::string& cache_dir) {
+StoredConvexity measure_file_convexity(
+    const Part& p, const std::string& cache_dir,
+    const std::function<std::shared_ptr<const PreparedMesh>()>& prepared) {
   const PartSurface& s = *p.surface;
   const std::string key = convexity_key_of(p);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
@@ -37,7 +39,10 @@ StoredConvexity measure_file_convexity(const Part& p, const std::string& cache_d
   // No hull points: the screen hulls the file's own distinct positions (the
   // same whichever instance asks) and welds the file once for that and its
   // surface samples.
-  const ConvexityScreen screen = screen_convexity(*mesh, tolerance_of(s), stop_above_of(s));
+  const std::shared_ptr<const PreparedMesh> held = prepared ? prepared() : nullptr;
+  const ConvexityScreen screen =
+      held ? screen_convexity(*mesh, *held, tolerance_of(s), stop_above_of(s))
+           : screen_convexity(*mesh, tolerance_of(s), stop_above_of(s));
   const StoredConvexity c{screen.concavity.value, screen.closed};
   write_cached_convexity(cache_dir, key, c);
   return c;

@@ -4,8 +4,11 @@
 // stage asks for it there (batch/convexity_on_demand.h).
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 
+#include "geometry/mesh_intersect.h"
 #include "scene/convexity_cache.h"
 #include "scene/parts.h"
 
@@ -23,8 +26,12 @@ std::string convexity_key_of(const Part& p);
 /// else measured on the file's mesh from the mesh store (its distinct
 /// positions hulled in file coordinates, so the answer does not depend on
 /// which instance asks) and cached. Throws std::runtime_error when the
-/// surface cannot be read.
-StoredConvexity measure_file_convexity(const Part& p, const std::string& cache_dir);
+/// surface cannot be read. `prepared`, when given, returns the file's mesh
+/// prepared for distances (geometry/mesh_intersect.h) where one is at hand
+/// (else null): the measure then builds none of its own.
+StoredConvexity measure_file_convexity(
+    const Part& p, const std::string& cache_dir,
+    const std::function<std::shared_ptr<const PreparedMesh>()>& prepared = {});
 
 /// Sets p.convex, p.surface->concavity and ->closed from `c`: convex when the
 /// file's concavity, at this part's stretch, is within its concavity tolerance

@@ -1,0 +1,47 @@
+// Each part's distances (SolidDistance), built once from its surface and kept
+// while the run's memory budget lasts: the convexity measures and the
+// refinement that follows them ask for the same parts (a bearing ring is
+// measured nonconvex, then refined against its balls), and a part's
+// distances cost more to build than most of its pairs' searches.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "byte_cache.h"
+#include "geometry/solid_distance.h"
+#include "scene/parts.h"
+
+namespace pd {
+
+/// What a part's distances hold, for the cache's budget (tol::kSolidBytesPerTriangle).
+size_t solid_bytes(long triangles);
+
+/// The surface a part's distances are of: its own placed (a surface kept at
+/// an identity placement: the file's mesh itself, to the bit), else (inline or
+/// convex parts without one kept) the triangulated hull of each of its pieces.
+Mesh surface_mesh(const Part& p);
+
+/// The part's placed surface is its file's mesh unchanged: distances built for
+/// it are distances of the file's mesh too.
+bool placed_as_file(const Part& p);
+
+class PartSolids {
+ public:
+  /// `parts` outlives this; `budget` in bytes (RunOptions::memory_mb).
+  PartSolids(const std::vector<Part>& parts, size_t budget) : parts_(parts), cache_(budget) {}
+
+  /// Part p's distances, kept or built (shared by its pairs and threads).
+  /// Throws when the part has no triangles.
+  std::shared_ptr<const SolidDistance> of(int p);
+
+  size_t builds() const { return cache_.builds(); }
+  size_t drops() const { return cache_.drops(); }
+  size_t peak_bytes() const { return cache_.peak_bytes(); }
+
+ private:
+  const std::vector<Part>& parts_;
+  ByteCache<int, SolidDistance> cache_;
+};
+
+}  // namespace pd

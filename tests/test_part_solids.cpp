@@ -1,0 +1,81 @@
+// Each part's distances built once for the convexity measures and the
+// refinement (batch/part_solids.h).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "batch/part_solids.h"
+#include "corpus/cad_shapes.h"
+#include "scene/part_convexity.h"
+#include "scene/parts.h"
+#include "scene/scene.h"
+#include "scratch_dir.h"
+#include "stl_file.h"
+
+namespace {
+
+using nlohmann::json;
+using namespace pd;
+namespace shapes = pd::shapes;
+
+// One nonconvex bracket file, placed as it is and moved.
+std::vector<Part> bracket_parts(const std::string& name) {
+  const std::string dir = pd_test::scratch_dir("part_solids", name).string();
+  const std::string file = dir + "/bracket.stl";
+  pd::test::write_binary_stl(file, shapes::l_bracket(40, 5, 20));
+  const json moved = {{1, 0, 0, 0.25}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+  const json scene = {{"tolerance", 0.1},
+                      {"parts",
+                       {{{"id", "as_file"}, {"mesh", file}},
+                        {{"id", "moved"}, {"mesh", file}, {"transform", moved}}}}};
+  const SceneSpec spec = parse_scene_json(scene.dump(), "scene.json", "");
+  std::vector<Part> parts = build_parts(spec, 1);
+  for (const Part& p : parts) EXPECT_FALSE(p.error) << *p.error;
+  return parts;
+}
+
+TEST(PartSolids, APartPlacedAsItsFileIsMeasuredWithTheDistancesTheRefinementUses) {
+  const std::vector<Part> parts = bracket_parts("shared");
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_TRUE(placed_as_file(parts[0]));
+  EXPECT_FALSE(placed_as_file(parts[1]));
+  // Its surface is the file's mesh to the bit.
+  const Mesh placed = surface_mesh(parts[0]);
+  const std::shared_ptr<const Mesh> file = file_mesh_of(*parts[0].surface);
+  EXPECT_EQ(placed.vertices, file->vertices);
+  EXPECT_EQ(placed.triangles, file->triangles);
+
+  PartSolids solids(parts, size_t(64) << 20);
+  int asked = 0;
+  const auto prepared = [&]() -> std::shared_ptr<const PreparedMesh> {
+    ++asked;
+    const std::shared_ptr<const SolidDistance> d = solids.of(0);
+    return {d, &d->mesh()};
+  };
+  const StoredConvexity shared = measure_file_convexity(parts[0], "", prepared);
+  const StoredConvexity own = measure_file_convexity(parts[0], "");
+  EXPECT_EQ(asked, 1);
+  EXPECT_EQ(shared.concavity, own.concavity);  // the same bits
+  EXPECT_EQ(shared.closed, own.closed);
+  EXPECT_GT(shared.concavity, 0.1);
+  // The refinement then finds the part's distances built.
+  EXPECT_EQ(solids.builds(), 1u);
+  EXPECT_EQ(solids.of(0).get(), solids.of(0).get());
+  EXPECT_EQ(solids.builds(), 1u);
+  // The moved part's are its own, of its placed surface.
+  EXPECT_NEAR(solids.of(1)->box().min().x() - solids.of(0)->box().min().x(), 0.25, 1e-12);
+  EXPECT_EQ(solids.builds(), 2u);
+}
+
+TEST(PartSolids, ABudgetTooSmallForAPartBuildsItAgainWhenAskedAgain) {
+  const std::vector<Part> parts = bracket_parts("tiny_budget");
+  PartSolids solids(parts, 1);
+  EXPECT_TRUE(solids.of(0)->closed());
+  EXPECT_TRUE(solids.of(1)->closed());  // the first, held by no one, makes room
+  EXPECT_TRUE(solids.of(0)->closed());
+  EXPECT_EQ(solids.builds(), 3u);
+  EXPECT_GE(solids.drops(), 1u);
+}
+
+}  // namespace
