@@ -394,8 +394,8 @@ inline constexpr double kShardPairCost = 200.0;
 inline constexpr long kInlineHullCacheVertices = 1000;
 
 /// Bytes a part's distances (SolidDistance: its mesh, trees and shells) hold
-/// per triangle, as the refinement's cache counts them against the memory
-/// budget (batch/refine.cpp): the resident growth of building them, measured
+/// per triangle, as their cache counts them against the memory budget
+/// (batch/part_solids.h): the resident growth of building them, measured
 /// on CAD meshes (a union of shells holds up to twice as much; rounded up).
 inline constexpr long kSolidBytesPerTriangle = 400;
 
