@@ -48,9 +48,10 @@ TEST(PartSolids, APartPlacedAsItsFileIsMeasuredWithTheDistancesTheRefinementUses
 
   PartSolids solids(parts, size_t(64) << 20);
   int asked = 0;
-  const auto prepared = [&]() -> std::shared_ptr<const PreparedMesh> {
+  const auto prepared = [&](const Mesh& m) -> std::shared_ptr<const PreparedMesh> {
     ++asked;
-    const std::shared_ptr<const SolidDistance> d = solids.of(0);
+    EXPECT_EQ(m.vertices, file->vertices);  // the file's mesh, as read
+    const std::shared_ptr<const SolidDistance> d = solids.of(0, m);
     return {d, &d->mesh()};
   };
   const StoredConvexity shared = measure_file_convexity(parts[0], "", prepared);

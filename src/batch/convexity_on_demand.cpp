@@ -94,9 +94,9 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
     std::optional<StoredConvexity> c;
     const auto as_file = std::find_if(instances.begin(), instances.end(),
                                       [&](int p) { return placed_as_file(parts[size_t(p)]); });
-    const auto prepared = [&]() -> std::shared_ptr<const PreparedMesh> {
+    const auto prepared = [&](const Mesh& file_mesh) -> std::shared_ptr<const PreparedMesh> {
       if (as_file == instances.end()) return nullptr;
-      const std::shared_ptr<const SolidDistance> d = solids.of(*as_file);
+      const std::shared_ptr<const SolidDistance> d = solids.of(*as_file, file_mesh);
       return {d, &d->mesh()};  // keeps the distances alive
     };
     try {

@@ -46,7 +46,19 @@ Mesh surface_mesh(const Part& p) {
 
 std::shared_ptr<const SolidDistance> PartSolids::of(int p) {
   return cache_.get(p, [&] {
-    auto d = std::make_shared<const SolidDistance>(surface_mesh(parts_[size_t(p)]));
+    const Part& part = parts_[size_t(p)];
+    // A file placed as it is: its mesh as the store gives it, not a copy.
+    auto d = placed_as_file(part)
+                 ? std::make_shared<const SolidDistance>(*file_mesh_of(*part.surface))
+                 : std::make_shared<const SolidDistance>(surface_mesh(part));
+    return ByteCache<int, SolidDistance>::Built{d, solid_bytes(d->mesh().faces())};
+  });
+}
+
+std::shared_ptr<const SolidDistance> PartSolids::of(int p, const Mesh& file_mesh) {
+  if (!placed_as_file(parts_[size_t(p)])) return of(p);
+  return cache_.get(p, [&] {
+    auto d = std::make_shared<const SolidDistance>(file_mesh);
     return ByteCache<int, SolidDistance>::Built{d, solid_bytes(d->mesh().faces())};
   });
 }

@@ -34,6 +34,9 @@ class PartSolids {
   /// Part p's distances, kept or built (shared by its pairs and threads).
   /// Throws when the part has no triangles.
   std::shared_ptr<const SolidDistance> of(int p);
+  /// The same for a part placed as its file (placed_as_file), built (when not
+  /// kept) from `file_mesh`, its file's mesh the caller has read already.
+  std::shared_ptr<const SolidDistance> of(int p, const Mesh& file_mesh);
 
   size_t builds() const { return cache_.builds(); }
   size_t drops() const { return cache_.drops(); }

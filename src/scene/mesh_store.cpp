@@ -123,10 +123,13 @@ std::optional<Mesh> MeshStore::get(const std::string& key) const {
   m.vertices.resize(3, nv);
   m.triangles.resize(3, nt);
   const char* at = b.data() + head;
-  if (width == 4) {
-    Eigen::Matrix<float, 3, Eigen::Dynamic> v(3, nv);
-    if (nv > 0) std::memcpy(v.data(), at, size_t(v.size()) * sizeof(float));
-    m.vertices = v.cast<double>();
+  if (width == 4) {  // each float widened in place: no float copy of them all
+    double* out = m.vertices.data();
+    for (Eigen::Index k = 0; k < m.vertices.size(); ++k) {
+      float f;
+      std::memcpy(&f, at + size_t(k) * sizeof(float), sizeof f);
+      out[k] = f;
+    }
   } else if (nv > 0) {
     std::memcpy(m.vertices.data(), at, size_t(m.vertices.size()) * sizeof(double));
   }

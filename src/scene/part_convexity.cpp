@@ -31,7 +31,7 @@ std::string convexity_key_of(const Part& p) {
 
 StoredConvexity measure_file_convexity(
     const Part& p, const std::string& cache_dir,
-    const std::function<std::shared_ptr<const PreparedMesh>()>& prepared) {
+    const std::function<std::shared_ptr<const PreparedMesh>(const Mesh&)>& prepared) {
   const PartSurface& s = *p.surface;
   const std::string key = convexity_key_of(p);
   if (auto hit = read_cached_convexity(cache_dir, key)) return *hit;
@@ -39,7 +39,7 @@ StoredConvexity measure_file_convexity(
   // No hull points: the screen hulls the file's own distinct positions (the
   // same whichever instance asks) and welds the file once for that and its
   // surface samples.
-  const std::shared_ptr<const PreparedMesh> held = prepared ? prepared() : nullptr;
+  const std::shared_ptr<const PreparedMesh> held = prepared ? prepared(*mesh) : nullptr;
   const ConvexityScreen screen =
       held ? screen_convexity(*mesh, *held, tolerance_of(s), stop_above_of(s))
            : screen_convexity(*mesh, tolerance_of(s), stop_above_of(s));

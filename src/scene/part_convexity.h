@@ -27,11 +27,12 @@ std::string convexity_key_of(const Part& p);
 /// positions hulled in file coordinates, so the answer does not depend on
 /// which instance asks) and cached. Throws std::runtime_error when the
 /// surface cannot be read. `prepared`, when given, returns the file's mesh
-/// prepared for distances (geometry/mesh_intersect.h) where one is at hand
-/// (else null): the measure then builds none of its own.
+/// (the argument, as read) prepared for distances (geometry/mesh_intersect.h)
+/// where the caller keeps one (else null): the measure then builds none of
+/// its own.
 StoredConvexity measure_file_convexity(
     const Part& p, const std::string& cache_dir,
-    const std::function<std::shared_ptr<const PreparedMesh>()>& prepared = {});
+    const std::function<std::shared_ptr<const PreparedMesh>(const Mesh&)>& prepared = {});
 
 /// Sets p.convex, p.surface->concavity and ->closed from `c`: convex when the
 /// file's concavity, at this part's stretch, is within its concavity tolerance
