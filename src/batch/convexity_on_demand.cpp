@@ -1,7 +1,5 @@
 #include "batch/convexity_on_demand.h"
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -109,10 +107,11 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
       else
         parts[size_t(p)].convex = false;
     }
-    // The file's mesh and the distances the cache let go go back to the
-    // system, not to a thread's heap that would keep them resident through
-    // the refinement (100M triangles: 0.9 GB of them).
-    malloc_trim(0);
+    // The distances the cache let go go back to the system, not to a
+    // thread's heap that would keep them resident through the refinement
+    // (100M triangles: 0.9 GB of them). The file's mesh stays in the heap
+    // for the next measure.
+    solids.give_back_dropped();
     progress.tick();
   });
   progress.finish();

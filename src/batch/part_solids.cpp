@@ -1,5 +1,7 @@
 #include "batch/part_solids.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 
 #include "geometry/hull.h"
@@ -61,6 +63,10 @@ std::shared_ptr<const SolidDistance> PartSolids::of(int p, const Mesh& file_mesh
     auto d = std::make_shared<const SolidDistance>(file_mesh);
     return ByteCache<int, SolidDistance>::Built{d, solid_bytes(d->mesh().faces())};
   });
+}
+
+void PartSolids::give_back_dropped() {
+  if (const size_t dropped = cache_.drops(); dropped > given_back_.exchange(dropped)) malloc_trim(0);
 }
 
 }  // namespace pd

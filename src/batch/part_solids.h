@@ -5,6 +5,7 @@
 // distances cost more to build than most of its pairs' searches.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,12 @@ class PartSolids {
   /// kept) from `file_mesh`, its file's mesh the caller has read already.
   std::shared_ptr<const SolidDistance> of(int p, const Mesh& file_mesh);
 
+  /// Hands what the cache has dropped since the last call back to the
+  /// system (malloc_trim), not to a heap that would keep it resident for the
+  /// rest of the run; nothing when it dropped nothing (a trim also gives back
+  /// what the next build would take again, page by page).
+  void give_back_dropped();
+
   size_t builds() const { return cache_.builds(); }
   size_t drops() const { return cache_.drops(); }
   size_t peak_bytes() const { return cache_.peak_bytes(); }
@@ -45,6 +52,7 @@ class PartSolids {
  private:
   const std::vector<Part>& parts_;
   ByteCache<int, SolidDistance> cache_;
+  std::atomic<size_t> given_back_{0};  ///< drops() at the last trim
 };
 
 }  // namespace pd

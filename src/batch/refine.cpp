@@ -1,9 +1,6 @@
 #include "batch/refine.h"
 
-#include <malloc.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -467,7 +464,6 @@ class Refinement {
       }
     };
     Progress progress(flagged_.size(), options_.quiet, "mesh tests");
-    std::atomic<size_t> trimmed{0};
     parallel_for(order.size(), options_.jobs, [&](size_t k) {
       const size_t n = order[k];
       const auto [a, b] = pairs_[flagged_[n]];
@@ -488,10 +484,7 @@ class Refinement {
             *sa, *sb, tolerance(n), c.tolerance ? &*c.tolerance : nullptr,
             bound_widening(parts_[a], parts_[b]), results_[flagged_[n]], verdicts_[n], why_not_[n]);
       }
-      // What the cache dropped goes back to the system, not to a heap that
-      // would keep it resident for the rest of the run.
-      if (const size_t dropped = solids_.drops(); dropped > trimmed.exchange(dropped))
-        malloc_trim(0);
+      solids_.give_back_dropped();
       progress.tick();
     });
     progress.finish();

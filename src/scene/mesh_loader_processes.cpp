@@ -261,12 +261,10 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
   auto task = [&](size_t k) {
     const bool capped = loader_setup(memory_mb);
     try {
-      std::string payload = "D" + digest(k, read_one(files[k], capped, memory_mb));
-      // The file is let go: its pages go back to the system, so a loader
-      // holds only the file it is on (the heap kept within one read serves
-      // assimp's line buffers, above).
-      malloc_trim(0);
-      return payload;
+      // The file is let go into the loader's heap, which the next file takes
+      // again without a page fault per page; the largest files come first,
+      // so what a loader holds after one is no more than it held during it.
+      return "D" + digest(k, read_one(files[k], capped, memory_mb));
     } catch (const std::bad_alloc&) {
       return "E" + out_of_memory(files[k].path, capped, memory_mb);
     } catch (const std::exception& e) {
