@@ -66,7 +66,8 @@ std::shared_ptr<const SolidDistance> PartSolids::of(int p, const Mesh& file_mesh
 }
 
 void PartSolids::give_back_dropped() {
-  if (const size_t dropped = cache_.drops(); dropped > given_back_.exchange(dropped)) malloc_trim(0);
+  if (const size_t dropped = cache_.drops(); dropped > given_back_.exchange(dropped))
+    malloc_trim(0);
 }
 
 }  // namespace pd
