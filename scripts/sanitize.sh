@@ -36,9 +36,12 @@ export LSAN_OPTIONS="suppressions=$ROOT/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LS
 # step in 16-, 32- and 64-facet bores, each also decided the strict way: 44 s, its code run by the
 # shouldered pin and the exact-fit pin), and the STEP assembly stories (whole pdcheck runs with the
 # exact stage on every finding, 40-75 s each under ASan; the same code runs under ASan in the
-# BrepFile, BrepConfirm, ShapeMesh and RealBrepFiles tests). All of them run in the release build's
-# suite.
-SLOW="^(html_report_browser|auto_tolerance_mixed_assembly|TessellationSag\.WithinTenPercentOfTheTrueDeviation|OverlapThickness\.ConvexPairsBracketTheChebyshevCentreAndDecideBothWays|OverlapThickness\.PinHalfAStepTurnedInItsBoreIsThinAndBracketed|Decompose\..*|Nonconvex\..*|Contacts\.EveryFamilyGivesTheExactDepth|Exact\.BoundedByDenseDirectionSampling|Cli\.JobsDoNotChangeALargerReport|Checks\.WarmStartGivesTheColdValues|Checks\.IpoptDistanceMatchesTheExactDistance|Methods\.EveryMethodIsAnUpperBoundOnExact|Mlsl\.PaperLikePairsMatchExact|HardCases\.TwoThousandVerticesPerPart|StepAssemblies\.OneFilePerPartAndAPartList|StepAssemblies\.OneAssemblyFileEveryRelationConfirmed|step_assemblies_quick)$"
+# BrepFile, BrepConfirm, ShapeMesh and RealBrepFiles tests), and four more sweeps of 17-27 s each
+# under ASan whose code their suites' other tests run here (every face of a STEP file sampled densely
+# against its sag bound, the sharded report merged and compared pair by pair, the contact sampling
+# rules' stop reasons, the plane models' optimum on a pin in its bore). All of them run in the
+# release build's suite.
+SLOW="^(html_report_browser|auto_tolerance_mixed_assembly|TessellationSag\.WithinTenPercentOfTheTrueDeviation|OverlapThickness\.ConvexPairsBracketTheChebyshevCentreAndDecideBothWays|OverlapThickness\.PinHalfAStepTurnedInItsBoreIsThinAndBracketed|Decompose\..*|Nonconvex\..*|Contacts\.EveryFamilyGivesTheExactDepth|Exact\.BoundedByDenseDirectionSampling|Cli\.JobsDoNotChangeALargerReport|Checks\.WarmStartGivesTheColdValues|Checks\.IpoptDistanceMatchesTheExactDistance|Methods\.EveryMethodIsAnUpperBoundOnExact|Mlsl\.PaperLikePairsMatchExact|HardCases\.TwoThousandVerticesPerPart|StepAssemblies\.OneFilePerPartAndAPartList|StepAssemblies\.OneAssemblyFileEveryRelationConfirmed|step_assemblies_quick|BrepFile\.EveryFaceLiesWithinTheSagBoundOfTheMesh|Shard\.MergedShardsEqualTheUnshardedReport|Contacts\.StopReasonsOfTheSamplingRules|MaxMinAffine\.EqualsTheExactOptimumOnAPinInItsBore)$"
 exclude=(-E "$SLOW")
 [ "${PDCHECK_SANITIZE_ALL:-0}" = 1 ] && exclude=()
 (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" "${exclude[@]}" "$@")
