@@ -41,10 +41,10 @@ TEST(PartSolids, APartPlacedAsItsFileIsMeasuredWithTheDistancesTheRefinementUses
   EXPECT_TRUE(placed_as_file(parts[0]));
   EXPECT_FALSE(placed_as_file(parts[1]));
   // Its surface is the file's mesh to the bit.
-  const Mesh placed = surface_mesh(parts[0]);
+  const std::shared_ptr<const Mesh> placed = surface_mesh(parts[0]);
   const std::shared_ptr<const Mesh> file = file_mesh_of(*parts[0].surface);
-  EXPECT_EQ(placed.vertices, file->vertices);
-  EXPECT_EQ(placed.triangles, file->triangles);
+  EXPECT_EQ(placed->vertices, file->vertices);
+  EXPECT_EQ(placed->triangles, file->triangles);
 
   PartSolids solids(parts, size_t(64) << 20);
   int asked = 0;

@@ -19,10 +19,10 @@ bool placed_as_file(const Part& p) {
   return p.surface && p.surface->placement == Mat4::Identity();
 }
 
-Mesh surface_mesh(const Part& p) {
-  if (placed_as_file(p)) return *file_mesh_of(*p.surface);
-  if (p.surface) return placed_mesh_of(*p.surface);
-  Mesh m;
+std::shared_ptr<const Mesh> surface_mesh(const Part& p) {
+  if (placed_as_file(p)) return file_mesh_of(*p.surface);
+  if (p.surface) return std::make_shared<const Mesh>(placed_mesh_of(*p.surface));
+  auto m = std::make_shared<Mesh>();
   std::vector<Vec3> v;
   std::vector<std::array<int, 3>> t;
   for (const Hull& h : p.pieces) {
@@ -38,21 +38,17 @@ Mesh surface_mesh(const Part& p) {
       t.push_back({base + tri[0], base + tri[1], base + tri[2]});
     }
   }
-  m.vertices.resize(3, v.size());
-  for (size_t k = 0; k < v.size(); ++k) m.vertices.col(k) = v[k];
-  m.triangles.resize(3, t.size());
+  m->vertices.resize(3, v.size());
+  for (size_t k = 0; k < v.size(); ++k) m->vertices.col(k) = v[k];
+  m->triangles.resize(3, t.size());
   for (size_t k = 0; k < t.size(); ++k)
-    m.triangles.col(k) = Eigen::Vector3i(t[k][0], t[k][1], t[k][2]);
+    m->triangles.col(k) = Eigen::Vector3i(t[k][0], t[k][1], t[k][2]);
   return m;
 }
 
 std::shared_ptr<const SolidDistance> PartSolids::of(int p) {
   return cache_.get(p, [&] {
-    const Part& part = parts_[size_t(p)];
-    // A file placed as it is: its mesh as the store gives it, not a copy.
-    auto d = placed_as_file(part)
-                 ? std::make_shared<const SolidDistance>(*file_mesh_of(*part.surface))
-                 : std::make_shared<const SolidDistance>(surface_mesh(part));
+    auto d = std::make_shared<const SolidDistance>(*surface_mesh(parts_[size_t(p)]));
     return ByteCache<int, SolidDistance>::Built{d, solid_bytes(d->mesh().faces())};
   });
 }

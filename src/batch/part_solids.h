@@ -19,9 +19,10 @@ namespace pd {
 size_t solid_bytes(long triangles);
 
 /// The surface a part's distances are of: its own placed (a surface kept at
-/// an identity placement: the file's mesh itself, to the bit), else (inline or
-/// convex parts without one kept) the triangulated hull of each of its pieces.
-Mesh surface_mesh(const Part& p);
+/// an identity placement: the file's mesh itself, to the bit and not copied),
+/// else (inline or convex parts without one kept) the triangulated hull of
+/// each of its pieces.
+std::shared_ptr<const Mesh> surface_mesh(const Part& p);
 
 /// The part's placed surface is its file's mesh unchanged: distances built for
 /// it are distances of the file's mesh too.
