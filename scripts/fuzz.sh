@@ -22,7 +22,9 @@ targets=("$target")
 [ "$target" = all ] && targets=(scene stl obj ply gltf)
 
 configure() {  # BUILD SANITIZERS OPT
-  cmake -S "$ROOT" -B "$1" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
+  local gen=()  # Ninja for a new directory (scripts/setup.sh says why)
+  [ -f "$1/CMakeCache.txt" ] || ! command -v ninja >/dev/null || gen=(-G Ninja)
+  cmake "${gen[@]}" -S "$ROOT" -B "$1" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="$3 -gline-tables-only -DNDEBUG" \
     -DPDCHECK_SANITIZE=ON -DPDCHECK_SANITIZERS="$2" -DPDCHECK_FUZZ=ON >/dev/null
   cmake --build "$1" -j 2 --target "${targets[@]/#/fuzz_}" >&2

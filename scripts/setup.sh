@@ -12,7 +12,7 @@ case "$MODE" in
 esac
 
 # What building pdcheck needs (and --html: three.js, inlined into the page).
-PACKAGES=(cmake g++ make pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
+PACKAGES=(cmake g++ make ninja-build pkg-config libeigen3-dev coinor-libipopt-dev libcli11-dev
           nlohmann-json3-dev libassimp-dev libqhull-dev libthread-pool-dev libxxhash-dev
           libcgal-dev libgmp-dev libmpfr-dev
           libocct-data-exchange-dev libtbb-dev  # STEP and .brep input (Open CASCADE 7.6)
@@ -42,14 +42,19 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 JOBS="$(nproc 2>/dev/null || echo 2)"
+# Ninja for a new build directory: it compiles a library's sources while the libraries below it
+# still build, where make waits for them (a clean sanitizer build: 589 s with make, 475 s with
+# Ninja, 2 cores). A directory configured before keeps its generator.
+GEN=()
+[ -f "$ROOT/build/CMakeCache.txt" ] || ! command -v ninja >/dev/null || GEN=(-G Ninja)
 if [ "$MODE" = demo ]; then
   # A build directory configured before (by test.sh) keeps its tests; a new one
   # is configured without them (GoogleTest is not installed for the demo).
   TESTING=()
   [ -f "$ROOT/build/CMakeCache.txt" ] || TESTING=(-DBUILD_TESTING=OFF)
-  cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release "${TESTING[@]}" >/dev/null
+  cmake "${GEN[@]}" -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release "${TESTING[@]}" >/dev/null
   cmake --build "$ROOT/build" -j "$JOBS" --target pdcheck >&2
 else
-  cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
+  cmake "${GEN[@]}" -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
   cmake --build "$ROOT/build" -j "$JOBS" >&2
 fi
