@@ -3,12 +3,14 @@
 // other pairs of the run.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "batch/run.h"
 #include "corpus/cad_shapes.h"
+#include "scene/mesh_store.h"
 #include "scene/part_convexity.h"
 #include "scene/scene.h"
 #include "scratch_dir.h"
@@ -186,6 +188,31 @@ TEST(ConvexityOnDemand, EveryInstanceOfAFileGetsTheSameMeasure) {
   EXPECT_NE(convexity_key_of(parts[0]), convexity_key_of(parts[3]));
   EXPECT_NEAR(parts[3].surface->concavity, 25.4 * c[0].concavity,
               1e-6 * parts[3].surface->concavity);
+}
+
+TEST(ConvexityOnDemand, TheLoadersHullServesTheMeasureToTheBit) {
+  // The loader keeps a file's hull and facets beside its surface in the mesh
+  // store, so the measure runs no second qhull; without them (a hull from the
+  // hull cache has no facets) the measure finds them again the same way.
+  const std::string dir = pd_test::scratch_dir("on_demand", "kept_hull").string();
+  const std::string file = dir + "/bracket.stl";
+  pd::test::write_binary_stl(file, shapes::l_bracket(40, 5, 20));
+  const json scene = {{"tolerance", 0.1}, {"parts", {{{"id", "bracket"}, {"mesh", file}}}}};
+  const SceneSpec spec = parse_scene_json(scene.dump(), "scene.json", "");
+  const std::string cache = dir + "/cache";
+  std::vector<Part> parts = build_parts(spec, 1, {}, kDefaultLoadTimeout, PartsCache{cache});
+  ASSERT_EQ(parts.size(), 1u);
+  ASSERT_FALSE(parts[0].error) << *parts[0].error;
+  ASSERT_TRUE(parts[0].surface && parts[0].surface->stored);
+  const StoredMesh& stored = *parts[0].surface->stored;
+  ASSERT_TRUE(stored.store->get_hull(stored.key)) << "the loader kept the file's hull";
+  const StoredConvexity kept = measure_file_convexity(parts[0], "");
+  std::filesystem::remove(std::filesystem::path(stored.store->dir()) / (stored.key + ".pdh"));
+  ASSERT_FALSE(stored.store->get_hull(stored.key));
+  const StoredConvexity found = measure_file_convexity(parts[0], "");
+  EXPECT_GT(kept.concavity, 0.1);
+  EXPECT_EQ(kept.concavity, found.concavity);
+  EXPECT_EQ(kept.closed, found.closed);
 }
 
 }  // namespace

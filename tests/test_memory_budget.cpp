@@ -122,6 +122,20 @@ TEST(MeshStore, KeepsMeshesWholeAndMissesWhatIsDamaged) {
   const std::string sag_entry = d + "meshes/b.pds";
   std::filesystem::resize_file(sag_entry, std::filesystem::file_size(sag_entry) - 1);
   EXPECT_FALSE(store->get_sags("b"));
+  // A surface's hull and facets as convex_hull found them: to the bit, or a miss.
+  pd::HullTriangles facets;
+  const pd::Points hull = pd::convex_hull(f64.vertices, &facets).vertices;
+  ASSERT_FALSE(facets.triangles.empty());
+  ASSERT_EQ(store->put_hull("b", hull, facets), "");
+  const auto kept = store->get_hull("b");
+  ASSERT_TRUE(kept);
+  EXPECT_EQ(kept->first, hull);
+  EXPECT_EQ(kept->second.triangles, facets.triangles);
+  EXPECT_EQ(kept->second.normals, facets.normals);
+  EXPECT_FALSE(store->get_hull("a"));
+  const std::string hull_entry = d + "meshes/b.pdh";
+  std::filesystem::resize_file(hull_entry, std::filesystem::file_size(hull_entry) - 1);
+  EXPECT_FALSE(store->get_hull("b"));
   std::string dir;
   {
     const auto temporary = MeshStore::temporary();

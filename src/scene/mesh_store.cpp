@@ -23,6 +23,9 @@ namespace {
 constexpr CacheKind kMeshKind{"pdcheck-mesh-1", ".pdm"};
 // Per-triangle floats: their count, then the values as stored in memory.
 constexpr CacheKind kSagsKind{"pdcheck-sags-1", ".pds"};
+// A hull: vertex count, facet count, then the vertices (doubles), the facets'
+// corners (ints) and their unit normals (doubles), as stored in memory.
+constexpr CacheKind kHullKind{"pdcheck-hull-1", ".pdh"};
 
 bool fits_float(const Points& p) {
   const double* d = p.data();
@@ -102,6 +105,55 @@ std::optional<std::vector<float>> MeshStore::get_sags(const std::string& key) co
   if (n < 0 || body->size() != sizeof n + size_t(n) * sizeof(float)) return std::nullopt;
   std::vector<float> out(static_cast<size_t>(n));
   if (n > 0) std::memcpy(out.data(), body->data() + sizeof n, size_t(n) * sizeof(float));
+  return out;
+}
+
+std::string MeshStore::put_hull(const std::string& key, const Points& vertices,
+                                const HullTriangles& facets) const {
+  std::string body;
+  const size_t nv = size_t(vertices.cols()), nt = facets.triangles.size();
+  if (facets.normals.size() != nt) return "a hull's facets and normals differ in number";
+  body.reserve(16 + nv * 24 + nt * (12 + 24));
+  put_raw(body, std::int64_t(nv));
+  put_raw(body, std::int64_t(nt));
+  body.append(reinterpret_cast<const char*>(vertices.data()), nv * 3 * sizeof(double));
+  body.append(reinterpret_cast<const char*>(facets.triangles.data()),
+              nt * sizeof(facets.triangles[0]));
+  for (const Vec3& n : facets.normals)
+    body.append(reinterpret_cast<const char*>(n.data()), 3 * sizeof(double));
+  return write_cache_entry(dir_, kHullKind, key, body);
+}
+
+std::optional<std::pair<Points, HullTriangles>> MeshStore::get_hull(const std::string& key) const {
+  const std::optional<std::string> body = read_cache_entry(dir_, kHullKind, key);
+  if (!body) return std::nullopt;
+  const std::string& b = *body;
+  std::int64_t nv = 0, nt = 0;
+  if (b.size() < sizeof nv + sizeof nt) return std::nullopt;
+  std::memcpy(&nv, b.data(), sizeof nv);
+  std::memcpy(&nt, b.data() + sizeof nv, sizeof nt);
+  if (nv < 0 || nt < 0 ||
+      b.size() != sizeof nv + sizeof nt + size_t(nv) * 3 * sizeof(double) +
+                      size_t(nt) * (sizeof(std::array<int, 3>) + 3 * sizeof(double)))
+    return std::nullopt;
+  std::pair<Points, HullTriangles> out;
+  Points& v = out.first;
+  HullTriangles& f = out.second;
+  v.resize(3, nv);
+  f.triangles.resize(size_t(nt));
+  f.normals.resize(size_t(nt));
+  const char* at = b.data() + sizeof nv + sizeof nt;
+  if (nv > 0) std::memcpy(v.data(), at, size_t(nv) * 3 * sizeof(double));
+  at += size_t(nv) * 3 * sizeof(double);
+  if (nt > 0) std::memcpy(f.triangles.data(), at, size_t(nt) * sizeof(std::array<int, 3>));
+  at += size_t(nt) * sizeof(std::array<int, 3>);
+  for (Vec3& n : f.normals) {
+    std::memcpy(n.data(), at, 3 * sizeof(double));
+    at += 3 * sizeof(double);
+  }
+  for (const auto& t : f.triangles)  // a garbled index is a miss
+    for (int k : t)
+      if (k < 0 || k >= nv) return std::nullopt;
   return out;
 }
 

@@ -8,8 +8,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "geometry/hull.h"
 #include "geometry/mesh.h"
 #include "termination.h"
 
@@ -42,6 +44,13 @@ class MeshStore {
   std::string put_sags(const std::string& key, const std::vector<float>& sags) const;
   /// The values stored under `key`, or nullopt when absent or not whole.
   std::optional<std::vector<float>> get_sags(const std::string& key) const;
+  /// Stores the mesh's hull as convex_hull found it (its vertices and facets)
+  /// under `key`, beside it: "" or why not. Its convexity measure then needs
+  /// no second qhull run.
+  std::string put_hull(const std::string& key, const Points& vertices,
+                       const HullTriangles& facets) const;
+  /// The hull stored under `key`, or nullopt when absent or not whole.
+  std::optional<std::pair<Points, HullTriangles>> get_hull(const std::string& key) const;
   /// Whether an entry is there (not read: get() checks it).
   bool has(const std::string& key) const;
 

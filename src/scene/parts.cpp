@@ -335,6 +335,9 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
         f.closed = c.closed;
       }
       std::string why = cache.meshes->put(f.hash, meshes[0]);
+      // Its hull and facets too, for the convexity measure a pair may ask for.
+      if (why.empty() && convexity_left_for_pairs(spec) && !f.hulls_cached)
+        why = cache.meshes->put_hull(f.hash, f.reduced[0], f.facets);
       // A B-rep surface's triangles carry their faces' sags (where on the part
       // its sag is): kept beside it for the exact stage.
       if (why.empty() && !f.read.triangle_sags.empty() &&
