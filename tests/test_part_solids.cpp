@@ -5,7 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "batch/convexity_on_demand.h"
+#include "batch/pair_solve.h"
 #include "batch/part_solids.h"
+#include "batch/refine.h"
 #include "corpus/cad_shapes.h"
 #include "scene/part_convexity.h"
 #include "scene/parts.h"
@@ -77,6 +80,53 @@ TEST(PartSolids, ABudgetTooSmallForAPartBuildsItAgainWhenAskedAgain) {
   EXPECT_TRUE(solids.of(0)->closed());
   EXPECT_EQ(solids.builds(), 3u);
   EXPECT_GE(solids.drops(), 1u);
+}
+
+TEST(PartSolids, TheMeasuresLeaveCachedThePartsTheRefinementAsksForFirst) {
+  // Six plates in a row, each with a pin through its hole (clear of it), every
+  // file placed as it is, and a budget for about three plates' distances. The
+  // plates are measured nonconvex (the pins never), against the order the
+  // refinement then takes, so the three it asks for first are still kept: it
+  // builds only the other three and the pins.
+  const std::string dir = pd_test::scratch_dir("part_solids", "measure_order").string();
+  json list = json::array();
+  for (int k = 0; k < 6; ++k) {
+    const Vec3 at(100.0 * k, 0, 0);
+    const std::string plate = dir + "/plate" + std::to_string(k) + ".stl",
+                      pin = dir + "/pin" + std::to_string(k) + ".stl";
+    pd::test::write_binary_stl(plate,
+                               shapes::translated(shapes::plate_with_hole(40, 6, 5, 768), at));
+    pd::test::write_binary_stl(pin, shapes::translated(shapes::cylinder({0, 0}, 4, -5, 15, 8), at));
+    list.push_back({{"id", "plate" + std::to_string(k)}, {"mesh", plate}});
+    list.push_back({{"id", "pin" + std::to_string(k)}, {"mesh", pin}});
+  }
+  const json scene = {{"tolerance", 0.1}, {"parts", list}};
+  std::vector<Part> parts = build_parts(parse_scene_json(scene.dump(), "scene.json", ""), 1);
+  std::vector<std::pair<int, int>> pairs;
+  for (int k = 0; k < 6; ++k) pairs.push_back({2 * k, 2 * k + 1});
+  const std::function<PairChecks(int, int)> checks = [](int, int) { return PairChecks{}; };
+  IpoptLocalSolver ipopt;
+  std::vector<PairResult> results;
+  for (auto [a, b] : pairs)
+    results.push_back(
+        solve_part_pair(a, parts[a], b, parts[b], SolverSettings{}, 0.1, ipopt, checks(a, b)));
+  const size_t plate = solid_bytes(file_mesh_of(*parts[0].surface)->triangles.cols()),
+               pin = solid_bytes(file_mesh_of(*parts[1].surface)->triangles.cols());
+  ASSERT_LT(12 * pin, plate);  // the six pins fit in the half plate to spare
+  PartSolids solids(parts, 3 * plate + plate / 2);
+  RunOptions options;
+  options.tolerance = 0.1;
+  options.quiet = true;
+  options.jobs = 1;
+  measure_convexity_on_demand(parts, pairs, results, options, checks, solids);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(parts[size_t(2 * k)].convex, false) << k;
+    EXPECT_FALSE(parts[size_t(2 * k + 1)].convex.has_value()) << k;
+  }
+  EXPECT_EQ(solids.builds(), 6u);
+  refine_nonconvex_pairs(parts, pairs, results, options, checks, solids);
+  for (const PairResult& r : results) EXPECT_EQ(r.status, Status::kSeparated);
+  EXPECT_EQ(solids.builds(), 6u + 6u + 3u);
 }
 
 }  // namespace

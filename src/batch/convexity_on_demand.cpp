@@ -1,11 +1,13 @@
 #include "batch/convexity_on_demand.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
 #include <tuple>
 
+#include "batch/locality.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/run_stages.h"
@@ -81,11 +83,19 @@ void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunO
   for (int p : which) by_key[convexity_key_of(parts[size_t(p)])].push_back(p);
   std::vector<const std::vector<int>*> files;
   for (const auto& [key, instances] : by_key) files.push_back(&instances);
-  // The largest first, so that no large file is left for one thread at the
-  // end (each file's measure is its own: the order changes no result).
-  std::stable_sort(files.begin(), files.end(), [&](const auto* x, const auto* y) {
-    return parts[size_t(x->front())].vertex_count > parts[size_t(y->front())].vertex_count;
-  });
+  // Against the refinement's order (batch/locality.h): the files it asks for
+  // first are measured last, so the distances the cache keeps when the
+  // measures end are the ones it needs first (a budget smaller than every
+  // measured part's distances drops the others). Each file's measure is its
+  // own: the order changes no result.
+  const std::vector<std::uint64_t> code = locality_codes(parts);
+  const auto where = [&](const std::vector<int>* instances) {  // of the instance the cache keeps
+    for (int p : *instances)
+      if (placed_as_file(parts[size_t(p)])) return code[size_t(p)];
+    return code[size_t(instances->front())];
+  };
+  std::stable_sort(files.begin(), files.end(),
+                   [&](const auto* x, const auto* y) { return where(x) > where(y); });
   Progress progress(files.size(), options.quiet, "convexity measures");
   parallel_for(files.size(), options.jobs, [&](size_t k) {
     const std::vector<int>& instances = *files[k];

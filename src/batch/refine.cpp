@@ -10,6 +10,7 @@
 #include "batch/brep_confirm.h"
 #include "batch/contact_band.h"
 #include "batch/decomposition_cache.h"
+#include "batch/locality.h"
 #include "batch/pair_workers.h"
 #include "batch/part_solids.h"
 #include "batch/progress.h"
@@ -370,34 +371,12 @@ std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& part
 }
 
 // The order in which the flagged pairs are refined: by where their parts sit
-// (a Morton curve over the parts' box centres), so that a part's pairs run
-// close together and its distances, built once, serve them from the cache.
+// (batch/locality.h), so that a part's pairs run close together and its
+// distances, built once, serve them from the cache.
 std::vector<size_t> by_locality(const std::vector<Part>& parts,
                                 const std::vector<std::pair<int, int>>& pairs,
                                 const std::vector<size_t>& flagged) {
-  Aabb all;
-  bool any = false;
-  for (size_t k : flagged)
-    for (int p : {pairs[k].first, pairs[k].second}) {
-      all = any ? all.merged(parts[p].box) : parts[p].box;
-      any = true;
-    }
-  const auto morton = [&](int p) {
-    const Vec3 c = 0.5 * (parts[p].box.lo + parts[p].box.hi);
-    const Vec3 span = (all.hi - all.lo).cwiseMax(1e-300);
-    std::uint64_t code = 0;
-    std::uint32_t q[3];
-    for (int d = 0; d < 3; ++d)
-      q[d] = std::uint32_t(std::clamp((c(d) - all.lo(d)) / span(d), 0.0, 1.0) * 2097151.0);
-    for (int bit = 20; bit >= 0; --bit)
-      for (int d = 0; d < 3; ++d) code = (code << 1) | ((q[d] >> bit) & 1u);
-    return code;
-  };
-  std::vector<std::uint64_t> code(parts.size(), 0);
-  for (size_t k : flagged) {
-    code[pairs[k].first] = morton(pairs[k].first);
-    code[pairs[k].second] = morton(pairs[k].second);
-  }
+  const std::vector<std::uint64_t> code = locality_codes(parts);
   std::vector<size_t> order(flagged.size());
   for (size_t n = 0; n < order.size(); ++n) order[n] = n;
   const auto key = [&](size_t n) {
