@@ -4,6 +4,7 @@
 // construction; each finding says how it was made sure of.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -278,6 +279,62 @@ TEST(StepAssemblies, AFileIsReadOnceForTheSplitAndTheParts) {
   ASSERT_EQ(large.parts.size(), 3u);
   EXPECT_FALSE(large.brep_reads);
   for (const pd::Part& p : pd::build_parts(large)) EXPECT_FALSE(p.error) << p.id;
+}
+
+// With a cache directory a STEP file's read (its meshes, sags and names) is
+// kept, so a rerun meshes nothing: no loader reads the file (a read would
+// crash it: a part error), and the parts come out as the first time. A
+// damaged entry is a miss: the file is read again, and the entry stored anew.
+TEST(StepAssemblies, ARerunMeshesNothing) {
+  namespace fs = std::filesystem;
+  const std::string dir = pd_test::process_dir();
+  const std::string cache = dir + "rerun-cache";
+  fs::remove_all(cache);
+  pd_test::write_step_assembly(dir + "rerun.step", {{"a", {Kind::kBox, {10, 10, 10}}},
+                                                    {"b", {Kind::kSphere, {3}}, Vec3(20, 0, 0)}});
+  pd_test::write_step_part(dir + "rerun-part.step",
+                           {"c", {Kind::kCylinder, {2, 5}}, Vec3(40, 0, 0)});
+  std::ofstream(dir + "rerun.json") << R"({"units": "mm", "tolerance": 0.05,
+      "parts": [{"id": "s", "mesh": "rerun.step"}, {"id": "p", "mesh": "rerun-part.step"}]})";
+  const auto run = [&](const pd::MeshLoadHook& hook) {
+    pd::SceneSpec scene = pd::load_scene_file(dir + "rerun.json");
+    pd::SplitLoad load;
+    load.cache_dir = cache;
+    load.before_load = hook;
+    pd::split_node_parts(scene, load);
+    pd::PartsCache parts_cache;
+    parts_cache.dir = cache;
+    return pd::build_parts(scene, 1, {}, pd::kDefaultLoadTimeout, parts_cache, pd::kAutoLoadMemory,
+                           hook);
+  };
+  const auto same = [](const std::vector<pd::Part>& x, const std::vector<pd::Part>& y) {
+    ASSERT_EQ(x.size(), 3u);
+    ASSERT_EQ(y.size(), 3u);
+    for (size_t k = 0; k < 3; ++k) {
+      EXPECT_FALSE(y[k].error) << y[k].id << ": " << *y[k].error;
+      ASSERT_TRUE(x[k].brep && y[k].brep) << x[k].id;
+      EXPECT_EQ(x[k].id, y[k].id);
+      EXPECT_EQ(x[k].vertex_count, y[k].vertex_count) << x[k].id;
+      EXPECT_EQ(x[k].brep->tessellation.sag, y[k].brep->tessellation.sag) << x[k].id;
+      EXPECT_EQ(x[k].box.lo, y[k].box.lo) << x[k].id;
+      EXPECT_EQ(x[k].box.hi, y[k].box.hi) << x[k].id;
+    }
+  };
+  const std::vector<pd::Part> first = run({});
+  for (const pd::Part& p : first) EXPECT_GT(p.vertex_count, 0) << p.id;
+  same(first, run([](const std::string&) { abort(); }));
+  // Every B-rep read entry damaged: read again, the same parts.
+  size_t damaged = 0;
+  for (const auto& e : fs::directory_iterator(cache))
+    if (e.path().extension() == ".pdb") {
+      std::fstream f(e.path(), std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(-3, std::ios::end);
+      f.put('\x7f');
+      ++damaged;
+    }
+  EXPECT_EQ(damaged, 2u);  // the assembly's and the part file's
+  same(first, run({}));
+  same(first, run([](const std::string&) { abort(); }));  // stored whole again
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

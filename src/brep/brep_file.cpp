@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <Standard_Failure.hxx>
+#include <Standard_Version.hxx>
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -19,6 +20,10 @@ bool is_brep_path(const std::string& path) {
   std::string ext = path.substr(dot + 1);
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   return ext == "step" || ext == "stp" || ext == "brep";
+}
+
+std::string brep_mesh_version() {
+  return std::string("pdcheck-brep-v2 occt-") + OCC_VERSION_COMPLETE;
 }
 
 const char* sag_basis_name(SagBasis b) {

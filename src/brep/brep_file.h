@@ -70,6 +70,12 @@ struct BrepFile {
   std::string unit;
 };
 
+/// What B-rep meshes and their sags depend on besides the file and the
+/// deflection: the sag bound's version (raised whenever the bound or the
+/// meshing changes) and Open CASCADE's. Cache entries of B-rep meshes name it,
+/// so that an upgrade misses them.
+std::string brep_mesh_version();
+
 /// Reads the B-rep file at `path` and meshes every product once at linear
 /// deflection `deflection` (file units; the unit a STEP file is converted to,
 /// mm). Throws std::runtime_error naming the file when it cannot be read or

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "hash.h"
 #include "scene/mesh_loader.h"
 #include "scene/node_names.h"
 
@@ -65,6 +66,17 @@ std::string brep_read_key(const std::string& path, double deflection) {
   char d[32];
   std::snprintf(d, sizeof d, "%.17g|", deflection);
   return d + path;
+}
+
+std::string brep_read_cache_key(const std::string& path, const std::string& content_hash,
+                                double deflection) {
+  return Hasher()
+      .add("pdcheck-brep-read-1")
+      .add(brep_mesh_version())
+      .add(path)
+      .add(content_hash)
+      .add(deflection)
+      .hex();
 }
 
 NodeMeshes join_brep_leaves(NodeMeshes by_node) {

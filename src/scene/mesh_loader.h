@@ -112,10 +112,21 @@ struct MeshRequest {
   /// (split_node_parts: SceneSpec::brep_reads): a loader, forked from this
   /// process, takes it as read (joined when not `by_node`) and reads nothing.
   const LoadedMeshes* read = nullptr;
+  /// B-rep files: the cache entry of the file's read by node at `deflection`
+  /// (key brep_read_cache_key, in the cache directory `read_cache_dir`): taken
+  /// from there when it is whole, else the file is read and the entry stored,
+  /// so that a rerun meshes nothing. An empty directory: no entry.
+  std::string read_cache_dir = {}, read_cache_key = {};
 };
 
 /// The key of a B-rep file read at a deflection (SceneSpec::brep_reads).
 std::string brep_read_key(const std::string& path, double deflection);
+
+/// The cache key of a B-rep file's read by node at `deflection`
+/// (MeshRequest::read_cache_key): its path too, which the reader's messages
+/// name, its content hash, and brep_mesh_version().
+std::string brep_read_cache_key(const std::string& path, const std::string& content_hash,
+                                double deflection);
 
 /// What load_meshes returned, or why the file cannot be used (names the file).
 struct LoadedMeshes {

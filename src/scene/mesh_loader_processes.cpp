@@ -26,7 +26,9 @@
 #include <cstdint>
 #include <cstring>
 #include <new>
+#include <optional>
 
+#include "cache_file.h"
 #include "memory_limit.h"
 #include "scene/mesh_loader.h"
 #include "work_queue.h"
@@ -181,28 +183,69 @@ std::string out_of_memory(const std::string& path, bool capped, double memory_mb
               : std::string("out of memory while loading (damaged file?)"));
 }
 
-/// Runs in a loader process: the file as read, or why it cannot be.
-LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb) {
+// A B-rep file's read by node: its leaves' meshes as NodeMeshes.
+NodeMeshes node_meshes(const LoadedMeshes& by_node) {
+  return {by_node.meshes, by_node.nodes, by_node.tessellations, by_node.leaf_errors,
+          by_node.triangle_sags};
+}
+
+// A B-rep read by node as the request asks for it: whole, or its leaves joined.
+LoadedMeshes as_asked(const MeshRequest& f, const LoadedMeshes& by_node) {
+  if (f.by_node) return by_node;
+  LoadedMeshes out;
+  NodeMeshes joined = join_brep_leaves(node_meshes(by_node));
+  out.warnings = by_node.warnings;
+  out.meshes = std::move(joined.meshes);
+  out.tessellations = std::move(joined.tessellations);
+  out.leaf_errors = std::move(joined.leaf_errors);
+  out.triangle_sags = std::move(joined.triangle_sags);
+  return out;
+}
+
+// B-rep reads in the cache directory: the loader's payload as it is, under
+// brep_read_cache_key (the entry's checksum keeps a damaged one out).
+constexpr CacheKind kBrepReadKind{"pdcheck-brep-read-1", ".pdb"};
+
+// The request's B-rep read from its cache entry, when there is a whole one.
+std::optional<LoadedMeshes> cached_brep_read(const MeshRequest& f) {
+  if (f.read_cache_dir.empty()) return std::nullopt;
+  const std::optional<std::string> body =
+      read_cache_entry(f.read_cache_dir, kBrepReadKind, f.read_cache_key);
+  if (!body) return std::nullopt;
+  try {
+    LoadedMeshes got = decode(*body);
+    if (got.error) return std::nullopt;
+    return got;
+  } catch (const std::exception&) {
+    return std::nullopt;  // a layout this build does not read: read the file again
+  }
+}
+
+/// Runs in a loader process: the file as read, or why it cannot be. The test
+/// hook runs just before the file itself is read (not for a read taken from
+/// the process forked from or from the cache).
+LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb,
+                      const MeshLoadHook& before_load) {
   LoadedMeshes out;
   try {
     const bool brep = is_brep_path(f.path);
-    if (f.read) {  // read by node already, in the process this loader was forked from
-      if (f.by_node) return *f.read;
-      NodeMeshes joined = join_brep_leaves({f.read->meshes, f.read->nodes, f.read->tessellations,
-                                            f.read->leaf_errors, f.read->triangle_sags});
-      out.warnings = f.read->warnings;
-      out.meshes = std::move(joined.meshes);
-      out.tessellations = std::move(joined.tessellations);
-      out.leaf_errors = std::move(joined.leaf_errors);
-      out.triangle_sags = std::move(joined.triangle_sags);
-      return out;
-    }
+    if (f.read) return as_asked(f, *f.read);  // read by node in the process this one forked from
+    if (brep)
+      if (std::optional<LoadedMeshes> hit = cached_brep_read(f)) return as_asked(f, *hit);
+    if (before_load) before_load(f.path);
     if (!f.by_node && !brep) {
       out.meshes = load_meshes(f.path, f.split_instances, &out.warnings);
       return out;
     }
-    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, f.by_node, &out.warnings)
+    // A B-rep file is read by node and joined as asked afterwards: the same
+    // meshes either way, and the cache entry serves both.
+    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, true, &out.warnings)
                            : load_node_meshes(f.path, &out.warnings);
+    if (brep && !f.read_cache_dir.empty())  // best effort: a run without it reads the file again
+      write_cache_entry(f.read_cache_dir, kBrepReadKind, f.read_cache_key,
+                        encode(read.meshes, out.warnings, read.nodes, read.tessellations,
+                               read.leaf_errors, read.triangle_sags));
+    if (brep && !f.by_node) read = join_brep_leaves(std::move(read));
     double bytes = 0.0;  // what the meshes cost to hand over and keep
     for (size_t k = 0; k < read.meshes.size(); ++k)
       bytes += read.meshes[k].vertices.size() * sizeof(double) +
@@ -264,7 +307,7 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
       // The file is let go into the loader's heap, which the next file takes
       // again without a page fault per page; the largest files come first,
       // so what a loader holds after one is no more than it held during it.
-      return "D" + digest(k, read_one(files[k], capped, memory_mb));
+      return "D" + digest(k, read_one(files[k], capped, memory_mb, before_load));
     } catch (const std::bad_alloc&) {
       return "E" + out_of_memory(files[k].path, capped, memory_mb);
     } catch (const std::exception& e) {
@@ -289,10 +332,6 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
                                    : "")));
   };
   QueueOptions queue{loaders, timeout, {}, {}};
-  if (before_load)  // a file read already (MeshRequest::read) is not read again
-    queue.before_task = [&](size_t k) {
-      if (!files[k].read) before_load(files[k].path);
-    };
   run_work_queue(order, queue, task, done);
 }
 

@@ -211,7 +211,7 @@ std::string geometry_hash(const PartSpec& spec, const PartsCache& cache, double 
   if (deflection > 0) {
     char d[32];
     std::snprintf(d, sizeof d, "%.17g", deflection);
-    return Hasher().add("pdcheck-brep-v2").add(file).add(spec.node.value_or("")).add(d).hex();
+    return Hasher().add(brep_mesh_version()).add(file).add(spec.node.value_or("")).add(d).hex();
   }
   if (!spec.node) return file;
   return Hasher().add("pdcheck-node-v1").add(file).add(*spec.node).hex();
@@ -674,13 +674,20 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   for (size_t f = 0; f < distinct.files; ++f) {
     const PartSpec& spec = *file_spec[f];
     const double deflection = mesh_files[f].deflection;
+    // A B-rep file's read goes to the cache, unless split_node_parts has it.
+    const auto brep_read_cache = [&](MeshRequest& r) {
+      if (deflection == 0 || r.read || cache.dir.empty()) return;
+      r.read_cache_dir = cache.dir;
+      r.read_cache_key = brep_read_cache_key(r.path, file_hash(r.path, cache), deflection);
+    };
     // A B-rep file split_node_parts read whole at this deflection is not read again.
     const auto read_already = [&](const PartSpec& p) -> const LoadedMeshes* {
       if (!scene.brep_reads || deflection == 0) return nullptr;
       const auto it = scene.brep_reads->find(brep_read_key(*p.mesh, deflection));
       return it == scene.brep_reads->end() ? nullptr : &it->second;
     };
-    // A B-rep file is always read: its tessellation is in no cache.
+    // A B-rep file is always read, for its tessellation: from the cache
+    // entry of its read when there is one (MeshRequest::read_cache_key).
     if (cached_hulls(spec, mesh_files[f], with_store) &&
         settled_from_cache(spec, mesh_files[f], concavity_tol, with_store, auto_tol)) {
       done_file(f);
@@ -695,6 +702,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
         requests.push_back(
             {*spec.mesh, true, true, false, deflection, INFINITY, read_already(spec)});
         requested.emplace_back();
+        brep_read_cache(requests.back());
       }
       requested[it->second].push_back(f);
       continue;
@@ -702,6 +710,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection,
                         INFINITY, read_already(spec)});
     requested.push_back({f});
+    brep_read_cache(requests.back());
   }
   if (!requests.empty()) {
     // In the loader: each file of the request digested, its bytes one after another.

@@ -87,6 +87,10 @@ void split_node_parts(SceneSpec& s, const SplitLoad& load) {
     const double deflection = file_deflection(s, p);
     requests.push_back(
         {*p.mesh, true, true, deflection == 0, deflection, load.keep_mb * 1048576.0});
+    if (deflection > 0 && !hash.empty()) {  // a B-rep file: a rerun meshes nothing
+      requests.back().read_cache_dir = load.cache_dir;
+      requests.back().read_cache_key = brep_read_cache_key(*p.mesh, hash, deflection);
+    }
     hashes.push_back(hash);
   }
   if (files.empty()) return;
