@@ -146,6 +146,25 @@ TEST(BrepFile, AFileInInchesIsReadInMillimetres) {
   EXPECT_TRUE(hi.isApprox(Vec3(279.4, 50.8, 12.7), 1e-9)) << hi.transpose();
 }
 
+// Products meshed side by side (threads, and each product's faces on Open
+// CASCADE's pool) come out as meshed one by one, to the bit.
+TEST(BrepFile, ProductsMeshedSideBySideComeOutTheSame) {
+  const std::string path = assembly_file("side-by-side.step");
+  const pd::BrepFile one = pd::read_brep_file(path, 0.02, 1);
+  const pd::BrepFile three = pd::read_brep_file(path, 0.02, 3);
+  ASSERT_EQ(one.leaves.size(), 6u);
+  ASSERT_EQ(three.leaves.size(), one.leaves.size());
+  EXPECT_EQ(three.warnings, one.warnings);
+  for (size_t k = 0; k < one.leaves.size(); ++k) {
+    const pd::BrepLeaf &a = one.leaves[k], &b = three.leaves[k];
+    EXPECT_EQ(a.mesh.vertices, b.mesh.vertices) << k;
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles) << k;
+    EXPECT_EQ(a.triangle_sags, b.triangle_sags) << k;
+    EXPECT_EQ(a.tessellation.sag, b.tessellation.sag) << k;
+    EXPECT_EQ(a.error, b.error) << k;
+  }
+}
+
 TEST(BrepFile, APartFileIsOneLeafAndABrepFileHasNoUnit) {
   const std::string step = pd_test::process_dir() + "part.stp";
   pd_test::write_step_part(step, {"washer", {Kind::kTorus, {6.0, 1.0}}, Vec3(1, 2, 3)});

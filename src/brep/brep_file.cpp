@@ -4,13 +4,17 @@
 
 #include <Standard_Failure.hxx>
 #include <Standard_Version.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "brep/shape_mesh.h"
 #include "brep/shape_tree.h"
+#include "parallel_for.h"
 
 namespace pd {
 
@@ -71,9 +75,23 @@ BrepLeaf placed_leaf(const ShapeTree::Leaf& l, const ShapeMesh& m) {
   return leaf;
 }
 
+// Whether two of `products` share a face: the mesher stores a face's
+// triangulation in the face itself, so such products are meshed one by one.
+bool share_faces(const std::vector<const TopoDS_Shape*>& products) {
+  std::set<const TopoDS_TShape*> seen;
+  for (const TopoDS_Shape* p : products) {
+    std::set<const TopoDS_TShape*> own;
+    for (TopExp_Explorer x(*p, TopAbs_FACE); x.More(); x.Next())
+      own.insert(x.Current().TShape().get());
+    for (const TopoDS_TShape* f : own)
+      if (!seen.insert(f).second) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-BrepFile read_brep_file(const std::string& path, double deflection) {
+BrepFile read_brep_file(const std::string& path, double deflection, int threads) {
   if (::access(path.c_str(), R_OK) != 0)
     throw std::runtime_error("B-rep file " + path + ": cannot be read");
   try {
@@ -82,10 +100,20 @@ BrepFile read_brep_file(const std::string& path, double deflection) {
     out.nodes = tree.nodes;
     out.unit = tree.unit;
     std::map<std::string, ShapeMesh> meshed;  // each product once
+    std::vector<const TopoDS_Shape*> products;
+    std::vector<ShapeMesh*> into;
     for (const ShapeTree::Leaf& l : tree.leaves) {
-      auto it = meshed.find(l.product_key);
-      if (it == meshed.end())
-        it = meshed.emplace(l.product_key, mesh_solids(l.product, deflection)).first;
+      const auto [it, fresh] = meshed.emplace(l.product_key, ShapeMesh{});
+      if (!fresh) continue;
+      products.push_back(&l.product);
+      into.push_back(&it->second);
+    }
+    // Products side by side, and each one's faces too: a pool thread that
+    // finds the pool busy meshes its faces itself (OSD_ThreadPool::Launcher).
+    parallel_for(products.size(), threads > 1 && !share_faces(products) ? threads : 1,
+                 [&](size_t k) { *into[k] = mesh_solids(*products[k], deflection, threads > 1); });
+    for (const ShapeTree::Leaf& l : tree.leaves) {
+      const auto it = meshed.find(l.product_key);
       out.leaves.push_back(placed_leaf(l, it->second));
       if (it->second.open_edges > 0 && it->second.solids > 0)
         out.warnings.push_back("\"" + l.name_path + "\": its mesh has " +

@@ -80,6 +80,8 @@ std::string brep_mesh_version();
 /// deflection `deflection` (file units; the unit a STEP file is converted to,
 /// mm). Throws std::runtime_error naming the file when it cannot be read or
 /// holds no shape. Open CASCADE's messages go nowhere (never to stdout).
-BrepFile read_brep_file(const std::string& path, double deflection);
+/// `threads` > 1 meshes distinct products side by side (the same meshes: each
+/// product is meshed alone), unless two of them share a face.
+BrepFile read_brep_file(const std::string& path, double deflection, int threads = 1);
 
 }  // namespace pd

@@ -81,7 +81,7 @@ long odd_edges(const Triangles& t) {
 
 }  // namespace
 
-ShapeMesh mesh_solids(const TopoDS_Shape& shape, double deflection) {
+ShapeMesh mesh_solids(const TopoDS_Shape& shape, double deflection, bool in_parallel) {
   ShapeMesh out;
   out.tessellation.deflection = deflection;
   if (!(deflection > 0)) {  // the names and solids alone
@@ -92,7 +92,7 @@ ShapeMesh mesh_solids(const TopoDS_Shape& shape, double deflection) {
   IMeshTools_Parameters params;
   params.Deflection = deflection;
   params.Angle = kMeshAngle;
-  params.InParallel = false;  // one loader process per file already
+  params.InParallel = in_parallel;
   BRepMesh_IncrementalMesh mesher(shape, params);
 
   Welder weld(shape);

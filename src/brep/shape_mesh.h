@@ -23,7 +23,9 @@ struct ShapeMesh {
 /// vertex for every face that shares them (a seam's two sides included), so
 /// the solid's mesh is closed where the solid is. Faces outside solids (free
 /// shells and faces) are left out. Each face's sag is face_sag's. A deflection
-/// of 0 meshes nothing: the solids are counted.
-ShapeMesh mesh_solids(const TopoDS_Shape& shape, double deflection);
+/// of 0 meshes nothing: the solids are counted. `in_parallel`: the mesher
+/// meshes the faces on Open CASCADE's thread pool (the same meshes: each face
+/// is meshed alone, after its edges).
+ShapeMesh mesh_solids(const TopoDS_Shape& shape, double deflection, bool in_parallel = false);
 
 }  // namespace pd

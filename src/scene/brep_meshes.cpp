@@ -43,10 +43,10 @@ std::vector<std::string> leaf_paths(const BrepFile& f) {
 }  // namespace
 
 NodeMeshes load_brep_meshes(const std::string& path, double deflection, bool by_node,
-                            std::vector<std::string>* warnings) {
+                            std::vector<std::string>* warnings, int threads) {
   BrepFile f;
   try {
-    f = read_brep_file(path, deflection);
+    f = read_brep_file(path, deflection, threads);
   } catch (const std::exception& e) {
     throw MeshError(std::string("cannot load ") + e.what());
   }

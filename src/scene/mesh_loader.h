@@ -57,9 +57,9 @@ NodeMeshes read_node_meshes(std::string_view bytes, const std::string& extension
 /// children when the file has several, else the one free shape's components):
 /// `by_node`, one mesh per leaf; else one mesh of them all, with their
 /// combined tessellation (a leaf that cannot be checked is then the file's
-/// error). Throws MeshError naming the file.
+/// error). Throws MeshError naming the file. `threads`: read_brep_file's.
 NodeMeshes load_brep_meshes(const std::string& path, double deflection, bool by_node,
-                            std::vector<std::string>* warnings = nullptr);
+                            std::vector<std::string>* warnings = nullptr, int threads = 1);
 
 /// load_brep_meshes' one mesh of a file's leaves (`by_node` false) from its
 /// meshes by node: the meshes joined, their tessellations combined, the
@@ -112,6 +112,8 @@ struct MeshRequest {
   /// (split_node_parts: SceneSpec::brep_reads): a loader, forked from this
   /// process, takes it as read (joined when not `by_node`) and reads nothing.
   const LoadedMeshes* read = nullptr;
+  /// With `read`: only this node's meshes are taken from it.
+  std::optional<std::string> node = std::nullopt;
   /// B-rep files: the cache entry of the file's read by node at `deflection`
   /// (key brep_read_cache_key, in the cache directory `read_cache_dir`): taken
   /// from there when it is whole, else the file is read and the entry stored,

@@ -202,6 +202,21 @@ LoadedMeshes as_asked(const MeshRequest& f, const LoadedMeshes& by_node) {
   return out;
 }
 
+// One node's meshes of a read by node (a node's meshes come together).
+LoadedMeshes of_node(const LoadedMeshes& by_node, const std::string& node) {
+  LoadedMeshes out;
+  out.warnings = by_node.warnings;
+  for (size_t k = 0; k < by_node.nodes.size(); ++k) {
+    if (by_node.nodes[k] != node) continue;
+    out.meshes.push_back(by_node.meshes[k]);
+    out.nodes.push_back(node);
+    if (k < by_node.tessellations.size()) out.tessellations.push_back(by_node.tessellations[k]);
+    if (k < by_node.leaf_errors.size()) out.leaf_errors.push_back(by_node.leaf_errors[k]);
+    if (k < by_node.triangle_sags.size()) out.triangle_sags.push_back(by_node.triangle_sags[k]);
+  }
+  return out;
+}
+
 // B-rep reads in the cache directory: the loader's payload as it is, under
 // brep_read_cache_key (the entry's checksum keeps a damaged one out).
 constexpr CacheKind kBrepReadKind{"pdcheck-brep-read-1", ".pdb"};
@@ -223,13 +238,15 @@ std::optional<LoadedMeshes> cached_brep_read(const MeshRequest& f) {
 
 /// Runs in a loader process: the file as read, or why it cannot be. The test
 /// hook runs just before the file itself is read (not for a read taken from
-/// the process forked from or from the cache).
+/// the process forked from or from the cache). A B-rep file is meshed on up
+/// to `threads` threads.
 LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb,
-                      const MeshLoadHook& before_load) {
+                      const MeshLoadHook& before_load, int threads) {
   LoadedMeshes out;
   try {
     const bool brep = is_brep_path(f.path);
-    if (f.read) return as_asked(f, *f.read);  // read by node in the process this one forked from
+    if (f.read)  // read by node in the process this one forked from
+      return f.node ? of_node(*f.read, *f.node) : as_asked(f, *f.read);
     if (brep)
       if (std::optional<LoadedMeshes> hit = cached_brep_read(f)) return as_asked(f, *hit);
     if (before_load) before_load(f.path);
@@ -239,7 +256,7 @@ LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb,
     }
     // A B-rep file is read by node and joined as asked afterwards: the same
     // meshes either way, and the cache entry serves both.
-    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, true, &out.warnings)
+    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, true, &out.warnings, threads)
                            : load_node_meshes(f.path, &out.warnings);
     if (brep && !f.read_cache_dir.empty())  // best effort: a run without it reads the file again
       write_cache_entry(f.read_cache_dir, kBrepReadKind, f.read_cache_key,
@@ -301,13 +318,17 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return size[a] > size[b]; });
+  // Fewer files than loaders (a STEP assembly is one file): each loader's
+  // share of the cores meshes its B-rep products side by side.
+  const int threads =
+      files.empty() ? 1 : std::max(1, loaders / int(std::min(files.size(), size_t(loaders))));
   auto task = [&](size_t k) {
     const bool capped = loader_setup(memory_mb);
     try {
       // The file is let go into the loader's heap, which the next file takes
       // again without a page fault per page; the largest files come first,
       // so what a loader holds after one is no more than it held during it.
-      return "D" + digest(k, read_one(files[k], capped, memory_mb, before_load));
+      return "D" + digest(k, read_one(files[k], capped, memory_mb, before_load, threads));
     } catch (const std::bad_alloc&) {
       return "E" + out_of_memory(files[k].path, capped, memory_mb);
     } catch (const std::exception& e) {

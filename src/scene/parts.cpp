@@ -248,6 +248,12 @@ LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_n
   return out;
 }
 
+// Where a node's meshes start among a read by node's (-1: nowhere).
+int node_index(const LoadedMeshes& by_node, const std::string& node) {
+  const auto it = std::find(by_node.nodes.begin(), by_node.nodes.end(), node);
+  return it == by_node.nodes.end() ? -1 : int(it - by_node.nodes.begin());
+}
+
 // The file's hulls from the cache, when an earlier run (or another shard on
 // this machine) stored them: true if found. The entry's sag comes with them
 // when a run under tolerance auto stored one.
@@ -693,7 +699,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       done_file(f);
       continue;
     }
-    if (spec.node) {
+    if (spec.node && !read_already(spec)) {
       std::ostringstream key;  // a split file, read once per deflection for all its node parts
       key.precision(17);
       key << deflection << '|' << *spec.mesh;
@@ -707,8 +713,11 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       requested[it->second].push_back(f);
       continue;
     }
-    requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, false, false, deflection,
-                        INFINITY, read_already(spec)});
+    // A file or, where the split read it already, one node of it: the loaders
+    // digest a STEP assembly's leaves side by side.
+    requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, bool(spec.node), false,
+                        deflection, INFINITY, read_already(spec)});
+    if (spec.node) requests.back().node = spec.node;
     requested.push_back({f});
     brep_read_cache(requests.back());
   }
@@ -726,6 +735,9 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
           file.read =
               node_read(read, it == meshes_of_node.end() ? std::vector<size_t>{} : it->second,
                         *file_spec[f], file.leaf);
+          // One node taken from the split's read: its leaf is its place there.
+          if (requests[r].node && !file.read.error)
+            file.leaf = node_index(*requests[r].read, *requests[r].node);
         } else {
           file.read = std::move(read);
         }
