@@ -15,8 +15,9 @@ every run:
   freecad      freecadcmd scripts/freecad_exact_check.py on scene-assembly.json: Import.insert, then
                for every pair whose boxes come within the tolerance distToShape, and
                common().Volume where the distance is 0
-pdcheck runs with --jobs N (default 1) and --quiet; pin the whole benchmark to one core with
-`taskset -c 0` so that both checkers get the same single core. Times are wall seconds of the whole
+pdcheck runs with --jobs N (default 1) and --quiet: --jobs 2 on a 2-core machine is pdcheck's
+default there (FreeCAD's script uses one core either way); pin the whole benchmark to one core with
+`taskset -c 0` and --jobs 1 so that both checkers get the same single core. Times are wall seconds of the whole
 process (FreeCAD: also its pair loop alone, `check`), medians over the runs.
 
 Scored per mechanism on the cold runs' reports (the last run; the cached reports must say the same):
