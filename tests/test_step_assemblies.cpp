@@ -352,6 +352,17 @@ TEST(StepAssemblies, ARerunMeshesNothing) {
   EXPECT_EQ(damaged, 2u);  // the assembly's and the part file's
   same(first, run({}));
   same(first, run([](const std::string&) { abort(); }));  // stored whole again
+  // Taken from the cache, the split still keeps no meshes past the budget.
+  for (const auto& e : fs::directory_iterator(cache))
+    if (e.path().extension() == ".pdn") fs::remove(e.path());
+  pd::SceneSpec large = pd::load_scene_file(dir + "rerun.json");
+  pd::SplitLoad load;
+  load.cache_dir = cache;
+  load.keep_mb = 1e-6;
+  load.before_load = [](const std::string&) { abort(); };
+  pd::split_node_parts(large, load);
+  ASSERT_EQ(large.parts.size(), 3u);
+  EXPECT_FALSE(large.brep_reads);
 }
 
 TEST(StepAssemblies, ASurfaceModelIsAPartErrorNamingIt) {

@@ -247,21 +247,27 @@ LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb,
     const bool brep = is_brep_path(f.path);
     if (f.read)  // read by node in the process this one forked from
       return f.node ? of_node(*f.read, *f.node) : as_asked(f, *f.read);
-    if (brep)
-      if (std::optional<LoadedMeshes> hit = cached_brep_read(f)) return as_asked(f, *hit);
-    if (before_load) before_load(f.path);
     if (!f.by_node && !brep) {
+      if (before_load) before_load(f.path);
       out.meshes = load_meshes(f.path, f.split_instances, &out.warnings);
       return out;
     }
-    // A B-rep file is read by node and joined as asked afterwards: the same
-    // meshes either way, and the cache entry serves both.
-    NodeMeshes read = brep ? load_brep_meshes(f.path, f.deflection, true, &out.warnings, threads)
-                           : load_node_meshes(f.path, &out.warnings);
-    if (brep && !f.read_cache_dir.empty())  // best effort: a run without it reads the file again
-      write_cache_entry(f.read_cache_dir, kBrepReadKind, f.read_cache_key,
-                        encode(read.meshes, out.warnings, read.nodes, read.tessellations,
-                               read.leaf_errors, read.triangle_sags));
+    // A B-rep file is read by node (or taken from its cache entry) and joined
+    // as asked afterwards: the same meshes either way, and the entry serves both.
+    NodeMeshes read;
+    if (std::optional<LoadedMeshes> hit = brep ? cached_brep_read(f) : std::nullopt) {
+      read = {std::move(hit->meshes), std::move(hit->nodes), std::move(hit->tessellations),
+              std::move(hit->leaf_errors), std::move(hit->triangle_sags)};
+      out.warnings = std::move(hit->warnings);
+    } else {
+      if (before_load) before_load(f.path);
+      read = brep ? load_brep_meshes(f.path, f.deflection, true, &out.warnings, threads)
+                  : load_node_meshes(f.path, &out.warnings);
+      if (brep && !f.read_cache_dir.empty())  // best effort: a run without it reads the file again
+        write_cache_entry(f.read_cache_dir, kBrepReadKind, f.read_cache_key,
+                          encode(read.meshes, out.warnings, read.nodes, read.tessellations,
+                                 read.leaf_errors, read.triangle_sags));
+    }
     if (brep && !f.by_node) read = join_brep_leaves(std::move(read));
     double bytes = 0.0;  // what the meshes cost to hand over and keep
     for (size_t k = 0; k < read.meshes.size(); ++k)
