@@ -112,8 +112,9 @@ struct MeshRequest {
   /// (split_node_parts: SceneSpec::brep_reads): a loader, forked from this
   /// process, takes it as read (joined when not `by_node`) and reads nothing.
   const LoadedMeshes* read = nullptr;
-  /// With `read`: only this node's meshes are taken from it.
-  std::optional<std::string> node = std::nullopt;
+  /// With `read`: only its mesh at this index is taken (one node of a B-rep
+  /// read, whose nodes are one leaf each); -2: none (a node it lacks).
+  int node_mesh = -1;
   /// B-rep files: the cache entry of the file's read by node at `deflection`
   /// (key brep_read_cache_key, in the cache directory `read_cache_dir`): taken
   /// from there when it is whole, else the file is read and the entry stored,

@@ -202,18 +202,17 @@ LoadedMeshes as_asked(const MeshRequest& f, const LoadedMeshes& by_node) {
   return out;
 }
 
-// One node's meshes of a read by node (a node's meshes come together).
-LoadedMeshes of_node(const LoadedMeshes& by_node, const std::string& node) {
+// The mesh at index `k` of a read by node, with its node path (none for k < 0).
+LoadedMeshes one_mesh(const LoadedMeshes& by_node, int k) {
   LoadedMeshes out;
   out.warnings = by_node.warnings;
-  for (size_t k = 0; k < by_node.nodes.size(); ++k) {
-    if (by_node.nodes[k] != node) continue;
-    out.meshes.push_back(by_node.meshes[k]);
-    out.nodes.push_back(node);
-    if (k < by_node.tessellations.size()) out.tessellations.push_back(by_node.tessellations[k]);
-    if (k < by_node.leaf_errors.size()) out.leaf_errors.push_back(by_node.leaf_errors[k]);
-    if (k < by_node.triangle_sags.size()) out.triangle_sags.push_back(by_node.triangle_sags[k]);
-  }
+  if (k < 0 || size_t(k) >= by_node.meshes.size()) return out;
+  const size_t m = size_t(k);
+  out.meshes.push_back(by_node.meshes[m]);
+  out.nodes.push_back(by_node.nodes[m]);
+  if (m < by_node.tessellations.size()) out.tessellations.push_back(by_node.tessellations[m]);
+  if (m < by_node.leaf_errors.size()) out.leaf_errors.push_back(by_node.leaf_errors[m]);
+  if (m < by_node.triangle_sags.size()) out.triangle_sags.push_back(by_node.triangle_sags[m]);
   return out;
 }
 
@@ -246,7 +245,7 @@ LoadedMeshes read_one(const MeshRequest& f, bool capped, double memory_mb,
   try {
     const bool brep = is_brep_path(f.path);
     if (f.read)  // read by node in the process this one forked from
-      return f.node ? of_node(*f.read, *f.node) : as_asked(f, *f.read);
+      return f.node_mesh != -1 ? one_mesh(*f.read, f.node_mesh) : as_asked(f, *f.read);
     if (!f.by_node && !brep) {
       if (before_load) before_load(f.path);
       out.meshes = load_meshes(f.path, f.split_instances, &out.warnings);

@@ -248,12 +248,6 @@ LoadedMeshes node_read(const LoadedMeshes& file, const std::vector<size_t>& of_n
   return out;
 }
 
-// Where a node's meshes start among a read by node's (-1: nowhere).
-int node_index(const LoadedMeshes& by_node, const std::string& node) {
-  const auto it = std::find(by_node.nodes.begin(), by_node.nodes.end(), node);
-  return it == by_node.nodes.end() ? -1 : int(it - by_node.nodes.begin());
-}
-
 // The file's hulls from the cache, when an earlier run (or another shard on
 // this machine) stored them: true if found. The entry's sag comes with them
 // when a run under tolerance auto stored one.
@@ -677,6 +671,8 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
   std::vector<MeshRequest> requests;
   std::vector<std::vector<size_t>> requested;  // per request: its files
   std::map<std::string, size_t> by_node;       // a split file's path -> its request
+  // Per B-rep read the split kept: each node's mesh (a node is one leaf).
+  std::map<const LoadedMeshes*, std::map<std::string, int>> mesh_of_node;
   for (size_t f = 0; f < distinct.files; ++f) {
     const PartSpec& spec = *file_spec[f];
     const double deflection = mesh_files[f].deflection;
@@ -717,7 +713,14 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     // digest a STEP assembly's leaves side by side.
     requests.push_back({*spec.mesh, spec.pieces == Pieces::kMeshes, bool(spec.node), false,
                         deflection, INFINITY, read_already(spec)});
-    if (spec.node) requests.back().node = spec.node;
+    if (spec.node) {
+      const LoadedMeshes& read = *requests.back().read;
+      auto [index, fresh] = mesh_of_node.emplace(&read, std::map<std::string, int>{});
+      if (fresh)
+        for (size_t m = 0; m < read.nodes.size(); ++m) index->second.emplace(read.nodes[m], int(m));
+      const auto it = index->second.find(*spec.node);
+      requests.back().node_mesh = it == index->second.end() ? -2 : it->second;
+    }
     requested.push_back({f});
     brep_read_cache(requests.back());
   }
@@ -736,8 +739,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
               node_read(read, it == meshes_of_node.end() ? std::vector<size_t>{} : it->second,
                         *file_spec[f], file.leaf);
           // One node taken from the split's read: its leaf is its place there.
-          if (requests[r].node && !file.read.error)
-            file.leaf = node_index(*requests[r].read, *requests[r].node);
+          if (requests[r].node_mesh >= 0 && !file.read.error) file.leaf = requests[r].node_mesh;
         } else {
           file.read = std::move(read);
         }
