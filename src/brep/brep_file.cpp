@@ -1,5 +1,7 @@
 #include "brep/brep_file.h"
 
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
 #include <unistd.h>
 
 #include <Standard_Failure.hxx>
@@ -14,7 +16,6 @@
 
 #include "brep/shape_mesh.h"
 #include "brep/shape_tree.h"
-#include "parallel_for.h"
 
 namespace pd {
 
@@ -108,10 +109,23 @@ BrepFile read_brep_file(const std::string& path, double deflection, int threads)
       products.push_back(&l.product);
       into.push_back(&it->second);
     }
-    // Products side by side, and each one's faces too: a pool thread that
-    // finds the pool busy meshes its faces itself (OSD_ThreadPool::Launcher).
-    parallel_for(products.size(), threads > 1 && !share_faces(products) ? threads : 1,
-                 [&](size_t k) { *into[k] = mesh_solids(*products[k], deflection, threads > 1); });
+    // Products side by side, and each one's faces too, in one TBB arena of
+    // `threads`: Open CASCADE's parallel loops run on TBB, so the mesher's
+    // loops inside a product share the arena's threads with the products'
+    // (work stealing: a large product's faces take the threads the small
+    // ones leave), and never more threads than asked.
+    const auto mesh = [&](size_t k, bool in_parallel) {
+      *into[k] = mesh_solids(*products[k], deflection, in_parallel);
+    };
+    // No more than the cores this process may run on (TBB warns past them).
+    threads = std::min(threads, tbb::this_task_arena::max_concurrency());
+    if (threads > 1 && !share_faces(products)) {
+      tbb::task_arena arena(threads);
+      arena.execute(
+          [&] { tbb::parallel_for(size_t(0), products.size(), [&](size_t k) { mesh(k, true); }); });
+    } else {
+      for (size_t k = 0; k < products.size(); ++k) mesh(k, false);
+    }
     for (const ShapeTree::Leaf& l : tree.leaves) {
       const auto it = meshed.find(l.product_key);
       out.leaves.push_back(placed_leaf(l, it->second));

@@ -80,8 +80,9 @@ std::string brep_mesh_version();
 /// deflection `deflection` (file units; the unit a STEP file is converted to,
 /// mm). Throws std::runtime_error naming the file when it cannot be read or
 /// holds no shape. Open CASCADE's messages go nowhere (never to stdout).
-/// `threads` > 1 meshes distinct products side by side (the same meshes: each
-/// product is meshed alone), unless two of them share a face.
+/// `threads` > 1 meshes distinct products, and each product's faces, side by
+/// side on at most that many threads (the same meshes: each product and face
+/// is meshed alone), unless two products share a face.
 BrepFile read_brep_file(const std::string& path, double deflection, int threads = 1);
 
 }  // namespace pd
