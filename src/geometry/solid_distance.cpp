@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -9,6 +10,7 @@
 #include <queue>
 #include <set>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "geometry/convexity.h"
 #include "geometry/ray_parity.h"
@@ -656,7 +658,12 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                 static_cast<int>(std::floor(n.y() / kCell)),
                 static_cast<int>(std::floor(n.z() / kCell))};
   };
-  std::map<Cell, std::vector<size_t>> by_cell;
+  // A unit normal's cells lie within ±21 on each axis: one integer each.
+  const auto key_of = [](const Cell& c) {
+    return (std::int64_t(c[0] + 64) << 16) | (std::int64_t(c[1] + 64) << 8) |
+           std::int64_t(c[2] + 64);
+  };
+  std::unordered_map<std::int64_t, std::vector<size_t>> by_cell;
   size_t last = 0;
   for (int f : faces) {
     std::array<Vec3, 3> t = mesh.face(f);
@@ -681,7 +688,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy)
           for (int dz = -1; dz <= 1; ++dz) {
-            const auto it = by_cell.find(Cell{c[0] + dx, c[1] + dy, c[2] + dz});
+            const auto it = by_cell.find(key_of(Cell{c[0] + dx, c[1] + dy, c[2] + dz}));
             if (it == by_cell.end()) continue;
             for (size_t k : it->second)
               if (k < g && same_plane(groups[k])) g = k;
@@ -689,7 +696,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     }
     if (g == groups.size()) {
       groups.push_back({{n, n.dot(t[0])}, {}, true});
-      by_cell[cell_of(n)].push_back(g);
+      by_cell[key_of(cell_of(n))].push_back(g);
     }
     last = g;
     groups[g].faces.push_back(std::move(part));
