@@ -701,8 +701,7 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
       key << deflection << '|' << *spec.mesh;
       const auto [it, fresh] = by_node.emplace(key.str(), requests.size());
       if (fresh) {
-        requests.push_back(
-            {*spec.mesh, true, true, false, deflection, INFINITY, read_already(spec)});
+        requests.push_back({*spec.mesh, true, true, false, deflection, INFINITY, nullptr});
         requested.emplace_back();
         brep_read_cache(requests.back());
       }
