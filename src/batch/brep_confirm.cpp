@@ -7,6 +7,7 @@
 
 #include "batch/pair_tolerance.h"
 #include "batch/progress.h"
+#include "brep/brep_backend.h"
 #include "byte_cache.h"
 #include "geometry/convexity.h"
 #include "geometry/ray_parity.h"
@@ -505,6 +506,7 @@ void confirm_brep_pairs(const std::vector<Part>& parts,
   };
   QueueOptions queue{options.jobs, options.pair_timeout > 0 ? options.pair_timeout + 5.0 : 0.0,
                      options.on_warning};
+  if (!to_measure.empty()) preload_brep_backend();  // once, before the workers are forked
   run_work_queue(to_measure, queue, task, done);
   progress.finish();
 }

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <Standard_Failure.hxx>
-#include <Standard_Version.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
@@ -14,38 +13,11 @@
 #include <set>
 #include <stdexcept>
 
+#include "brep/occt_backend.h"
 #include "brep/shape_mesh.h"
 #include "brep/shape_tree.h"
 
 namespace pd {
-
-bool is_brep_path(const std::string& path) {
-  const size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
-  std::string ext = path.substr(dot + 1);
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == "step" || ext == "stp" || ext == "brep";
-}
-
-std::string brep_mesh_version() {
-  return std::string("pdcheck-brep-v2 occt-") + OCC_VERSION_COMPLETE;
-}
-
-const char* sag_basis_name(SagBasis b) {
-  return b == SagBasis::kBound ? "bound" : "estimate";
-}
-
-Tessellation combine(const Tessellation& a, const Tessellation& b) {
-  Tessellation out = a;
-  out.deflection = std::max(a.deflection, b.deflection);
-  out.sag = std::max(a.sag, b.sag);
-  out.basis = a.basis == SagBasis::kBound && b.basis == SagBasis::kBound ? SagBasis::kBound
-                                                                         : SagBasis::kEstimate;
-  out.faces = a.faces + b.faces;
-  out.free_form = a.free_form + b.free_form;
-  out.tolerance = std::max(a.tolerance, b.tolerance);
-  return out;
-}
 
 namespace {
 
@@ -92,7 +64,7 @@ bool share_faces(const std::vector<const TopoDS_Shape*>& products) {
 
 }  // namespace
 
-BrepFile read_brep_file(const std::string& path, double deflection, int threads) {
+BrepFile occt_read_brep_file(const std::string& path, double deflection, int threads) {
   if (::access(path.c_str(), R_OK) != 0)
     throw std::runtime_error("B-rep file " + path + ": cannot be read");
   try {

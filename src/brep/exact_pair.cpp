@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 
+#include "brep/occt_backend.h"
 #include "brep/shape_tree.h"
 #include "tolerances.h"
 
@@ -342,7 +343,8 @@ void common_bound(const PlacedSolids& a, const PlacedSolids& b, Clock::time_poin
 
 }  // namespace
 
-ExactMeasure measure_exact_pair(const ExactPart& pa, const ExactPart& pb, const ExactRequest& r) {
+ExactMeasure occt_measure_exact_pair(const ExactPart& pa, const ExactPart& pb,
+                                     const ExactRequest& r) {
   const auto t0 = Clock::now();
   const auto deadline =
       t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(r.seconds));

@@ -28,6 +28,7 @@
 #include <new>
 #include <optional>
 
+#include "brep/brep_backend.h"
 #include "cache_file.h"
 #include "memory_limit.h"
 #include "scene/mesh_loader.h"
@@ -327,6 +328,12 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
   // share of the cores meshes its B-rep products side by side.
   const int threads =
       files.empty() ? 1 : std::max(1, loaders / int(std::min(files.size(), size_t(loaders))));
+  // Open CASCADE is loaded once here, before the loaders are forked, rather
+  // than in each of them (brep/brep_backend.h); a failure is each B-rep
+  // file's error.
+  if (std::any_of(files.begin(), files.end(),
+                  [](const MeshRequest& f) { return is_brep_path(f.path); }))
+    preload_brep_backend();
   auto task = [&](size_t k) {
     const bool capped = loader_setup(memory_mb);
     try {
