@@ -467,6 +467,7 @@ struct PlaneGroup {
   FacePlane plane;
   std::vector<FacePart> faces;
   bool supporting = true;
+  Vec3 area = Vec3::Zero();  ///< the sum of its triangles' cross products (twice their vector area)
 };
 
 // The wedge of groups g and h (LocalPlanes::Wedge), if it is complement about
@@ -639,9 +640,30 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
   return out;
 }
 
+// Each group's plane fitted to all its faces: the normal of their summed
+// vector area, the offset of the outermost of their points. A group is
+// gathered about its first face's plane, and a sliver's plane is ill-posed:
+// float32 corners far from the origin tilt a thin triangle's normal by their
+// rounding over its width, and the other faces then cross that plane by up to
+// the cap, which every bound of the plane pays as slack. The summed area
+// averages the tilt out over the whole face. Any plane serves: every
+// certificate measures its faces against the plane it is given, own faces
+// included (docs/solver.md); these measure far less (the ball bearing's seated
+// rings settled with a tenth of the boxes).
+void fit_planes(std::vector<PlaneGroup>& groups) {
+  for (PlaneGroup& g : groups) {
+    const Vec3 n = g.area.normalized();
+    if (!n.allFinite()) continue;  // keeps its first face's plane
+    double offset = -INFINITY;
+    for (const FacePart& t : g.faces)
+      for (const Vec3& p : t.points) offset = std::max(offset, n.dot(p));
+    g.plane = {n, offset};
+  }
+}
+
 // The faces of `mesh` (world coordinates) taken into the region's frame,
-// clipped to its box and grouped by plane (within `cap`); nullopt when a face
-// has no normal (degenerate).
+// clipped to its box and grouped by plane (within `cap`), each group's plane
+// fitted to its faces; nullopt when a face has no normal (degenerate).
 std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                                                    const std::vector<int>& faces, const Region& rg,
                                                    double cap) {
@@ -668,7 +690,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   for (int f : faces) {
     std::array<Vec3, 3> t = mesh.face(f);
     for (Vec3& v : t) v = rg.frame->local(v);
-    const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+    const Vec3 area = (t[1] - t[0]).cross(t[2] - t[0]), n = area.normalized();
     if (!n.allFinite()) return std::nullopt;
     FacePart part{clip_to_box(t, box_lo, box_hi)};
     if (part.points.empty()) continue;
@@ -695,12 +717,14 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
           }
     }
     if (g == groups.size()) {
-      groups.push_back({{n, n.dot(t[0])}, {}, true});
+      groups.push_back({{n, n.dot(t[0])}, {}, true, Vec3::Zero()});
       by_cell[key_of(cell_of(n))].push_back(g);
     }
     last = g;
     groups[g].faces.push_back(std::move(part));
+    groups[g].area += area;
   }
+  fit_planes(groups);
   return groups;
 }
 
