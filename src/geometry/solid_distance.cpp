@@ -670,10 +670,12 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   const Vec3 box_lo = rg.lo(), box_hi = rg.hi();
   std::vector<PlaneGroup> groups;
   // The groups by normal cell: a face joins a group whose normal is within
-  // 0.999 of its own (2.6°), so within 0.045 of it, and the cells of side
-  // 0.05 around its own hold every such group. (A curved surface makes a
-  // group of nearly every face: a scan of all groups would be quadratic.)
-  constexpr double kCell = 0.05;
+  // 0.999 of its own (2.6°), so within 0.0448 of it on every axis, and the
+  // cells of side 0.05 that its normal ± kReach meets hold every such group:
+  // one or two a side, against the 27 about its own cell. (A curved surface
+  // makes a group of nearly every face: a scan of all groups would be
+  // quadratic.)
+  constexpr double kCell = 0.05, kReach = 0.045;
   using Cell = std::array<int, 3>;
   const auto cell_of = [](const Vec3& n) {
     return Cell{static_cast<int>(std::floor(n.x() / kCell)),
@@ -706,11 +708,11 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     if (last < groups.size() && same_plane(groups[last])) {
       g = last;
     } else {
-      const Cell c = cell_of(n);
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const auto it = by_cell.find(key_of(Cell{c[0] + dx, c[1] + dy, c[2] + dz}));
+      const Cell from = cell_of(n.array() - kReach), to = cell_of(n.array() + kReach);
+      for (int x = from[0]; x <= to[0]; ++x)
+        for (int y = from[1]; y <= to[1]; ++y)
+          for (int z = from[2]; z <= to[2]; ++z) {
+            const auto it = by_cell.find(key_of(Cell{x, y, z}));
             if (it == by_cell.end()) continue;
             for (size_t k : it->second)
               if (k < g && same_plane(groups[k])) g = k;
