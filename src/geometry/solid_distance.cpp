@@ -467,6 +467,7 @@ struct PlaneGroup {
   FacePlane plane;
   std::vector<FacePart> faces;
   bool supporting = true;
+  Vec3 area = Vec3::Zero();  ///< the sum of its triangles' cross products (twice their vector area)
 };
 
 // The wedge of groups g and h (LocalPlanes::Wedge), if it is complement about
@@ -639,19 +640,42 @@ std::vector<std::vector<const PlaneGroup*>> separate_holes(
   return out;
 }
 
+// Each group's plane fitted to all its faces: the normal of their summed
+// vector area, the offset of the outermost of their points. A group is
+// gathered about its first face's plane, and a sliver's plane is ill-posed:
+// float32 corners far from the origin tilt a thin triangle's normal by their
+// rounding over its width, and the other faces then cross that plane by up to
+// the cap, which every bound of the plane pays as slack. The summed area
+// averages the tilt out over the whole face. Any plane serves: every
+// certificate measures its faces against the plane it is given, own faces
+// included (docs/solver.md); these measure far less (the ball bearing's seated
+// rings settled with a tenth of the boxes).
+void fit_planes(std::vector<PlaneGroup>& groups) {
+  for (PlaneGroup& g : groups) {
+    const Vec3 n = g.area.normalized();
+    if (!n.allFinite()) continue;  // keeps its first face's plane
+    double offset = -INFINITY;
+    for (const FacePart& t : g.faces)
+      for (const Vec3& p : t.points) offset = std::max(offset, n.dot(p));
+    g.plane = {n, offset};
+  }
+}
+
 // The faces of `mesh` (world coordinates) taken into the region's frame,
-// clipped to its box and grouped by plane (within `cap`); nullopt when a face
-// has no normal (degenerate).
+// clipped to its box and grouped by plane (within `cap`), each group's plane
+// fitted to its faces; nullopt when a face has no normal (degenerate).
 std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                                                    const std::vector<int>& faces, const Region& rg,
                                                    double cap) {
   const Vec3 box_lo = rg.lo(), box_hi = rg.hi();
   std::vector<PlaneGroup> groups;
   // The groups by normal cell: a face joins a group whose normal is within
-  // 0.999 of its own (2.6°), so within 0.045 of it, and the cells of side
-  // 0.05 around its own hold every such group. (A curved surface makes a
-  // group of nearly every face: a scan of all groups would be quadratic.)
-  constexpr double kCell = 0.05;
+  // 0.999 of its own (2.6°), so within 0.0448 of it on every axis, and the
+  // cells of side 0.05 that its normal ± kReach meets hold every such group:
+  // one or two a side, against the 27 about its own cell. (A curved surface
+  // makes a group of nearly every face: a scan of all groups would be
+  // quadratic.)
+  constexpr double kCell = 0.05, kReach = 0.045;
   using Cell = std::array<int, 3>;
   const auto cell_of = [](const Vec3& n) {
     return Cell{static_cast<int>(std::floor(n.x() / kCell)),
@@ -668,7 +692,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
   for (int f : faces) {
     std::array<Vec3, 3> t = mesh.face(f);
     for (Vec3& v : t) v = rg.frame->local(v);
-    const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+    const Vec3 area = (t[1] - t[0]).cross(t[2] - t[0]), n = area.normalized();
     if (!n.allFinite()) return std::nullopt;
     FacePart part{clip_to_box(t, box_lo, box_hi)};
     if (part.points.empty()) continue;
@@ -684,23 +708,25 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     if (last < groups.size() && same_plane(groups[last])) {
       g = last;
     } else {
-      const Cell c = cell_of(n);
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const auto it = by_cell.find(key_of(Cell{c[0] + dx, c[1] + dy, c[2] + dz}));
+      const Cell from = cell_of(n.array() - kReach), to = cell_of(n.array() + kReach);
+      for (int x = from[0]; x <= to[0]; ++x)
+        for (int y = from[1]; y <= to[1]; ++y)
+          for (int z = from[2]; z <= to[2]; ++z) {
+            const auto it = by_cell.find(key_of(Cell{x, y, z}));
             if (it == by_cell.end()) continue;
             for (size_t k : it->second)
               if (k < g && same_plane(groups[k])) g = k;
           }
     }
     if (g == groups.size()) {
-      groups.push_back({{n, n.dot(t[0])}, {}, true});
+      groups.push_back({{n, n.dot(t[0])}, {}, true, Vec3::Zero()});
       by_cell[key_of(cell_of(n))].push_back(g);
     }
     last = g;
     groups[g].faces.push_back(std::move(part));
+    groups[g].area += area;
   }
+  fit_planes(groups);
   return groups;
 }
 
