@@ -26,6 +26,10 @@ std::string default_cache_dir();
 std::optional<std::string> read_cache_entry(const std::string& dir, const CacheKind& kind,
                                             const std::string& key);
 
+/// Whether a file stands under `key` in `dir` (its content unchecked: it may
+/// still read back as a miss).
+bool cache_entry_present(const std::string& dir, const CacheKind& kind, const std::string& key);
+
 /// Stores `body` under `key` (creating `dir`); "" or why it could not (the run
 /// goes on without the cache). Nothing is written when `dir` is "".
 std::string write_cache_entry(const std::string& dir, const CacheKind& kind, const std::string& key,

@@ -81,3 +81,29 @@ TEST(BrepModule, WithoutTheModuleEachBrepFileIsAPartErrorAndTheMeshesAreChecked)
     }
   EXPECT_EQ(meshes, 1) << r.out;
 }
+
+TEST(BrepModule, ARerunFromTheCacheNeedsNoModule) {
+  const std::string dir = pd_test::scratch_dir("brep_module_rerun");
+  write_mixed_scene(dir);
+  fs::create_directories(dir + "/bin");
+  fs::copy_file(pd_test::kPdcheck, dir + "/bin/pdcheck");
+  // The first run meshes the file and stores its read; a rerun takes it from
+  // the cache and never calls Open CASCADE (the rod's interference is
+  // certified by the sag bound), so even a binary without the module runs it.
+  // The dynamic linker names each object it loads (LD_DEBUG=files): the
+  // first run loads the module, a rerun of the same binary does not.
+  const std::string cache = " --cache cache -q -o report.json 2>&1 | grep -c pdcheck_occt.so";
+  const auto first = pd_test::shell(dir, "LD_DEBUG=files \"$PDCHECK\" scene.json" + cache);
+  EXPECT_NE(first.out, "0\n") << first.err;
+  const auto rerun = pd_test::shell(dir, "LD_DEBUG=files \"$PDCHECK\" scene.json" + cache);
+  EXPECT_EQ(rerun.out, "0\n") << rerun.err;
+  const auto again = pd_test::shell(dir, "bin/pdcheck scene.json --cache cache -q -o report.json");
+  EXPECT_EQ(again.code, 1) << again.err;
+  const json report = json::parse(pd_test::read_text(dir + "/report.json"));
+  EXPECT_EQ(report["summary"]["part_errors"], 0) << again.err;
+  for (const json& p : report["pairs"])
+    if (p["a"] == "pair/box") {
+      EXPECT_EQ(p["status"], "interference") << p.dump();
+      EXPECT_EQ(p["exact"]["verdict"], "interference") << p.dump();
+    }
+}

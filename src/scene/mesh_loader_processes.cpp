@@ -329,10 +329,14 @@ void digest_meshes_isolated(const std::vector<MeshRequest>& files, int jobs, dou
   const int threads =
       files.empty() ? 1 : std::max(1, loaders / int(std::min(files.size(), size_t(loaders))));
   // Open CASCADE is loaded once here, before the loaders are forked, rather
-  // than in each of them (brep/brep_backend.h); a failure is each B-rep
-  // file's error.
-  if (std::any_of(files.begin(), files.end(),
-                  [](const MeshRequest& f) { return is_brep_path(f.path); }))
+  // than in each of them (brep/brep_backend.h), when a B-rep file is to be
+  // read: not for one taken from this process's read or from its cache entry
+  // (a rerun), where no loader calls it (one whose entry turns out damaged
+  // loads it itself). A failure is each B-rep file's error.
+  if (std::any_of(files.begin(), files.end(), [](const MeshRequest& f) {
+        return is_brep_path(f.path) && !f.read &&
+               !cache_entry_present(f.read_cache_dir, kBrepReadKind, f.read_cache_key);
+      }))
     preload_brep_backend();
   auto task = [&](size_t k) {
     const bool capped = loader_setup(memory_mb);
