@@ -30,13 +30,13 @@ std::string default_cache_dir() {
   return "";
 }
 
-// Layout: format line, key line, checksum line (the body's content hash), body.
 bool cache_entry_present(const std::string& dir, const CacheKind& kind, const std::string& key) {
   struct stat st {};
   return !dir.empty() && ::stat(entry_path(dir, kind, key).c_str(), &st) == 0 &&
          S_ISREG(st.st_mode);
 }
 
+// Layout: format line, key line, checksum line (the body's content hash), body.
 std::optional<std::string> read_cache_entry(const std::string& dir, const CacheKind& kind,
                                             const std::string& key) {
   if (dir.empty()) return std::nullopt;

@@ -56,9 +56,9 @@ void load(State& s) {
     // dlerror() names the file it tried.
     if (first_error.empty()) first_error = why ? why : path + ": cannot be loaded";
   }
-  s.error = std::string("reading it needs pdcheck's Open CASCADE module, ") + kBrepModuleName +
-            ", which the build puts beside the pdcheck binary, and it could not be loaded (" +
-            first_error + ")";
+  s.error = std::string("STEP and .brep files need pdcheck's Open CASCADE module, ") +
+            kBrepModuleName + ", which the build puts beside the pdcheck binary; it could not be " +
+            "loaded (" + first_error + ")";
 }
 
 }  // namespace
