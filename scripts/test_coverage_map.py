@@ -57,6 +57,11 @@ STORY = {
     "run_control": "the binary under signals, a closed reader and process limits",
     "settings_hashes": "every setting against every hash (content_hashes, refine_cache, report)",
     "step_assemblies": "STEP assemblies through the binary: reading, meshing, the exact check",
+    "brep_module": "Open CASCADE on demand through the binary: its module, a copy without it",
+    "memory_budget": "memory that follows the work: the byte-bounded cache, the mesh store, and "
+    "the largest process under --memory",
+    "real_brep_files": "Debian's real B-rep files (occt-misc) against Open CASCADE's own reference",
+    "main": "the tests' own main (a scratch directory per process, the linked Open CASCADE code)",
 }
 
 
