@@ -1,6 +1,7 @@
 // Open CASCADE on demand: the code that calls it (reading B-rep files, the
 // exact solids) is built into a module, pdcheck_occt.so beside the pdcheck
-// binary, that a process loads only when a scene names a B-rep file. Open
+// binary, that a process loads only when a B-rep file is to be read (not
+// taken from the cache) or a pair measured on its solids. Open
 // CASCADE and what its toolkits link are 59 of the 87 shared libraries
 // pdcheck would otherwise load at every start, and Debian builds them to bind
 // every symbol then: a run on mesh files alone started in 0.09 s, most of it
@@ -26,8 +27,8 @@ struct BrepBackend {
 };
 
 /// The backend, loading the module on first use (thread-safe). Throws
-/// std::runtime_error saying what to install or where the module was looked
-/// for when it cannot be loaded.
+/// std::runtime_error naming the module, where the build puts it and why it
+/// could not be loaded.
 const BrepBackend& brep_backend();
 
 /// Loads the module now, so that processes forked later have it without
