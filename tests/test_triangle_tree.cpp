@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <random>
+#include <set>
 
 #include "corpus/cad_shapes.h"
 #include "geometry/triangle_tree.h"
@@ -278,6 +279,52 @@ TEST(TriangleTree, StopsListingPastTheLimit) {
   tree.in_turned_box(Eigen::Matrix3d::Identity(), Vec3::Zero(), Vec3(-1, -1, -1), Vec3(200, 2, 1),
                      few, 10);
   EXPECT_EQ(few.size(), 11u);  // past it: one more than the limit says so
+}
+
+// Two askew boards far from the origin, each in its own frame, and small
+// triangles hung from the first board's corners: walking both trees together
+// visits every pair of triangles that share a point (a corner touching a face
+// is where rounding would drop a pair), prunes the rest, and stops when told.
+TEST(TriangleTree, WalkingTwoTreesVisitsEveryPairThatShareAPoint) {
+  const Vec3 far(2.9e4, -1.3e4, 6.1e3);
+  const auto placed = [&](const Mesh& m, const Eigen::Matrix3d& r, const Vec3& shift) {
+    Triangles3 t;
+    for (long f = 0; f < m.triangles.cols(); ++f) {
+      std::array<Vec3, 3> c;
+      for (int k = 0; k < 3; ++k) c[k] = r * (m.vertices.col(m.triangles(k, f)) + shift) + far;
+      t.push_back(c);
+    }
+    return t;
+  };
+  const Eigen::Matrix3d r1 = Eigen::AngleAxisd(0.8, Vec3(1, -2, 3).normalized()).toRotationMatrix(),
+                        r2 = Eigen::AngleAxisd(-1.1, Vec3(3, 1, 1).normalized()).toRotationMatrix();
+  const Triangles3 a = placed(shapes::drilled_board(3, 2, 10.0, 1.6, 3.0, 32), r1, Vec3::Zero());
+  Triangles3 b = placed(shapes::drilled_board(2, 2, 8.0, 2.0, 2.5, 24), r2, Vec3(5, 3, -1));
+  const size_t board_b = b.size();
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 300; ++k) {  // a corner exactly at a corner of a
+    const Vec3 v = a[rng() % a.size()][rng() % 3];
+    b.push_back(
+        {v, v + 0.3 * Vec3(u(rng), u(rng), u(rng)), v + 0.3 * Vec3(u(rng), u(rng), u(rng))});
+  }
+  const TriangleTree ta(a), tb(b);
+  ASSERT_TRUE(ta.rotated());
+  ASSERT_TRUE(tb.rotated());
+  std::set<std::pair<int, int>> seen;
+  EXPECT_FALSE(TriangleTree::pairs_near(ta, tb, [&](int i, int j) {
+    EXPECT_TRUE(seen.insert({i, j}).second) << "pair visited twice";
+    return false;
+  }));
+  for (size_t j = board_b; j < b.size(); ++j)
+    for (size_t i = 0; i < a.size(); ++i)
+      if (std::find(a[i].begin(), a[i].end(), b[j][0]) != a[i].end()) {
+        EXPECT_TRUE(seen.count({int(i), int(j)})) << i << " " << j;
+      }
+  EXPECT_LT(seen.size(), a.size() * b.size() / 20);  // the trees prune
+  int visits = 0;
+  EXPECT_TRUE(TriangleTree::pairs_near(ta, tb, [&](int, int) { return ++visits == 5; }));
+  EXPECT_EQ(visits, 5);
 }
 
 TEST(TriangleTree, NoTrianglesNoNearest) {

@@ -429,6 +429,14 @@ struct Found {};
 // many of the other part's. Only the pairing uses them; every pair is then
 // tested exactly on the primitives as they are.
 bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
+  // Faces only (no degenerate triangles kept as segments, which the trees do
+  // not hold): the two trees walked together open only the subtrees that
+  // meet, and a seated contact's first crossing faces are found after a few
+  // hundred boxes instead of boxing every face of both.
+  if (a.segments.empty() && b.segments.empty() && !a.search.empty() && !b.search.empty())
+    return TriangleTree::pairs_near(a.search, b.search, [&](int i, int j) {
+      return CGAL::do_intersect(a.faces[size_t(i)], b.faces[size_t(j)]);
+    });
   const TriangleTree& small = a.faces.size() <= b.faces.size() ? a.search : b.search;
   const Eigen::Matrix3d F =
       small.rotated() ? Eigen::Matrix3d(small.axes().transpose()) : Eigen::Matrix3d::Identity();

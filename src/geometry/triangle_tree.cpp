@@ -263,6 +263,73 @@ constexpr int kSahBins = 12;
 
 }  // namespace
 
+// b's boxes are taken into a's frame as the boxes of their turned copies (M
+// = a's frame times b's frame transposed: centre by M, half-extents by |M|),
+// widened by the rounding of both frames and of M (as in_turned_box widens a
+// turned box): a point of both triangles lies in a's box of its triangle and
+// in the turned box of b's, so no pair that meets is passed over.
+bool TriangleTree::pairs_near(const TriangleTree& a, const TriangleTree& b,
+                              const PairVisit& visit) {
+  if (a.triangles_.empty() || b.triangles_.empty()) return false;
+  const Eigen::Matrix3d M = a.frame_ * b.frame_.transpose(), A = M.cwiseAbs();
+  const double w = (a.rotated_ || b.rotated_)
+                       ? 4 * tol::kFrameRounding * (a.extent_ + b.extent_)
+                       : 0.0;  // both the world's: the boxes are compared as they are
+  const auto turned = [&](const Vec3& lo, const Vec3& hi, Vec3& tlo, Vec3& thi) {
+    const Vec3 c = M * (0.5 * (lo + hi)), e = (A * (0.5 * (hi - lo))).array() + w;
+    tlo = c - e, thi = c + e;
+  };
+  // Pairs of subtrees whose boxes meet; the one with the larger box is opened
+  // (a leaf only when the other is one too).
+  struct Open {
+    const Subtree *x, *y;
+    Vec3 ylo, yhi;  ///< y's box in a's frame
+  };
+  std::vector<Open> stack;
+  stack.reserve(4 * kMaxDepth);
+  Open root{&a.root_, &b.root_, Vec3::Zero(), Vec3::Zero()};
+  turned(b.root_.lo, b.root_.hi, root.ylo, root.yhi);
+  if (!boxes_meet(a.root_.lo, a.root_.hi, root.ylo, root.yhi)) return false;
+  stack.push_back(root);
+  std::vector<std::array<Vec3, 2>> leaf_boxes;
+  while (!stack.empty()) {
+    const Open o = stack.back();
+    stack.pop_back();
+    const bool x_leaf = o.x->count > 0, y_leaf = o.y->count > 0;
+    if (x_leaf && y_leaf) {
+      leaf_boxes.resize(size_t(o.y->count));
+      for (int j = 0; j < o.y->count; ++j)
+        turned(b.boxes_[size_t(o.y->index + j)][0], b.boxes_[size_t(o.y->index + j)][1],
+               leaf_boxes[size_t(j)][0], leaf_boxes[size_t(j)][1]);
+      for (int i = o.x->index; i < o.x->index + o.x->count; ++i) {
+        if (!boxes_meet(a.boxes_[size_t(i)][0], a.boxes_[size_t(i)][1], o.ylo, o.yhi)) continue;
+        for (int j = 0; j < o.y->count; ++j)
+          if (boxes_meet(a.boxes_[size_t(i)][0], a.boxes_[size_t(i)][1], leaf_boxes[size_t(j)][0],
+                         leaf_boxes[size_t(j)][1]) &&
+              visit(a.id_[size_t(i)], b.id_[size_t(o.y->index + j)]))
+            return true;
+      }
+      continue;
+    }
+    const bool open_x =
+        !x_leaf && (y_leaf || half_area(o.x->lo, o.x->hi) >= half_area(o.ylo, o.yhi));
+    if (open_x) {
+      const Node& n = a.nodes_[size_t(o.x->index)];
+      for (int k = 1; k >= 0; --k)
+        if (boxes_meet(n.child[k].lo, n.child[k].hi, o.ylo, o.yhi))
+          stack.push_back({&n.child[k], o.y, o.ylo, o.yhi});
+    } else {
+      const Node& n = b.nodes_[size_t(o.y->index)];
+      for (int k = 1; k >= 0; --k) {
+        Open c{o.x, &n.child[k], Vec3::Zero(), Vec3::Zero()};
+        turned(n.child[k].lo, n.child[k].hi, c.ylo, c.yhi);
+        if (boxes_meet(o.x->lo, o.x->hi, c.ylo, c.yhi)) stack.push_back(c);
+      }
+    }
+  }
+  return false;
+}
+
 // The centroids split along their longest extent, in the frame: where the
 // surface area heuristic (binned) finds a split, there, else at the median.
 // CAD tessellations are full of long slivers whose boxes overlap; a median

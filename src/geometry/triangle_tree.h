@@ -51,6 +51,14 @@ class TriangleTree {
   /// meets the segment is missed), so exact tests can follow on the corners.
   using SegmentVisit = std::function<bool(int, const std::array<Vec3, 3>&)>;
   bool along_segment(const Vec3& a, const Vec3& b, const SegmentVisit& visit) const;
+  /// Calls visit(i, j) for pairs of a triangle i of `a` and j of `b` whose
+  /// boxes may meet, in no order, until a call returns true; returns whether
+  /// one did. Padded as along_segment is (every pair that meets comes, a few
+  /// more may), so exact tests can follow. Both trees are walked together, so
+  /// only the pairs of subtrees whose boxes meet are opened: where two parts
+  /// touch over a small patch of their surfaces, that patch's triangles.
+  using PairVisit = std::function<bool(int, int)>;
+  static bool pairs_near(const TriangleTree& a, const TriangleTree& b, const PairVisit& visit);
   bool empty() const { return triangles_.empty(); }
   /// The triangles' face axes (geometry/face_axes.h), columns.
   const Eigen::Matrix3d& axes() const { return axes_; }
