@@ -7,22 +7,29 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/huge_page_allocator.h"
+
 namespace pd {
 
 Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles) {
+  return face_axes(triangles.data(), triangles.size());
+}
+
+Eigen::Matrix3d face_axes(const std::array<Vec3, 3>* triangles, size_t count) {
   // Area per rounded normal: the faces sorted by their normal's key (then by
   // their order, so each group sums its faces in the order given), the groups
   // in key order, so ties break the same way on every run. (A fine sphere
   // makes a group per face: a sort, not a tree of nodes.) A unit normal's
   // rounded components lie in [-1000, 1000]: packed base 2001, the key's
   // order is theirs.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order;  // key, face
-  std::vector<Vec3> weighted;                                  // area × unit normal
-  std::vector<double> area;
-  order.reserve(triangles.size());
-  weighted.reserve(triangles.size());
-  area.reserve(triangles.size());
-  for (const auto& t : triangles) {
+  HugeVector<std::pair<std::uint64_t, std::uint32_t>> order;  // key, face
+  HugeVector<Vec3> weighted;                                  // area × unit normal
+  HugeVector<double> area;
+  order.reserve(count);
+  weighted.reserve(count);
+  area.reserve(count);
+  for (size_t f = 0; f < count; ++f) {
+    const std::array<Vec3, 3>& t = triangles[f];
     const Vec3 c = (t[1] - t[0]).cross(t[2] - t[0]);
     const double a = 0.5 * c.norm();
     if (!(a > 0)) continue;

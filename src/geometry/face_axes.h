@@ -21,5 +21,7 @@ namespace pd {
 /// identity when no triangle has a positive area. A part's are kept by its
 /// TriangleTree (PreparedMesh::face_axes), whose boxes are taken in them.
 Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles);
+/// The same of `count` triangles from `triangles` on.
+Eigen::Matrix3d face_axes(const std::array<Vec3, 3>* triangles, size_t count);
 
 }  // namespace pd

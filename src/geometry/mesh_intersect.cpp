@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/huge_page_allocator.h"
 #include "geometry/ray_parity.h"
 #include "geometry/same_position.h"
 #include "geometry/triangle_tree.h"
@@ -25,9 +26,9 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point3 = K::Point_3;
 using Triangle3 = K::Triangle_3;
 using Segment3 = K::Segment_3;
-using TriIter = std::vector<Triangle3>::const_iterator;
+using TriIter = HugeVector<Triangle3>::const_iterator;
 
-int find_root(std::vector<int>& parent, int i) {
+int find_root(HugeVector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
 }
@@ -35,9 +36,9 @@ int find_root(std::vector<int>& parent, int i) {
 }  // namespace
 
 struct PreparedMesh::Impl {
-  std::vector<Point3> points;      // merged: equal coordinates are one point
-  std::vector<int> merged;         // original column -> index into points, -1 if unused
-  std::vector<Triangle3> faces;    // non-degenerate triangles
+  HugeVector<Point3> points;       // merged: equal coordinates are one point
+  HugeVector<int> merged;          // original column -> index into points, -1 if unused
+  HugeVector<Triangle3> faces;     // non-degenerate triangles
   std::vector<Segment3> segments;  // degenerate (collinear) triangles as their hull
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
@@ -91,7 +92,7 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   // numbered in the order the triangles first use them.
   m.merged.assign(n, -1);
   const std::vector<int> first = first_at_same_position(mesh.vertices);
-  std::vector<int> point_of(n, -1);  // by a position's first column
+  HugeVector<int> point_of(n, -1);  // by a position's first column
   // Sized once (a large part's vectors would otherwise be copied as they grow).
   size_t positions = 0;
   for (long v = 0; v < n; ++v) positions += first[size_t(v)] == v;
@@ -114,13 +115,13 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   // Edge parity (closedness), shells and the two primitive sets. Each use of
   // an edge is listed (its ends in order, +1 when walked from the lower end);
   // sorted, the uses of one edge are a run.
-  std::vector<int> parent(m.points.size());
+  HugeVector<int> parent(m.points.size());
   std::iota(parent.begin(), parent.end(), 0);
   struct EdgeUse {
     int lo, hi, sign;
     bool operator<(const EdgeUse& o) const { return lo != o.lo ? lo < o.lo : hi < o.hi; }
   };
-  std::vector<EdgeUse> uses;
+  HugeVector<EdgeUse> uses;
   uses.reserve(3 * static_cast<size_t>(mesh.triangles.cols()));
   for (long t = 0; t < mesh.triangles.cols(); ++t) {
     const int i = m.merged[mesh.triangles(0, t)], j = m.merged[mesh.triangles(1, t)],
@@ -155,11 +156,11 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   // The uses put in order of their lower end by counting, then each vertex's
   // few by their upper end: the uses of one edge are a run.
   {
-    std::vector<size_t> start(m.points.size() + 1, 0);
+    HugeVector<size_t> start(m.points.size() + 1, 0);
     for (const EdgeUse& u : uses) ++start[size_t(u.lo) + 1];
     for (size_t v = 0; v < m.points.size(); ++v) start[v + 1] += start[v];
-    std::vector<EdgeUse> by_lo(uses.size());
-    std::vector<size_t> next(start.begin(), start.end() - 1);
+    HugeVector<EdgeUse> by_lo(uses.size());
+    HugeVector<size_t> next(start.begin(), start.end() - 1);
     for (const EdgeUse& u : uses) by_lo[next[size_t(u.lo)]++] = u;
     for (size_t v = 0; v < m.points.size(); ++v)
       std::sort(by_lo.begin() + std::ptrdiff_t(start[v]),
@@ -187,11 +188,11 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
 
   m.box = CGAL::bbox_3(m.points.begin(), m.points.end());
   if (!m.faces.empty()) {
-    std::vector<std::array<Vec3, 3>> corners(m.faces.size());
+    HugeVector<std::array<Vec3, 3>> corners(m.faces.size());
     for (size_t f = 0; f < m.faces.size(); ++f)
       for (int k = 0; k < 3; ++k)
         corners[f][k] = Vec3(m.faces[f][k].x(), m.faces[f][k].y(), m.faces[f][k].z());
-    m.search = TriangleTree(corners);
+    m.search = TriangleTree(corners.data(), corners.size());
   }
   m.parity = m.closed && !m.faces.empty();
 }

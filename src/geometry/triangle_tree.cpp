@@ -138,30 +138,34 @@ std::array<Vec3, 2> box_of(const std::array<Vec3, 3>& t) {
 }  // namespace
 
 TriangleTree::TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles)
-    : triangles_(triangles), id_(triangles.size()), slot_(triangles.size()) {
-  if (triangles.empty()) return;
+    : TriangleTree(triangles.data(), triangles.size()) {}
+
+TriangleTree::TriangleTree(const std::array<Vec3, 3>* triangles, size_t count)
+    : id_(count), slot_(count) {
+  if (count == 0) return;
   std::iota(id_.begin(), id_.end(), 0);
-  axes_ = face_axes(triangles);
+  axes_ = face_axes(triangles, count);
   rotated_ = !worlds_axes(axes_);
   if (rotated_) frame_ = axes_.transpose();
-  for (const auto& t : triangles)
-    for (const Vec3& v : t) extent_ = std::max(extent_, v.cwiseAbs().maxCoeff());
+  for (size_t i = 0; i < count; ++i)
+    for (const Vec3& v : triangles[i]) extent_ = std::max(extent_, v.cwiseAbs().maxCoeff());
   // Each triangle taken into the frame on its own: no framed copy of them all.
-  std::vector<Vec3> centroids(triangles.size());
-  std::vector<std::array<Vec3, 2>> framed_boxes(triangles.size());
-  for (size_t i = 0; i < triangles.size(); ++i) {
+  HugeVector<Vec3> centroids(count);
+  HugeVector<std::array<Vec3, 2>> framed_boxes(count);
+  for (size_t i = 0; i < count; ++i) {
     std::array<Vec3, 3> f = triangles[i];
     if (rotated_)
       for (Vec3& v : f) v = frame_ * v;
     centroids[i] = (f[0] + f[1] + f[2]) / 3;
     framed_boxes[i] = box_of(f);
   }
-  nodes_.reserve(triangles.size() / kLeafSize + 2);
-  root_ = build(0, static_cast<int>(triangles.size()), framed_boxes, centroids, 0);
+  nodes_.reserve(count / kLeafSize + 2);
+  root_ = build(0, static_cast<int>(count), framed_boxes, centroids, 0);
+  triangles_.resize(count);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
-  boxes_.resize(triangles_.size());
-  for (size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = framed_boxes[id_[i]];
+  boxes_.resize(count);
+  for (size_t i = 0; i < count; ++i) boxes_[i] = framed_boxes[id_[i]];
 }
 
 // A point's frame coordinates are within a few roundings of its coordinates'
@@ -336,8 +340,8 @@ bool TriangleTree::pairs_near(const TriangleTree& a, const TriangleTree& b,
 // split cuts through a fan of them, while the heuristic keeps them apart
 // from the compact triangles beside them.
 TriangleTree::Subtree TriangleTree::build(int begin, int end,
-                                          const std::vector<std::array<Vec3, 2>>& boxes,
-                                          const std::vector<Vec3>& centroids, int depth) {
+                                          const HugeVector<std::array<Vec3, 2>>& boxes,
+                                          const HugeVector<Vec3>& centroids, int depth) {
   Subtree s;
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   Vec3 clo = lo, chi = hi;

@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/huge_page_allocator.h"
 #include "geometry/types.h"
 
 namespace pd {
@@ -26,6 +27,8 @@ class TriangleTree {
   TriangleTree() = default;
   /// Triangles are identified by their index in `triangles`.
   explicit TriangleTree(const std::vector<std::array<Vec3, 3>>& triangles);
+  /// The same of `count` triangles from `triangles` on (read while building only).
+  TriangleTree(const std::array<Vec3, 3>* triangles, size_t count);
 
   struct Nearest {
     Vec3 point = Vec3::Zero();
@@ -79,19 +82,19 @@ class TriangleTree {
   struct Node {
     Subtree child[2];
   };
-  Subtree build(int begin, int end, const std::vector<std::array<Vec3, 2>>& boxes,
-                const std::vector<Vec3>& centroids, int depth);
+  Subtree build(int begin, int end, const HugeVector<std::array<Vec3, 2>>& boxes,
+                const HugeVector<Vec3>& centroids, int depth);
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
   // The triangles whose boxes (the tree's) meet [lo, hi] of the tree's frame,
   // listed as in_turned_box lists them.
   void list_in_frame_box(const Vec3& lo, const Vec3& hi, std::vector<int>& out, size_t limit) const;
-  std::vector<std::array<Vec3, 3>> triangles_;  ///< in tree order
-  std::vector<int> id_;                         ///< tree order → caller's index
-  std::vector<int> slot_;                       ///< caller's index → tree order
-  std::vector<Node> nodes_;
+  HugeVector<std::array<Vec3, 3>> triangles_;  ///< in tree order
+  HugeVector<int> id_;                         ///< tree order → caller's index
+  HugeVector<int> slot_;                       ///< caller's index → tree order
+  HugeVector<Node> nodes_;
   Subtree root_;
-  std::vector<std::array<Vec3, 2>> boxes_;  ///< each triangle's in the frame, in tree order
+  HugeVector<std::array<Vec3, 2>> boxes_;  ///< each triangle's in the frame, in tree order
   Eigen::Matrix3d axes_ = Eigen::Matrix3d::Identity();
   /// Takes world coordinates to the boxes': the axes' transpose, else the identity.
   Eigen::Matrix3d frame_ = Eigen::Matrix3d::Identity();

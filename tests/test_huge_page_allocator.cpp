@@ -1,0 +1,41 @@
+// The huge-page allocator: large blocks mapped on their own at a 2 MiB
+// boundary, small ones from the heap, contents kept through growth and copies.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <numeric>
+
+#include "geometry/huge_page_allocator.h"
+
+namespace pd {
+namespace {
+
+TEST(HugePageAllocator, LargeBlocksStartAtAHugePageSmallOnesAtTheHeap) {
+  HugeVector<double> small(1000), large(kHugeBlockBytes / sizeof(double) + 7);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(large.data()) % huge_pages::kHugePage, 0u);
+  std::iota(large.begin(), large.end(), 0.0);
+  std::iota(small.begin(), small.end(), 0.0);
+  EXPECT_EQ(large.back(), double(large.size() - 1));  // the tail past the last huge page is there
+  EXPECT_EQ(small[999], 999.0);
+}
+
+TEST(HugePageAllocator, GrowingAndCopyingKeepTheContents) {
+  HugeVector<int> v;
+  const int n = int(3 * kHugeBlockBytes / sizeof(int));
+  for (int i = 0; i < n; ++i) v.push_back(i);  // through the heap into mapped blocks
+  const HugeVector<int> copy = v;
+  ASSERT_EQ(copy.size(), size_t(n));
+  for (int i = 0; i < n; i += 4099) EXPECT_EQ(copy[size_t(i)], i);
+  v.clear();
+  v.shrink_to_fit();  // unmapped
+  EXPECT_EQ(copy[size_t(n - 1)], n - 1);
+}
+
+TEST(HugePageAllocator, MappedLengthIsWholeSmallPages) {
+  EXPECT_EQ(huge_pages::mapped_length(1), huge_pages::kPage);
+  EXPECT_EQ(huge_pages::mapped_length(huge_pages::kHugePage + 1),
+            huge_pages::kHugePage + huge_pages::kPage);
+}
+
+}  // namespace
+}  // namespace pd
