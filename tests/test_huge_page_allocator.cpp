@@ -31,6 +31,31 @@ TEST(HugePageAllocator, GrowingAndCopyingKeepTheContents) {
   EXPECT_EQ(copy[size_t(n - 1)], n - 1);
 }
 
+// A freed block is kept and handed to the next request it fits (already
+// touched: no fresh pages to fault and zero); release_kept gives them back.
+TEST(HugePageAllocator, AFreedBlockServesTheNextRequestItFits) {
+  huge_pages::release_kept();
+  const size_t n = 2 * kHugeBlockBytes / sizeof(double);
+  const void* first = nullptr;
+  {
+    HugeVector<double> v(n, 1.0);
+    first = v.data();
+  }
+  EXPECT_EQ(huge_pages::kept_bytes(), huge_pages::mapped_length(n * sizeof(double)));
+  {
+    HugeVector<double> w(n / 2 + 1);  // fits, and is not cut (not less than half)
+    EXPECT_EQ(static_cast<const void*>(w.data()), first);
+    EXPECT_EQ(huge_pages::kept_bytes(), 0u);
+  }
+  {
+    HugeVector<double> larger(2 * n);  // fits no kept block: mapped afresh
+    EXPECT_NE(static_cast<const void*>(larger.data()), first);
+  }
+  EXPECT_GT(huge_pages::kept_bytes(), 0u);
+  huge_pages::release_kept();
+  EXPECT_EQ(huge_pages::kept_bytes(), 0u);
+}
+
 TEST(HugePageAllocator, MappedLengthIsWholeSmallPages) {
   EXPECT_EQ(huge_pages::mapped_length(1), huge_pages::kPage);
   EXPECT_EQ(huge_pages::mapped_length(huge_pages::kHugePage + 1),

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "geometry/huge_page_allocator.h"
 #include "geometry/hull.h"
 #include "tolerances.h"
 
@@ -62,8 +63,10 @@ std::shared_ptr<const SolidDistance> PartSolids::of(int p, const Mesh& file_mesh
 }
 
 void PartSolids::give_back_dropped() {
-  if (const size_t dropped = cache_.drops(); dropped > given_back_.exchange(dropped))
+  if (const size_t dropped = cache_.drops(); dropped > given_back_.exchange(dropped)) {
+    huge_pages::release_kept();
     malloc_trim(0);
+  }
 }
 
 }  // namespace pd

@@ -43,7 +43,8 @@ Eigen::Matrix3d face_axes(const std::array<Vec3, 3>* triangles, size_t count) {
     area.push_back(a);
   }
   std::sort(order.begin(), order.end());
-  std::vector<std::pair<double, Vec3>> by_area;
+  HugeVector<std::pair<double, Vec3>> by_area;
+  by_area.reserve(order.size());
   for (size_t i = 0, j = 0; i < order.size(); i = j) {
     Vec3 sum = Vec3::Zero();  // the area-weighted mean normal of the group
     double total = 0.0;

@@ -159,7 +159,9 @@ TriangleTree::TriangleTree(const std::array<Vec3, 3>* triangles, size_t count)
     centroids[i] = (f[0] + f[1] + f[2]) / 3;
     framed_boxes[i] = box_of(f);
   }
-  nodes_.reserve(count / kLeafSize + 2);
+  // A node per split: fewer than the triangles (leaves hold one or more). Only
+  // the pages written are backed, so the unused room costs no memory.
+  nodes_.reserve(count);
   root_ = build(0, static_cast<int>(count), framed_boxes, centroids, 0);
   triangles_.resize(count);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
