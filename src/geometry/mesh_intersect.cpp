@@ -26,7 +26,6 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point3 = K::Point_3;
 using Triangle3 = K::Triangle_3;
 using Segment3 = K::Segment_3;
-using TriIter = HugeVector<Triangle3>::const_iterator;
 
 int find_root(HugeVector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -38,7 +37,7 @@ int find_root(HugeVector<int>& parent, int i) {
 struct PreparedMesh::Impl {
   HugeVector<Point3> points;       // merged: equal coordinates are one point
   HugeVector<int> merged;          // original column -> index into points, -1 if unused
-  HugeVector<Triangle3> faces;     // non-degenerate triangles
+  int faces = 0;                   // non-degenerate triangles: the tree's (`search`)
   std::vector<Segment3> segments;  // degenerate (collinear) triangles as their hull
   std::vector<int> shell_vertex;   // one merged vertex per connected component
   bool closed = false;
@@ -53,11 +52,18 @@ struct PreparedMesh::Impl {
                            Vec3(box.xmax(), box.ymax(), box.zmax()), Vec3(p.x(), p.y(), p.z()));
   }
 
+  // Face i's corners as CGAL's triangle (for its exact predicates).
+  Triangle3 face(int i) const {
+    const std::array<Vec3, 3>& t = search.triangle(i);
+    return {Point3(t[0].x(), t[0].y(), t[0].z()), Point3(t[1].x(), t[1].y(), t[1].z()),
+            Point3(t[2].x(), t[2].y(), t[2].z())};
+  }
+
   // Closest point of the surface to p (faces and degenerate segments).
   Point3 closest(const Point3& p) const {
     Point3 best = p;
     double best_d2 = INFINITY;
-    if (!faces.empty()) {
+    if (faces > 0) {
       const Vec3 q = search.nearest(Vec3(p.x(), p.y(), p.z())).point;
       best = Point3(q.x(), q.y(), q.z());
       best_d2 = CGAL::squared_distance(p, best);
@@ -97,7 +103,8 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   size_t positions = 0;
   for (long v = 0; v < n; ++v) positions += first[size_t(v)] == v;
   m.points.reserve(positions);
-  m.faces.reserve(size_t(mesh.triangles.cols()));
+  HugeVector<std::array<Vec3, 3>> corners;  // of the faces: the tree's
+  corners.reserve(size_t(mesh.triangles.cols()));
   for (long t = 0; t < mesh.triangles.cols(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles(k, t);
@@ -138,7 +145,8 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
       uses.push_back({std::min(u, w), std::max(u, w), u < w ? 1 : -1});
     const Point3 &p = m.points[i], &q = m.points[j], &r = m.points[k];
     if (!CGAL::collinear(p, q, r)) {
-      m.faces.emplace_back(p, q, r);
+      corners.push_back(
+          {Vec3(p.x(), p.y(), p.z()), Vec3(q.x(), q.y(), q.z()), Vec3(r.x(), r.y(), r.z())});
     } else {
       // A needle: the segment between its two farthest corners covers it.
       const double pq = CGAL::squared_distance(p, q), qr = CGAL::squared_distance(q, r),
@@ -179,22 +187,21 @@ PreparedMesh::PreparedMesh(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   }
   double volume = 0.0;
   const Point3& o = m.points[0];
-  for (const Triangle3& f : m.faces)
-    volume += CGAL::scalar_product(f[0] - o, CGAL::cross_product(f[1] - o, f[2] - o));
+  for (const std::array<Vec3, 3>& c : corners) {
+    const Point3 f0(c[0].x(), c[0].y(), c[0].z()), f1(c[1].x(), c[1].y(), c[1].z()),
+        f2(c[2].x(), c[2].y(), c[2].z());
+    volume += CGAL::scalar_product(f0 - o, CGAL::cross_product(f1 - o, f2 - o));
+  }
   m.oriented = volume > 0 && balanced;
   m.closed = even;
   for (int v = 0; v < static_cast<int>(m.points.size()); ++v)
     if (find_root(parent, v) == v) m.shell_vertex.push_back(v);
 
   m.box = CGAL::bbox_3(m.points.begin(), m.points.end());
-  if (!m.faces.empty()) {
-    HugeVector<std::array<Vec3, 3>> corners(m.faces.size());
-    for (size_t f = 0; f < m.faces.size(); ++f)
-      for (int k = 0; k < 3; ++k)
-        corners[f][k] = Vec3(m.faces[f][k].x(), m.faces[f][k].y(), m.faces[f][k].z());
-    m.search = TriangleTree(corners.data(), corners.size());
-  }
-  m.parity = m.closed && !m.faces.empty();
+  // The tree keeps the faces' corners (in its order): the only copy of them.
+  m.faces = static_cast<int>(corners.size());
+  if (m.faces > 0) m.search = TriangleTree(corners.data(), corners.size());
+  m.parity = m.closed && m.faces > 0;
 }
 
 PreparedMesh::~PreparedMesh() = default;
@@ -230,16 +237,14 @@ namespace {
 // a degenerate segment as near), and only a ray test can. Exact when q lies
 // strictly inside the face: the segment p–q then crosses no other face, so p
 // is on that side of every closed shell the face belongs to.
-int face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
-              double d2) {
+int face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, int face, double d2) {
   bool decided = d2 > 0;
   for (const Segment3& s : m.segments)
     decided = decided && CGAL::squared_distance(Point3(v.x(), v.y(), v.z()), s) > d2;
   if (!decided) return 0;
   // Barycentric coordinates of q in the nearest face: strictly inside it?
-  const Triangle3& t = *face;
-  const Vec3 a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()),
-      c(t[2].x(), t[2].y(), t[2].z()), x(q.x(), q.y(), q.z());
+  const std::array<Vec3, 3>& t = m.search.triangle(face);
+  const Vec3 &a = t[0], &b = t[1], &c = t[2], x(q.x(), q.y(), q.z());
   const Vec3 e0 = b - a, e1 = c - a, e2 = x - a;
   const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0),
                d21 = e2.dot(e1), den = d00 * d11 - d01 * d01;
@@ -251,7 +256,7 @@ int face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIt
 
 // The side of an oriented closed mesh p lies on: +1 outside, -1 inside, 0
 // when its nearest face cannot tell or the orientation is unknown.
-int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, TriIter face,
+int nearest_face_side(const PreparedMesh::Impl& m, const Vec3& v, const Point3& q, int face,
                       double d2) {
   return m.oriented ? face_side(m, v, q, face, d2) : 0;
 }
@@ -273,7 +278,7 @@ double PreparedMesh::outside_distance(const Vec3& v, Hint& hint) const {
   hint.has_inside = false;
   const TriangleTree::Nearest n = m.search.nearest(v, static_cast<int>(hint.face));
   const Point3 q(n.point.x(), n.point.y(), n.point.z());
-  const TriIter face = m.faces.cbegin() + n.face;
+  const int face = n.face;
   hint.point = n.point;
   hint.face = n.face;
   const double d2 = CGAL::squared_distance(p, q);
@@ -322,14 +327,14 @@ double PreparedMesh::nearest_on_surface(const Vec3& v, Vec3* nearest, Vec3* face
   Point3 q = p;
   double d2 = INFINITY;
   Vec3 normal = Vec3::Zero();
-  if (!m.faces.empty()) {
+  if (m.faces > 0) {
     const TriangleTree::Nearest found = m.search.nearest(v, near_face ? *near_face : -1);
     if (near_face) *near_face = found.face;
-    const TriIter face = m.faces.cbegin() + found.face;
+    const Triangle3 face = m.face(found.face);
     q = Point3(found.point.x(), found.point.y(), found.point.z());
     d2 = CGAL::squared_distance(p, q);
-    if (side) *side = face_side(m, v, q, face, d2);
-    const K::Vector_3 n = CGAL::cross_product((*face)[1] - (*face)[0], (*face)[2] - (*face)[0]);
+    if (side) *side = face_side(m, v, q, found.face, d2);
+    const K::Vector_3 n = CGAL::cross_product(face[1] - face[0], face[2] - face[0]);
     normal = Vec3(n.x(), n.y(), n.z()).normalized();
   }
   for (const Segment3& s : m.segments)
@@ -358,13 +363,11 @@ void PreparedMesh::faces_in_turned_box(const Eigen::Matrix3d& R, const Vec3& ori
 }
 
 std::array<Vec3, 3> PreparedMesh::face(int i) const {
-  const Triangle3& t = impl_->faces[i];
-  return {Vec3(t[0].x(), t[0].y(), t[0].z()), Vec3(t[1].x(), t[1].y(), t[1].z()),
-          Vec3(t[2].x(), t[2].y(), t[2].z())};
+  return impl_->search.triangle(i);
 }
 
 int PreparedMesh::faces() const {
-  return static_cast<int>(impl_->faces.size());
+  return impl_->faces;
 }
 
 Eigen::Matrix3d PreparedMesh::face_axes() const {
@@ -381,20 +384,21 @@ using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
 std::vector<Box> primitive_boxes(const PreparedMesh::Impl& m, const Eigen::Matrix3d& F,
                                  double pad) {
   std::vector<Box> boxes;
-  boxes.reserve(m.faces.size() + m.segments.size());
+  boxes.reserve(size_t(m.faces) + m.segments.size());
   const auto corner = [&](const Point3& p) { return Vec3(F * Vec3(p.x(), p.y(), p.z())); };
   const auto add = [&](Vec3 lo, Vec3 hi, std::size_t i) {
     lo.array() -= pad, hi.array() += pad;
     boxes.emplace_back(CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()),
                        static_cast<int>(i));
   };
-  for (std::size_t i = 0; i < m.faces.size(); ++i) {
-    const Vec3 a = corner(m.faces[i][0]), b = corner(m.faces[i][1]), c = corner(m.faces[i][2]);
+  for (int i = 0; i < m.faces; ++i) {
+    const std::array<Vec3, 3>& t = m.search.triangle(i);
+    const Vec3 a = F * t[0], b = F * t[1], c = F * t[2];
     add(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c), i);
   }
   for (std::size_t i = 0; i < m.segments.size(); ++i) {
     const Vec3 a = corner(m.segments[i].source()), b = corner(m.segments[i].target());
-    add(a.cwiseMin(b), a.cwiseMax(b), m.faces.size() + i);
+    add(a.cwiseMin(b), a.cwiseMax(b), size_t(m.faces) + i);
   }
   return boxes;
 }
@@ -415,10 +419,10 @@ CGAL::Bbox_3 box_of(const std::vector<Box>& boxes) {
 }
 
 bool primitives_meet(const PreparedMesh::Impl& a, int i, const PreparedMesh::Impl& b, int j) {
-  const int fa = static_cast<int>(a.faces.size()), fb = static_cast<int>(b.faces.size());
-  if (i < fa && j < fb) return CGAL::do_intersect(a.faces[i], b.faces[j]);
-  if (i < fa) return CGAL::do_intersect(a.faces[i], b.segments[j - fb]);
-  if (j < fb) return CGAL::do_intersect(b.faces[j], a.segments[i - fa]);
+  const int fa = a.faces, fb = b.faces;
+  if (i < fa && j < fb) return CGAL::do_intersect(a.face(i), b.face(j));
+  if (i < fa) return CGAL::do_intersect(a.face(i), b.segments[j - fb]);
+  if (j < fb) return CGAL::do_intersect(b.face(j), a.segments[i - fa]);
   return CGAL::do_intersect(a.segments[i - fa], b.segments[j - fb]);
 }
 
@@ -435,10 +439,9 @@ bool surfaces_meet(const PreparedMesh::Impl& a, const PreparedMesh::Impl& b) {
   // meet, and a seated contact's first crossing faces are found after a few
   // hundred boxes instead of boxing every face of both.
   if (a.segments.empty() && b.segments.empty() && !a.search.empty() && !b.search.empty())
-    return TriangleTree::pairs_near(a.search, b.search, [&](int i, int j) {
-      return CGAL::do_intersect(a.faces[size_t(i)], b.faces[size_t(j)]);
-    });
-  const TriangleTree& small = a.faces.size() <= b.faces.size() ? a.search : b.search;
+    return TriangleTree::pairs_near(
+        a.search, b.search, [&](int i, int j) { return CGAL::do_intersect(a.face(i), b.face(j)); });
+  const TriangleTree& small = a.faces <= b.faces ? a.search : b.search;
   const Eigen::Matrix3d F =
       small.rotated() ? Eigen::Matrix3d(small.axes().transpose()) : Eigen::Matrix3d::Identity();
   // Rounding of the corners taken into the frame (none in the world's).

@@ -63,6 +63,11 @@ class TriangleTree {
   using PairVisit = std::function<bool(int, int)>;
   static bool pairs_near(const TriangleTree& a, const TriangleTree& b, const PairVisit& visit);
   bool empty() const { return triangles_.empty(); }
+  size_t size() const { return triangles_.size(); }
+  /// The corners of triangle `id` (its index in the triangles given).
+  const std::array<Vec3, 3>& triangle(int id) const {
+    return triangles_[size_t(slot_[size_t(id)])];
+  }
   /// The triangles' face axes (geometry/face_axes.h), columns.
   const Eigen::Matrix3d& axes() const { return axes_; }
   /// Whether the boxes are taken in those axes: they are not the world's.
