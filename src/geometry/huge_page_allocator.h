@@ -10,7 +10,7 @@
 // (transparent_hugepage `never`) the advice is ignored: ordinary memory.
 //
 // Fresh memory is also zeroed by the kernel, whatever its pages: a freed
-// block is therefore kept (up to kKeptBytes in all) and handed to the next
+// block is therefore kept (up to kKeptBytes, 128 MB, in all) and handed to the next
 // request it fits, already touched: most blocks of a build are scratch that
 // the next part's build asks for again. release_kept() gives them all back
 // (the distances cache calls it when it lets distances go).
@@ -32,7 +32,7 @@ namespace huge_pages {
 inline constexpr std::size_t kHugePage = std::size_t(2) << 20;
 inline constexpr std::size_t kPage = 4096;
 /// The most bytes of freed blocks kept for reuse.
-inline constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
+inline constexpr std::size_t kKeptBytes = std::size_t(128) << 20;
 
 /// A block's length as mapped: whole small pages (the tail past the last
 /// whole huge page keeps small ones, so no memory is taken beyond the block).
