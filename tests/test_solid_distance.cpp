@@ -160,6 +160,69 @@ TEST(LocalPlanes, EveryBoundHoldsAboutHoles) {
   }
 }
 
+// Two models equal to the last bit.
+void expect_same(const LocalPlanes& x, const LocalPlanes& y) {
+  const auto same = [](const FacePlane& p, const FacePlane& q) {
+    return p.normal == q.normal && p.offset == q.offset;
+  };
+  ASSERT_EQ(x.supporting.size(), y.supporting.size());
+  for (size_t k = 0; k < x.supporting.size(); ++k)
+    EXPECT_TRUE(same(x.supporting[k], y.supporting[k]));
+  ASSERT_EQ(x.holes.size(), y.holes.size());
+  for (size_t k = 0; k < x.holes.size(); ++k) {
+    ASSERT_EQ(x.holes[k].planes.size(), y.holes[k].planes.size());
+    for (size_t j = 0; j < x.holes[k].planes.size(); ++j)
+      EXPECT_TRUE(same(x.holes[k].planes[j], y.holes[k].planes[j]));
+    EXPECT_EQ(x.holes[k].kappa, y.holes[k].kappa);
+    EXPECT_EQ(x.holes[k].slack, y.holes[k].slack);
+  }
+  ASSERT_EQ(x.wedges.size(), y.wedges.size());
+  for (size_t k = 0; k < x.wedges.size(); ++k) {
+    EXPECT_TRUE(same(x.wedges[k].p, y.wedges[k].p));
+    EXPECT_TRUE(same(x.wedges[k].q, y.wedges[k].q));
+    EXPECT_EQ(x.wedges[k].kappa, y.wedges[k].kappa);
+    EXPECT_EQ(x.wedges[k].slack, y.wedges[k].slack);
+  }
+  EXPECT_EQ(x.slack, y.slack);
+  EXPECT_EQ(x.margin, y.margin);
+}
+
+TEST(LocalPlanes, KeptFacesGiveTheSameModels) {
+  // A search keeps the faces it took into its frame (FrameFaces) across its
+  // boxes: the models must be those built without, to the last bit. Boxes
+  // about a float32 shoulder far from the origin, a drilled board's holes and
+  // a union of two shells, one kept-faces object asked about all of them in
+  // turn (it starts over when the solid or the frame changes).
+  const Vec3 far(28000, 3000, -900);
+  const Mesh shaft = sh::float32(sh::translated(sh::stepped_shaft(3, 5, 0, 10, 12, 32), far));
+  const Mesh board = sh::drilled_board(3, 1, 2, 1.6, 0.75, 32);
+  const Mesh bolt =
+      sh::joined({sh::cylinder({0, 0}, 3, 0, 10, 32), sh::cylinder({0, 0}, 5, 10, 12, 32)});
+  const SolidDistance solids[] = {SolidDistance(shaft), SolidDistance(board), SolidDistance(bolt)};
+  const Vec3 centres[] = {far + Vec3(3, 0, 10), Vec3(3, 1, 0.8), Vec3(3, 0, 10)};
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> u(0, 1);
+  FrameFaces kept;
+  int models = 0;
+  for (int round = 0; round < 2; ++round)
+    for (size_t k = 0; k < 3; ++k) {
+      FramedBox box;
+      box.frame.origin = centres[k];
+      box.frame.R = random_rotation(rng);
+      for (int trial = 0; trial < 150; ++trial) {
+        const Vec3 half = Vec3::Constant(0.02 + 0.5 * u(rng));
+        const Vec3 shift = 3 * Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+        box.lo = shift - half;
+        box.hi = shift + half;
+        const double margin = 0.01 + 0.3 * u(rng);
+        const LocalPlanes fresh = solids[k].local_planes(box, margin);
+        expect_same(fresh, solids[k].local_planes(box, margin, &kept));
+        models += !fresh.empty();
+      }
+    }
+  EXPECT_GT(models, 300);
+}
+
 TEST(LocalPlanes, ANeedleTriangleDoesNotHideTheSurface) {
   // A unit cube whose top face has a vertex in the middle of its front edge,
   // closed by a needle (a collinear triangle, as float32 exports make them)

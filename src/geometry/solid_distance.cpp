@@ -461,6 +461,17 @@ double wedge_crossing(const FacePart& part, const FacePlane& p, const FacePlane&
   return std::min({m, -part.least(p), -part.least(q)});
 }
 
+// Face f of `mesh` taken into `frame` (FrameFaces keeps what this returns).
+FrameFaces::Face face_in_frame(const PreparedMesh& mesh, int f, const RigidFrame& frame) {
+  FrameFaces::Face out;
+  out.corners = mesh.face(f);
+  for (Vec3& v : out.corners) v = frame.local(v);
+  const std::array<Vec3, 3>& t = out.corners;
+  out.area = (t[1] - t[0]).cross(t[2] - t[0]);
+  out.normal = out.area.normalized();
+  return out;
+}
+
 // The faces near a box, grouped by plane (a quad's two triangles, a flat
 // face's fan: one plane, their rounding measured as slack).
 struct PlaneGroup {
@@ -661,12 +672,13 @@ void fit_planes(std::vector<PlaneGroup>& groups) {
   }
 }
 
-// The faces of `mesh` (world coordinates) taken into the region's frame,
-// clipped to its box and grouped by plane (within `cap`), each group's plane
-// fitted to its faces; nullopt when a face has no normal (degenerate).
+// The faces of `mesh` (world coordinates) taken into the region's frame (or
+// found there in `memo`), clipped to its box and grouped by plane (within
+// `cap`), each group's plane fitted to its faces; nullopt when a face has no
+// normal (degenerate).
 std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
                                                    const std::vector<int>& faces, const Region& rg,
-                                                   double cap) {
+                                                   double cap, FrameFaces* memo) {
   const Vec3 box_lo = rg.lo(), box_hi = rg.hi();
   std::vector<PlaneGroup> groups;
   // The groups by normal cell: a face joins a group whose normal is within
@@ -687,12 +699,19 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     return (std::int64_t(c[0] + 64) << 16) | (std::int64_t(c[1] + 64) << 8) |
            std::int64_t(c[2] + 64);
   };
+  // Few groups (a box's few flat faces, the common case) are scanned in
+  // order, which finds the same group as the cells (the first that holds the
+  // face) for less than the cells' hashing: the cells are made only once
+  // there are more than kScan groups.
+  constexpr size_t kScan = 32;
   std::unordered_map<std::int64_t, std::vector<size_t>> by_cell;
   size_t last = 0;
+  FrameFaces::Face own;
   for (int f : faces) {
-    std::array<Vec3, 3> t = mesh.face(f);
-    for (Vec3& v : t) v = rg.frame->local(v);
-    const Vec3 area = (t[1] - t[0]).cross(t[2] - t[0]), n = area.normalized();
+    if (!memo) own = face_in_frame(mesh, f, *rg.frame);
+    const FrameFaces::Face& face = memo ? (*memo)[f] : own;
+    const std::array<Vec3, 3>& t = face.corners;
+    const Vec3 &area = face.area, &n = face.normal;
     if (!n.allFinite()) return std::nullopt;
     FacePart part{clip_to_box(t, box_lo, box_hi)};
     if (part.points.empty()) continue;
@@ -707,7 +726,16 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     size_t g = groups.size();
     if (last < groups.size() && same_plane(groups[last])) {
       g = last;
+    } else if (groups.size() <= kScan) {
+      for (size_t k = 0; k < groups.size(); ++k)
+        if (k != last && same_plane(groups[k])) {
+          g = k;
+          break;
+        }
     } else {
+      if (by_cell.empty())  // the groups made so far, in order
+        for (size_t k = 0; k < groups.size(); ++k)
+          by_cell[key_of(cell_of(groups[k].plane.normal))].push_back(k);
       const Cell from = cell_of(n.array() - kReach), to = cell_of(n.array() + kReach);
       for (int x = from[0]; x <= to[0]; ++x)
         for (int y = from[1]; y <= to[1]; ++y)
@@ -720,7 +748,7 @@ std::optional<std::vector<PlaneGroup>> groups_near(const PreparedMesh& mesh,
     }
     if (g == groups.size()) {
       groups.push_back({{n, n.dot(t[0])}, {}, true, Vec3::Zero()});
-      by_cell[key_of(cell_of(n))].push_back(g);
+      if (!by_cell.empty()) by_cell[key_of(cell_of(n))].push_back(g);
     }
     last = g;
     groups[g].faces.push_back(std::move(part));
@@ -856,7 +884,7 @@ void faces_near(const PreparedMesh& mesh, const Region& rg, std::vector<int>& ou
 // `outside(p)`: p (in the region's coordinates) strictly outside the solid.
 template <class Outside>
 LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg, bool witness,
-                        const Outside& outside) {
+                        const Outside& outside, FrameFaces* memo) {
   LocalPlanes out;
   out.margin = rg.margin;
   // Needles (collinear triangles, segments in PreparedMesh) are not checked:
@@ -870,7 +898,8 @@ LocalPlanes planes_near(const PreparedMesh& mesh, double noise, const Region& rg
   std::vector<int> near;
   faces_near(mesh, rg, near, tol::kLocalPlanesMaxFaces);
   if (near.empty() || near.size() > static_cast<size_t>(tol::kLocalPlanesMaxFaces)) return out;
-  auto groups = groups_near(mesh, near, rg, cap);
+  if (memo) memo->use(mesh, *rg.frame);
+  auto groups = groups_near(mesh, near, rg, cap, memo);
   if (!groups) return out;
   const std::vector<double> crossing = measure_crossings(*groups, cap);
   add_supporting(*groups, crossing, rg, cap, witness, outside, out);
@@ -918,7 +947,7 @@ Region box_region(const FramedBox& box, double margin) {
 template <class Outside>
 LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const PreparedMesh& whole,
                          double noise, const Region& rg, const Vec3& c_world,
-                         const Outside& outside_all) {
+                         const Outside& outside_all, FrameFaces* memo) {
   int alone = -1;
   bool several = false;
   std::vector<int> near;
@@ -938,21 +967,40 @@ LocalPlanes union_planes(const std::vector<PreparedMesh>& shells, const Prepared
     bool others_outside = true;
     for (size_t i = 0; i < shells.size() && others_outside; ++i)
       others_outside = static_cast<int>(i) == alone || shells[i].outside(c_world);
-    if (others_outside) return planes_near(shells[alone], noise, rg, false, outside_all);
+    // The memo follows one mesh: the whole's faces, asked far more often.
+    if (others_outside) return planes_near(shells[alone], noise, rg, false, outside_all, nullptr);
   }
-  return planes_near(whole, noise, rg, true, outside_all);
+  return planes_near(whole, noise, rg, true, outside_all, memo);
 }
 
 }  // namespace
 
-LocalPlanes SolidDistance::local_planes(const FramedBox& box, double margin) const {
+LocalPlanes SolidDistance::local_planes(const FramedBox& box, double margin,
+                                        FrameFaces* faces) const {
   const Region rg = box_region(box, margin);
   if (exact_) {
     const auto outside = [&](const Vec3& y) { return whole_.outside(box.frame.world(y)); };
-    return planes_near(whole_, noise_, rg, false, outside);
+    return planes_near(whole_, noise_, rg, false, outside, faces);
   }
   const auto outside_all = [&](const Vec3& y) { return outside_every_shell(box.frame.world(y)); };
-  return union_planes(shells_, whole_, noise_, rg, box.frame.world(rg.c), outside_all);
+  return union_planes(shells_, whole_, noise_, rg, box.frame.world(rg.c), outside_all, faces);
+}
+
+void FrameFaces::use(const PreparedMesh& mesh, const RigidFrame& frame) {
+  if (mesh_ == &mesh && frame_.origin == frame.origin && frame_.R == frame.R) return;
+  mesh_ = &mesh;
+  frame_ = frame;
+  faces_.clear();
+  slot_.assign(static_cast<size_t>(mesh.faces()), 0);
+}
+
+const FrameFaces::Face& FrameFaces::operator[](int f) {
+  int& slot = slot_[static_cast<size_t>(f)];
+  if (slot == 0) {
+    faces_.push_back(face_in_frame(*mesh_, f, frame_));
+    slot = static_cast<int>(faces_.size());
+  }
+  return faces_[static_cast<size_t>(slot - 1)];
 }
 
 }  // namespace pd

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -105,6 +106,32 @@ struct FramedBox {
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
 };
 
+/// The faces one run of SolidDistance::local_planes calls has taken into its
+/// frame (their corners there, area vector and unit normal), kept so that each
+/// face is taken there once: an overlap-thickness search asks about thousands
+/// of nested boxes in one frame, and most faces near one box are near the next
+/// (taking them in cost a third of its plane models). The values are those
+/// the call would compute, so a model is the same with or without it. One per
+/// search and part, on one thread; it follows the last mesh and frame asked.
+class FrameFaces {
+ public:
+  struct Face {
+    std::array<Vec3, 3> corners;
+    Vec3 area;    ///< (b − a) × (c − a)
+    Vec3 normal;  ///< area normalised; not finite for a degenerate face
+  };
+  /// Starts over unless `mesh` and `frame` are those of the faces kept.
+  void use(const PreparedMesh& mesh, const RigidFrame& frame);
+  /// Face f of the mesh and frame last given to use().
+  const Face& operator[](int f);
+
+ private:
+  const PreparedMesh* mesh_ = nullptr;
+  RigidFrame frame_;
+  std::vector<int> slot_;  ///< per face of the mesh: its index in faces_ + 1, or 0
+  std::vector<Face> faces_;
+};
+
 /// A closed triangle mesh as a solid. Vertices with equal coordinates are one
 /// (shells as exported are welded by position). A mesh of several shells whose
 /// surfaces do not meet is a solid by the even-odd rule (a housing with a
@@ -144,7 +171,9 @@ class SolidDistance {
   /// frame's coordinates: the planes of the faces within `margin` of the
   /// box, bounding min(sd, margin) (LocalPlanes). A long thin box about a
   /// seated face sees the faces near it, not all within its half-diagonal.
-  LocalPlanes local_planes(const FramedBox& box, double margin) const;
+  /// `faces`, when given, keeps the faces taken into the frame for the next
+  /// call (a search's nested boxes); the model is the same without it.
+  LocalPlanes local_planes(const FramedBox& box, double margin, FrameFaces* faces = nullptr) const;
 
  private:
   // Union mode: inside some shell, and strictly outside every shell (exact ray

@@ -53,7 +53,10 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
     c[1 + (j - m) % 3] = j < m + 3 ? 1.0 : -1.0;
     return c;
   };
-  std::vector<double> cost(n, 0.0);
+  // The costs' buffer is kept per thread: the solve runs some hundred
+  // thousand times in a scene's searches, and is not to allocate each time.
+  thread_local std::vector<double> cost;
+  cost.assign(static_cast<size_t>(n), 0.0);
   double scale = 1.0;
   for (int k = 0; k < m; ++k) {
     cost[k] = f[k].value + f[k].slope.dot(lo);
@@ -76,7 +79,6 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
   const Eigen::Vector4d b(1.0, 0.0, 0.0, 0.0);
   Eigen::Matrix4d B;
   Eigen::Vector4d x = Eigen::Vector4d::Zero();
-  std::vector<char> in_basis(n, 0);
   for (int iter = 0; iter < 50 * n; ++iter) {
     for (int i = 0; i < 4; ++i) B.col(i) = column(basis[i]);
     // A 4 × 4 basis is inverted in closed form (Eigen's cofactors), three
@@ -88,11 +90,12 @@ double max_min_affine(const std::vector<Affine>& f, const Vec3& lo, const Vec3& 
     Eigen::Vector4d c_b;
     for (int i = 0; i < 4; ++i) c_b[i] = cost[basis[i]];
     const Eigen::Vector4d pi = inverse.transpose() * c_b;
-    std::fill(in_basis.begin(), in_basis.end(), 0);
-    for (int i : basis) in_basis[i] = 1;
+    const auto in_basis = [&](int j) {
+      return j == basis[0] || j == basis[1] || j == basis[2] || j == basis[3];
+    };
     int enter = -1;  // Bland's rule: the first improving column, so no cycling
     for (int j = 0; j < n && enter < 0; ++j)
-      if (!in_basis[j] && cost[j] - pi.dot(column(j)) < -eps) enter = j;
+      if (!in_basis(j) && cost[j] - pi.dot(column(j)) < -eps) enter = j;
     if (enter < 0) break;  // optimal
     const Eigen::Vector4d dir = inverse * column(enter);
     int leave = -1;

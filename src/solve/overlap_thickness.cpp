@@ -157,12 +157,12 @@ class Search {
     const FramedBox box{frame_, cell.lo, cell.hi};
     const double margin = tol::kThicknessModelMargin * enough;
     auto own = std::make_shared<Models>();
-    own->a = a_.local_planes(box, margin);
+    own->a = a_.local_planes(box, margin, &faces_a_);
     if (!own->a.empty()) {
       upper = planes_bound(own->a, LocalPlanes{}, common, cell, upper);
       if (upper <= enough) return upper;
     }
-    own->b = b_.local_planes(box, margin);
+    own->b = b_.local_planes(box, margin, &faces_b_);
     if (!own->b.empty()) upper = planes_bound(own->a, own->b, common, cell, upper);
     if (!own->a.empty() || !own->b.empty()) cell.models = std::move(own);
     return upper;
@@ -250,6 +250,9 @@ class Search {
   const SolidDistance &a_, &b_;
   double min_step_;
   double settled_;  ///< a box whose φ bound is below this never decides the pair
+  // Each part's faces taken into the frame, kept across the boxes' models
+  // (nested boxes see mostly the same faces); the models are the same without.
+  mutable FrameFaces faces_a_, faces_b_;
 };
 
 // Halves every axis at least half as long as the longest (2, 4 or 8 children),
