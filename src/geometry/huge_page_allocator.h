@@ -12,8 +12,8 @@
 // Fresh memory is also zeroed by the kernel, whatever its pages: a freed
 // block is therefore kept (up to kKeptBytes, 128 MB, in all) and handed to the next
 // request it fits, already touched: most blocks of a build are scratch that
-// the next part's build asks for again. release_kept() gives them all back
-// (the distances cache calls it when it lets distances go).
+// the next part's build asks for again. They stay kept for the process's life
+// (a bounded cost, counted in docs/performance.md); release_kept() gives them back.
 #pragma once
 
 #include <cstddef>
