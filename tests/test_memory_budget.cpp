@@ -16,6 +16,7 @@
 #include "byte_cache.h"
 #include "cli_support.h"
 #include "corpus/cad_shapes.h"
+#include "geometry/same_position.h"
 #include "memory_limit.h"
 #include "scene/mesh_store.h"
 #include "stl_file.h"
@@ -103,9 +104,29 @@ TEST(MeshStore, KeepsMeshesWholeAndMissesWhatIsDamaged) {
     ASSERT_TRUE(store->has(key));
     const auto back = store->get(key);
     ASSERT_TRUE(back) << key;
-    EXPECT_EQ(back->vertices, m->vertices) << key;
-    EXPECT_EQ(back->triangles, m->triangles) << key;
+    const Mesh w = pd::welded(*m, pd::first_at_same_position(m->vertices));
+    EXPECT_EQ(back->vertices, w.vertices) << key;
+    EXPECT_EQ(back->triangles, w.triangles) << key;
   }
+  // Stored welded: an STL file's corners (three a triangle) come back each once.
+  Mesh soup;
+  soup.vertices.resize(3, 3 * f32.triangles.cols());
+  soup.triangles.resize(3, f32.triangles.cols());
+  for (long t = 0; t < f32.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      soup.vertices.col(3 * t + k) = f32.vertices.col(f32.triangles(k, t));
+      soup.triangles(k, t) = int(3 * t + k);
+    }
+  ASSERT_EQ(store->put("soup", soup), "");
+  const auto back = store->get("soup");
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->vertices.cols(),
+            pd::distinct_positions(f32.vertices, pd::first_at_same_position(f32.vertices)).cols());
+  ASSERT_EQ(back->triangles.cols(), soup.triangles.cols());
+  for (long t = 0; t < soup.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_TRUE(back->vertices.col(back->triangles(k, t)) ==
+                  soup.vertices.col(soup.triangles(k, t)));
   EXPECT_LT(std::filesystem::file_size(d + "meshes/a.pdm"),
             std::filesystem::file_size(d + "meshes/b.pdm"));
   EXPECT_FALSE(store->has("c"));

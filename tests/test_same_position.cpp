@@ -93,3 +93,31 @@ TEST(SamePosition, EveryColumnPointsAtTheFirstEqualOne) {
   }
   EXPECT_TRUE(first_at_same_position(Points(3, 0)).empty());
 }
+
+TEST(SamePosition, WeldedKeepsEveryTrianglesCornersWithEachPositionOnce) {
+  // A tetrahedron as STL stores it, a needle (two corners at one position),
+  // and a −0 that equals its 0; a column no triangle uses stays.
+  const Vec3 c[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const int faces[5][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {1, 1, 2}};
+  Mesh m;
+  m.vertices.resize(3, 16);
+  m.triangles.resize(3, 5);
+  for (int t = 0; t < 5; ++t)
+    for (int k = 0; k < 3; ++k) {
+      m.vertices.col(3 * t + k) = c[faces[t][k]];
+      m.triangles(k, t) = 3 * t + k;
+    }
+  m.vertices.col(3) = Vec3(-0.0, 0, 0);  // face 1's first corner: c[0]'s position
+  m.vertices.col(15) = Vec3(7, 7, 7);    // used by no triangle
+  const Mesh w = welded(m, first_at_same_position(m.vertices));
+  ASSERT_EQ(w.triangles.cols(), m.triangles.cols());
+  EXPECT_EQ(w.vertices.cols(), 5);  // the four corners, and (7, 7, 7)
+  for (long t = 0; t < m.triangles.cols(); ++t)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_TRUE(w.vertices.col(w.triangles(k, t)) == m.vertices.col(m.triangles(k, t)))
+          << "triangle " << t << " corner " << k;
+  for (long i = 0; i < w.vertices.cols(); ++i)
+    for (long j = 0; j < i; ++j)
+      EXPECT_FALSE(w.vertices.col(i) == w.vertices.col(j)) << i << " " << j;
+  EXPECT_EQ(w.triangles(0, 4), w.triangles(1, 4));  // the needle stays one
+}

@@ -67,6 +67,19 @@ Points distinct_positions(const Points& p, const std::vector<int>& first) {
   return out;
 }
 
+Mesh welded(const Mesh& m, const std::vector<int>& first) {
+  std::vector<int> number(first.size());
+  int n = 0;
+  for (size_t i = 0; i < first.size(); ++i)
+    number[i] = first[i] == static_cast<int>(i) ? n++ : number[size_t(first[i])];
+  Mesh out;
+  out.vertices = distinct_positions(m.vertices, first);
+  out.triangles.resize(3, m.triangles.cols());
+  for (Eigen::Index k = 0; k < m.triangles.size(); ++k)
+    out.triangles.data()[k] = number[size_t(m.triangles.data()[k])];
+  return out;
+}
+
 long boundary_edges(const Mesh& m) {
   return boundary_edges(m, first_at_same_position(m.vertices));
 }

@@ -21,6 +21,12 @@ std::vector<int> first_at_same_position(const Points& p);
 /// file repeats every corner; each copy would be hulled or projected again).
 Points distinct_positions(const Points& p, const std::vector<int>& first);
 
+/// m with each position once: the columns of `p` that are their own first
+/// (`first` of first_at_same_position), in order, and the triangles' corners
+/// renumbered to them. The triangles keep their order and their corners'
+/// order; a triangle whose corners meet stays (a needle, as it was).
+Mesh welded(const Mesh& m, const std::vector<int>& first);
+
 /// The edges of m (corners welded by position) used by an odd number of its
 /// triangles: the boundary of an open surface (holes, gaps, a missing face).
 /// 0 for a closed mesh and for one without triangles. Degenerate triangles'

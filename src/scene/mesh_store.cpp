@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "cache_file.h"
+#include "geometry/same_position.h"
 
 namespace pd {
 
@@ -20,7 +21,7 @@ namespace {
 // The body: vertex count, triangle count, 4 or 8 (bytes per coordinate), then
 // the coordinates and the corner indices as stored in memory (a store is read
 // on the machine that wrote it, or is a miss: the key names the layout).
-constexpr CacheKind kMeshKind{"pdcheck-mesh-1", ".pdm"};
+constexpr CacheKind kMeshKind{"pdcheck-mesh-2", ".pdm"};
 // Per-triangle floats: their count, then the values as stored in memory.
 constexpr CacheKind kSagsKind{"pdcheck-sags-1", ".pds"};
 // A hull: vertex count, facet count, then the vertices (doubles), the facets'
@@ -70,7 +71,9 @@ long long MeshStore::stored_bytes(long vertices, long triangles) {
   return 64 + 24LL * vertices + 12LL * triangles;
 }
 
-std::string MeshStore::put(const std::string& key, const Mesh& mesh) const {
+std::string MeshStore::put(const std::string& key, const Mesh& input,
+                           const std::vector<int>* first) const {
+  const Mesh mesh = welded(input, first ? *first : first_at_same_position(input.vertices));
   const bool f32 = fits_float(mesh.vertices);
   std::string body;
   body.reserve(size_t(stored_bytes(mesh.vertices.cols(), mesh.triangles.cols())));

@@ -33,11 +33,16 @@ class MeshStore {
   const std::string& dir() const { return dir_; }
   bool persistent() const { return owner_ == 0; }
 
-  /// Stores `mesh` under `key` (a file written whole or not at all): "" or why
-  /// not. Vertices exactly representable in float32 (a mesh file's, as assimp
-  /// reads them) are stored as such, at half the bytes.
-  std::string put(const std::string& key, const Mesh& mesh) const;
-  /// The mesh stored under `key`, or nullopt when it is absent or not whole.
+  /// Stores `mesh` under `key` welded (each position once: an STL file's
+  /// corners are a sixth as many; geometry/same_position.h), in a file
+  /// written whole or not at all: "" or why not. `first` is
+  /// first_at_same_position of its vertices when the caller has it. Vertices
+  /// exactly representable in float32 (a mesh file's, as assimp reads them)
+  /// are stored as such, at half the bytes.
+  std::string put(const std::string& key, const Mesh& mesh,
+                  const std::vector<int>* first = nullptr) const;
+  /// The mesh stored under `key` (welded), or nullopt when it is absent or
+  /// not whole.
   std::optional<Mesh> get(const std::string& key) const;
   /// Stores per-triangle values of the mesh under `key` (a B-rep surface's
   /// face sags), beside it: "" or why not.
