@@ -15,6 +15,28 @@ Eigen::Matrix3d face_axes(const std::vector<std::array<Vec3, 3>>& triangles) {
   return face_axes(triangles.data(), triangles.size());
 }
 
+namespace {
+
+// The keys lie below 2001³ < 2³³: three stable counting passes of 11 bits,
+// least significant first. The pairs come in face order, so faces of one key
+// stay in that order: the same as sorting the pairs (a comparison sort of a
+// fine sphere's faces was most of this function).
+void sort_by_key(HugeVector<std::pair<std::uint64_t, std::uint32_t>>& order) {
+  constexpr int kBits = 11, kPasses = 3;
+  constexpr std::size_t kBuckets = std::size_t(1) << kBits;
+  HugeVector<std::pair<std::uint64_t, std::uint32_t>> other(order.size());
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const int shift = pass * kBits;
+    std::array<std::size_t, kBuckets + 1> start{};
+    for (const auto& e : order) ++start[((e.first >> shift) & (kBuckets - 1)) + 1];
+    for (std::size_t b = 0; b < kBuckets; ++b) start[b + 1] += start[b];
+    for (const auto& e : order) other[start[(e.first >> shift) & (kBuckets - 1)]++] = e;
+    order.swap(other);
+  }
+}
+
+}  // namespace
+
 Eigen::Matrix3d face_axes(const std::array<Vec3, 3>* triangles, size_t count) {
   // Area per rounded normal: the faces sorted by their normal's key (then by
   // their order, so each group sums its faces in the order given), the groups
@@ -42,7 +64,7 @@ Eigen::Matrix3d face_axes(const std::array<Vec3, 3>* triangles, size_t count) {
     weighted.push_back(a * n);
     area.push_back(a);
   }
-  std::sort(order.begin(), order.end());
+  sort_by_key(order);
   HugeVector<std::pair<double, Vec3>> by_area;
   by_area.reserve(order.size());
   for (size_t i = 0, j = 0; i < order.size(); i = j) {

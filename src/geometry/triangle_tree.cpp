@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 
@@ -162,7 +163,10 @@ TriangleTree::TriangleTree(const std::array<Vec3, 3>* triangles, size_t count)
   // A node per split: fewer than the triangles (leaves hold one or more). Only
   // the pages written are backed, so the unused room costs no memory.
   nodes_.reserve(count);
-  root_ = build(0, static_cast<int>(count), framed_boxes, centroids, 0);
+  // Each triangle's bin at the split being made (a byte, where the partition
+  // would otherwise take its centroid again from afar and divide).
+  HugeVector<std::uint8_t> bin_of(count);
+  root_ = build(0, static_cast<int>(count), framed_boxes, centroids, bin_of, 0);
   triangles_.resize(count);
   for (size_t i = 0; i < id_.size(); ++i) triangles_[i] = triangles[id_[i]];
   for (size_t i = 0; i < id_.size(); ++i) slot_[id_[i]] = static_cast<int>(i);
@@ -343,7 +347,8 @@ bool TriangleTree::pairs_near(const TriangleTree& a, const TriangleTree& b,
 // from the compact triangles beside them.
 TriangleTree::Subtree TriangleTree::build(int begin, int end,
                                           const HugeVector<std::array<Vec3, 2>>& boxes,
-                                          const HugeVector<Vec3>& centroids, int depth) {
+                                          const HugeVector<Vec3>& centroids,
+                                          HugeVector<std::uint8_t>& bin_of, int depth) {
   Subtree s;
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   Vec3 clo = lo, chi = hi;
@@ -371,9 +376,10 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end,
     blo.fill(Vec3::Constant(INFINITY));
     bhi.fill(Vec3::Constant(-INFINITY));
     for (int i = begin; i < end; ++i) {
-      const int b = bin(id_[i]);
+      const int t = id_[i], b = bin(t);
+      bin_of[size_t(t)] = static_cast<std::uint8_t>(b);  // for the partition below
       ++count[b];
-      blo[b] = blo[b].cwiseMin(boxes[id_[i]][0]), bhi[b] = bhi[b].cwiseMax(boxes[id_[i]][1]);
+      blo[b] = blo[b].cwiseMin(boxes[t][0]), bhi[b] = bhi[b].cwiseMax(boxes[t][1]);
     }
     // The right side's area and count after each bin, then the best cut.
     std::array<double, kSahBins> right_area{};
@@ -395,7 +401,7 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end,
     }
     if (cut >= 0)
       mid = static_cast<int>(std::partition(id_.begin() + begin, id_.begin() + end,
-                                            [&](int t) { return bin(t) <= cut; }) -
+                                            [&](int t) { return bin_of[size_t(t)] <= cut; }) -
                              id_.begin());
   }
   if (mid <= begin || mid >= end) {
@@ -405,8 +411,8 @@ TriangleTree::Subtree TriangleTree::build(int begin, int end,
   }
   s.index = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
-  const Subtree first = build(begin, mid, boxes, centroids, depth + 1),
-                second = build(mid, end, boxes, centroids, depth + 1);
+  const Subtree first = build(begin, mid, boxes, centroids, bin_of, depth + 1),
+                second = build(mid, end, boxes, centroids, bin_of, depth + 1);
   nodes_[s.index].child[0] = first;
   nodes_[s.index].child[1] = second;
   return s;

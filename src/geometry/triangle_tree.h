@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -88,7 +89,7 @@ class TriangleTree {
     Subtree child[2];
   };
   Subtree build(int begin, int end, const HugeVector<std::array<Vec3, 2>>& boxes,
-                const HugeVector<Vec3>& centroids, int depth);
+                const HugeVector<Vec3>& centroids, HugeVector<std::uint8_t>& bin_of, int depth);
   template <class Meets, class Visit>
   bool visit_boxes(const Meets& meets, const Visit& visit) const;
   // The triangles whose boxes (the tree's) meet [lo, hi] of the tree's frame,
