@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "batch/pair_solve.h"
 #include "batch/part_solids.h"
 #include "batch/run.h"
 #include "results/pair_result.h"

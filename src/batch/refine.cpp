@@ -11,6 +11,7 @@
 #include "batch/contact_band.h"
 #include "batch/decomposition_cache.h"
 #include "batch/locality.h"
+#include "batch/pair_queue.h"
 #include "batch/pair_workers.h"
 #include "batch/part_solids.h"
 #include "batch/progress.h"
@@ -183,6 +184,12 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// How far past the first open pair a refinement thread looks for one whose
+// parts no other thread is fetching (batch/pair_queue.h): a part's pairs are
+// about ten (a ring's balls, its housing and shaft), so a few more keep the
+// threads within a part or two of each other.
+constexpr size_t kPairLookahead = 16;
 
 // The surfaces' verdict. The thickness path samples the surfaces itself
 // (surface_depth, every vertex included), so only the pieces path asks for
@@ -443,10 +450,20 @@ class Refinement {
       }
     };
     Progress progress(flagged_.size(), options_.quiet, "mesh tests");
-    parallel_for(order.size(), options_.jobs, [&](size_t k) {
+    std::vector<std::pair<int, int>> parts_in_order;
+    for (size_t n : order) parts_in_order.push_back(pairs_[flagged_[n]]);
+    PairQueue queue(std::move(parts_in_order), kPairLookahead);
+    const auto test = [&](size_t k) {
       const size_t n = order[k];
       const auto [a, b] = pairs_[flagged_[n]];
-      const std::shared_ptr<const SolidDistance> sa = solid_of(a), sb = solid_of(b);
+      std::shared_ptr<const SolidDistance> sa, sb;
+      try {
+        sa = solid_of(a), sb = solid_of(b);
+      } catch (...) {
+        queue.fetched(k);
+        throw;
+      }
+      queue.fetched(k);
       no_solid_[n] = !sa || !sb;
       const bool by_pieces = needs_pieces(n);
       try {
@@ -465,8 +482,23 @@ class Refinement {
       }
       solids_.give_back_dropped();
       progress.tick();
+    };
+    // Each thread takes the queue's next pair until none is left; a pair that
+    // throws is kept from the others, and the first such rethrown at the end.
+    const int threads = std::max(1, std::min<int>(options_.jobs, int(order.size())));
+    std::vector<std::exception_ptr> failed(order.size());
+    parallel_for(size_t(threads), threads, [&](size_t) {
+      while (const std::optional<size_t> k = queue.take()) {
+        try {
+          test(*k);
+        } catch (...) {
+          failed[*k] = std::current_exception();
+        }
+      }
     });
     progress.finish();
+    for (const auto& e : failed)
+      if (e) std::rethrow_exception(e);
     for (size_t n = 0; n < flagged_.size(); ++n)
       if (pieces[n]) solve_.push_back(n);
   }
