@@ -11,7 +11,7 @@ namespace pd {
 namespace {
 
 TEST(HugePageAllocator, LargeBlocksStartAtAHugePageSmallOnesAtTheHeap) {
-  HugeVector<double> small(1000), large(kHugeBlockBytes / sizeof(double) + 7);
+  HugeVector<double> small(1000), large(kOwnBlockBytes / sizeof(double) + 7);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(large.data()) % huge_pages::kHugePage, 0u);
   std::iota(large.begin(), large.end(), 0.0);
   std::iota(small.begin(), small.end(), 0.0);
@@ -21,7 +21,7 @@ TEST(HugePageAllocator, LargeBlocksStartAtAHugePageSmallOnesAtTheHeap) {
 
 TEST(HugePageAllocator, GrowingAndCopyingKeepTheContents) {
   HugeVector<int> v;
-  const int n = int(3 * kHugeBlockBytes / sizeof(int));
+  const int n = int(3 * kOwnBlockBytes / sizeof(int));
   for (int i = 0; i < n; ++i) v.push_back(i);  // through the heap into mapped blocks
   const HugeVector<int> copy = v;
   ASSERT_EQ(copy.size(), size_t(n));
@@ -35,7 +35,7 @@ TEST(HugePageAllocator, GrowingAndCopyingKeepTheContents) {
 // touched: no fresh pages to fault and zero); release_kept gives them back.
 TEST(HugePageAllocator, AFreedBlockServesTheNextRequestItFits) {
   huge_pages::release_kept();
-  const size_t n = 2 * kHugeBlockBytes / sizeof(double);
+  const size_t n = 2 * kOwnBlockBytes / sizeof(double);
   const void* first = nullptr;
   {
     HugeVector<double> v(n, 1.0);

@@ -1,19 +1,24 @@
 // Memory for a part's large per-face arrays (its distance structure's faces,
 // boxes and tree, and what building them needs for a moment): each block of
-// at least kHugeBlockBytes is mapped on its own, at a 2 MiB boundary, and the
-// kernel is asked to back it with transparent huge pages (madvise).
+// at least kOwnBlockBytes is mapped on its own, at a 2 MiB boundary, and the
+// kernel is asked to back it with transparent huge pages (madvise); the whole
+// 2 MiB stretches of a block get them.
 //
 // Why: building a bearing ring's distances (201,216 faces) writes about 100 MB,
 // and the first touch of each fresh 4 KiB page is a page fault: measured, two
 // fifths of the build's time on a virtual machine, where a fault costs the
-// most. A huge page faults once per 2 MiB. Where the system offers none
-// (transparent_hugepage `never`) the advice is ignored: ordinary memory.
+// most (about 3 µs). A huge page faults once per 2 MiB. Where the system
+// offers none (transparent_hugepage `never`) the advice is ignored: ordinary
+// memory.
 //
 // Fresh memory is also zeroed by the kernel, whatever its pages: a freed
 // block is therefore kept (up to kKeptBytes, 128 MB, in all) and handed to the next
 // request it fits, already touched: most blocks of a build are scratch that
-// the next part's build asks for again. They stay kept for the process's life
-// (a bounded cost, counted in docs/performance.md); release_kept() gives them back.
+// the next part's build asks for again, and the blocks of distances the
+// refinement's budget lets go serve the next part's (the heap would give
+// them back to the system, to be faulted in again). They stay kept for the
+// process's life (a bounded cost, counted in docs/performance.md);
+// release_kept() gives them back.
 #pragma once
 
 #include <cstddef>
@@ -23,9 +28,10 @@
 
 namespace pd {
 
-/// Blocks below this come from the ordinary heap: a huge page for them would
-/// mostly hold nothing.
-inline constexpr std::size_t kHugeBlockBytes = std::size_t(4) << 20;
+/// Blocks below this come from the ordinary heap: a part of a few thousand
+/// faces, whose arrays a mapping of their own would only scatter (each
+/// mapping is one of the process's limited areas, vm.max_map_count).
+inline constexpr std::size_t kOwnBlockBytes = std::size_t(256) << 10;
 
 namespace huge_pages {
 
@@ -61,11 +67,11 @@ struct HugePageAllocator {
 
   T* allocate(std::size_t n) {
     if (n > std::size_t(-1) / sizeof(T)) throw std::bad_alloc();
-    if (n * sizeof(T) < kHugeBlockBytes) return std::allocator<T>().allocate(n);
+    if (n * sizeof(T) < kOwnBlockBytes) return std::allocator<T>().allocate(n);
     return static_cast<T*>(huge_pages::take(n * sizeof(T)));
   }
   void deallocate(T* p, std::size_t n) noexcept {
-    if (n * sizeof(T) < kHugeBlockBytes)
+    if (n * sizeof(T) < kOwnBlockBytes)
       std::allocator<T>().deallocate(p, n);
     else
       huge_pages::give(p);
