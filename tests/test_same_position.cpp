@@ -2,6 +2,7 @@
 // earlier column.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -10,18 +11,33 @@
 
 using namespace pd;
 
-TEST(SamePosition, BoundaryEdgesAreThoseOfAnOddNumberOfTriangles) {
-  // A tetrahedron as STL stores it (each triangle its own corners): closed.
-  const Vec3 c[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+namespace {
+
+// Triangles of the corners c as STL stores them: each triangle its own three
+// vertices, `spare` more columns at the end (set by the caller).
+Mesh soup_of_corners(const std::vector<Vec3>& c, const std::vector<std::array<int, 3>>& faces,
+                     int spare = 0) {
+  const int n = static_cast<int>(faces.size());
   Mesh m;
-  m.vertices.resize(3, 12);
-  m.triangles.resize(3, 4);
-  for (int t = 0; t < 4; ++t)
+  m.vertices.resize(3, 3 * n + spare);
+  m.vertices.setZero();
+  m.triangles.resize(3, n);
+  for (int t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k) {
-      m.vertices.col(3 * t + k) = c[faces[t][k]];
+      m.vertices.col(3 * t + k) = c[size_t(faces[size_t(t)][size_t(k)])];
       m.triangles(k, t) = 3 * t + k;
     }
+  return m;
+}
+
+const std::vector<Vec3> kTetrahedronCorners = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                                               Vec3(0, 0, 1)};
+
+}  // namespace
+
+TEST(SamePosition, BoundaryEdgesAreThoseOfAnOddNumberOfTriangles) {
+  // A tetrahedron as STL stores it (each triangle its own corners): closed.
+  const Mesh m = soup_of_corners(kTetrahedronCorners, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
   EXPECT_EQ(boundary_edges(m), 0);
   Mesh open = m;  // one face missing: its three edges are the boundary
   open.triangles.conservativeResize(3, 3);
@@ -97,16 +113,8 @@ TEST(SamePosition, EveryColumnPointsAtTheFirstEqualOne) {
 TEST(SamePosition, WeldedKeepsEveryTrianglesCornersWithEachPositionOnce) {
   // A tetrahedron as STL stores it, a needle (two corners at one position),
   // and a −0 that equals its 0; a column no triangle uses stays.
-  const Vec3 c[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-  const int faces[5][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {1, 1, 2}};
-  Mesh m;
-  m.vertices.resize(3, 16);
-  m.triangles.resize(3, 5);
-  for (int t = 0; t < 5; ++t)
-    for (int k = 0; k < 3; ++k) {
-      m.vertices.col(3 * t + k) = c[faces[t][k]];
-      m.triangles(k, t) = 3 * t + k;
-    }
+  Mesh m = soup_of_corners(kTetrahedronCorners,
+                           {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {1, 1, 2}}, 1);
   m.vertices.col(3) = Vec3(-0.0, 0, 0);  // face 1's first corner: c[0]'s position
   m.vertices.col(15) = Vec3(7, 7, 7);    // used by no triangle
   const Mesh w = welded(m, first_at_same_position(m.vertices));

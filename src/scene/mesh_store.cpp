@@ -73,7 +73,8 @@ long long MeshStore::stored_bytes(long vertices, long triangles) {
 
 std::string MeshStore::put(const std::string& key, const Mesh& input,
                            const std::vector<int>* first) const {
-  const Mesh mesh = welded(input, first ? *first : first_at_same_position(input.vertices));
+  const bool given = first && first->size() == size_t(input.vertices.cols());
+  const Mesh mesh = welded(input, given ? *first : first_at_same_position(input.vertices));
   const bool f32 = fits_float(mesh.vertices);
   std::string body;
   body.reserve(size_t(stored_bytes(mesh.vertices.cols(), mesh.triangles.cols())));
