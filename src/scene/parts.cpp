@@ -295,8 +295,8 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
     if (!f.read.tessellations.empty()) f.tessellation = f.read.tessellations[0];
     // Hulls first: a mesh they reject (non-finite coordinates, ...) fails as in
     // pieces "hull", before any measurement.
-    bool store = false;                   // the cache entry is new, or gains the sag
-    std::vector<std::vector<int>> welds;  // per mesh, when its hulls were made here
+    bool store = false;          // the cache entry is new, or gains the sag
+    std::vector<int> sole_weld;  // a sole mesh's, when its hulls were made here: the store's
     if (!f.hulls_cached) {
       f.warnings = f.read.warnings;
       long open = 0;
@@ -305,11 +305,12 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
         // Welded once for all: qhull on each position once (an STL file
         // repeats every corner about six times), the open-shell check, and
         // the store's copy below.
-        const std::vector<int>& first = welds.emplace_back(first_at_same_position(m.vertices));
+        std::vector<int> first = first_at_same_position(m.vertices);
         f.reduced.push_back(convex_hull(distinct_positions(m.vertices, first),
                                         f.reduced.empty() ? &f.facets : nullptr)
                                 .vertices);
         open += boundary_edges(m, first);
+        if (meshes.size() == 1) sole_weld = std::move(first);
       }
       if (open > 0) f.warnings.push_back(open_mesh_warning(open));  // cached with the hulls
       store = true;
@@ -336,7 +337,8 @@ void digest(const PartSpec& spec, MeshFile& f, double concavity_tol, const Parts
         f.concavity = c.concavity;
         f.closed = c.closed;
       }
-      std::string why = cache.meshes->put(f.hash, meshes[0], welds.empty() ? nullptr : &welds[0]);
+      std::string why =
+          cache.meshes->put(f.hash, meshes[0], sole_weld.empty() ? nullptr : &sole_weld);
       // Its hull and facets too, for the convexity measure a pair may ask for.
       if (why.empty() && convexity_left_for_pairs(spec) && !f.hulls_cached)
         why = cache.meshes->put_hull(f.hash, f.reduced[0], f.facets);
