@@ -80,6 +80,18 @@ class ByteCache {
     return b.value;
   }
 
+  /// Drops the kept value of `key` now (its memory goes when its last holder
+  /// lets it go): a value no later task will ask for. Nothing while it is
+  /// being built.
+  void erase(const Key& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = entries_.find(key);
+    if (it == entries_.end() || it->second.bytes == 0) return;
+    bytes_ -= it->second.bytes;
+    order_.erase(it->second.used);
+    entries_.erase(it);
+  }
+
   size_t builds() const { return builds_; }
   /// Values dropped to keep within the budget, so far.
   size_t drops() const { return drops_; }

@@ -145,6 +145,45 @@ TEST(ConvexityOnDemand, APairsResultDoesNotDependOnTheOtherPairs) {
   EXPECT_EQ(part(alone, "plate").convex, false);
 }
 
+TEST(ConvexityOnDemand, APairMeasuresItsFirstPartWhateverAnotherPairFound) {
+  // Two rods in an L bracket's inner corner, inside its hull and clear of it.
+  // A rod's sides are split in twenty (63 vertices read per hull vertex, the
+  // bracket 6), so each pair measures its rod first: convex, then the
+  // bracket. The second pair to come measures its rod too, though the first
+  // has found the bracket nonconvex by then (alone, it would).
+  const std::string dir = pd_test::scratch_dir("on_demand", "first_part").string();
+  const auto rod = [](const shapes::Vec2& at, double r) {
+    std::vector<shapes::Vec2> profile = {{0, 2}};
+    for (int k = 0; k <= 20; ++k) profile.push_back({r, 2 + 16.0 * k / 20});
+    profile.push_back({0, 18});
+    return shapes::translated(shapes::revolution(profile, 16), Vec3(at.x(), at.y(), 0));
+  };
+  json list = json::array();
+  for (const auto& [id, mesh] :
+       std::vector<std::pair<std::string, Mesh>>{{"bracket", shapes::l_bracket(40, 5, 20)},
+                                                 {"rod_a", rod({15, 15}, 4)},
+                                                 {"rod_b", rod({22, 12}, 3)}}) {
+    pd::test::write_binary_stl(dir + "/" + id + ".stl", mesh);
+    list.push_back({{"id", id}, {"mesh", dir + "/" + id + ".stl"}});
+  }
+  for (int jobs : {1, 2}) {
+    const SceneSpec spec =
+        parse_scene_json(json{{"tolerance", 0.1}, {"parts", list}}.dump(), "scene.json", "");
+    RunOptions o;
+    o.tolerance = 0.1;
+    o.quiet = true;
+    o.jobs = jobs;
+    const RunResult r = run_scene(spec, o);
+    EXPECT_EQ(part(r, "bracket").convex, false) << jobs;
+    EXPECT_EQ(part(r, "rod_a").convex, true) << jobs;
+    EXPECT_EQ(part(r, "rod_b").convex, true) << jobs;
+    for (const char* id : {"rod_a", "rod_b"}) {
+      EXPECT_EQ(pair(r, "bracket", id).status, Status::kSeparated) << id;
+      EXPECT_EQ(pair(r, "bracket", id).depth_source, "mesh-test") << id;
+    }
+  }
+}
+
 TEST(ConvexityOnDemand, EveryInstanceOfAFileGetsTheSameMeasure) {
   // One bracket file placed four ways (a quarter turn far from the origin, an
   // arbitrary turn, in inches): measured in file coordinates from the file's

@@ -64,6 +64,25 @@ TEST(ByteCache, NeverDropsAValueInUse) {
   EXPECT_EQ(made, 2);
 }
 
+TEST(ByteCache, AnErasedValueGoesWhenItsLastHolderLetsItGo) {
+  Cache cache(1000);
+  int made = 0;
+  std::weak_ptr<const int> seen;
+  {
+    const auto held = cache.get(1, [&] { return ++made, built(1, 100); });
+    seen = held;
+    cache.get(2, [&] { return ++made, built(2, 100); });
+    cache.erase(1);
+    cache.erase(3);                // never kept: nothing
+    EXPECT_FALSE(seen.expired());  // still held here
+  }
+  EXPECT_TRUE(seen.expired());  // the cache kept it no longer
+  cache.get(1, [&] { return ++made, built(1, 100); });
+  cache.get(2, [&] { return ++made, built(2, 100); });  // kept
+  EXPECT_EQ(made, 3);
+  EXPECT_EQ(cache.drops(), 0u);  // an erase is no drop past the budget
+}
+
 TEST(ByteCache, AFailedBuildIsNotKeptAndOneBuildServesConcurrentCallers) {
   Cache cache(1000);
   EXPECT_THROW(cache.get(1, []() -> Cache::Built { throw std::runtime_error("no"); }),

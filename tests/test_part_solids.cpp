@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "batch/convexity_on_demand.h"
 #include "batch/pair_solve.h"
 #include "batch/part_solids.h"
 #include "batch/refine.h"
@@ -82,12 +81,12 @@ TEST(PartSolids, ABudgetTooSmallForAPartBuildsItAgainWhenAskedAgain) {
   EXPECT_GE(solids.drops(), 1u);
 }
 
-TEST(PartSolids, TheMeasuresLeaveCachedThePartsTheRefinementAsksForFirst) {
+TEST(PartSolids, EachPartIsBuiltOnceForItsMeasureAndItsPairsAndLetGoAfter) {
   // Six plates in a row, each with a pin through its hole (clear of it), every
-  // file placed as it is, and a budget for about three plates' distances. The
-  // plates are measured nonconvex (the pins never), against the order the
-  // refinement then takes, so the three it asks for first are still kept: it
-  // builds only the other three and the pins.
+  // file placed as it is, and a budget for about three plates' distances. Each
+  // plate is measured nonconvex (the pins never) with the distances its pair
+  // is then refined with, and they go after its pair: each part is built
+  // once, and no two plates' distances are held at once.
   const std::string dir = pd_test::scratch_dir("part_solids", "measure_order").string();
   json list = json::array();
   for (int k = 0; k < 6; ++k) {
@@ -118,15 +117,15 @@ TEST(PartSolids, TheMeasuresLeaveCachedThePartsTheRefinementAsksForFirst) {
   options.tolerance = 0.1;
   options.quiet = true;
   options.jobs = 1;
-  measure_convexity_on_demand(parts, pairs, results, options, checks, solids);
+  refine_nonconvex_pairs(parts, pairs, results, options, checks, solids);
   for (int k = 0; k < 6; ++k) {
     EXPECT_EQ(parts[size_t(2 * k)].convex, false) << k;
     EXPECT_FALSE(parts[size_t(2 * k + 1)].convex.has_value()) << k;
   }
-  EXPECT_EQ(solids.builds(), 6u);
-  refine_nonconvex_pairs(parts, pairs, results, options, checks, solids);
   for (const PairResult& r : results) EXPECT_EQ(r.status, Status::kSeparated);
-  EXPECT_EQ(solids.builds(), 6u + 6u + 3u);
+  EXPECT_EQ(solids.builds(), 6u + 6u);
+  EXPECT_EQ(solids.drops(), 0u);
+  EXPECT_LT(solids.peak_bytes(), plate + plate / 2);
 }
 
 }  // namespace

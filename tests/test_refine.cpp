@@ -277,7 +277,9 @@ TEST(Refine, BlocksInAnLBracketsNotchAreDecidedWhereTheyMeet) {
   for (const PairResult& r : results) ASSERT_EQ(r.status, Status::kInterference);
   const PairResult convex = results[3];
   refine_nonconvex_pairs(parts, pairs, results, options, checks);
-  EXPECT_EQ(told, 3);
+  // Each pair is told once: the three refined, and the convex pair the hull
+  // stage held back while its parts' convexity was open.
+  EXPECT_EQ(told, 4);
   // Clear of the legs: the hulls overlap, the surfaces do not meet.
   EXPECT_EQ(results[0].status, Status::kSeparated);
   EXPECT_EQ(results[0].depth_source, "mesh-test");

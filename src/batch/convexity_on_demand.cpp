@@ -1,17 +1,11 @@
 #include "batch/convexity_on_demand.h"
 
 #include <algorithm>
-#include <cstdint>
-#include <map>
-#include <optional>
-#include <string>
+#include <memory>
 #include <tuple>
 
-#include "batch/locality.h"
-#include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/run_stages.h"
-#include "parallel_for.h"
 #include "scene/part_convexity.h"
 
 namespace pd {
@@ -52,142 +46,115 @@ std::vector<int> measuring_order(const std::vector<Part>& parts, int a, int b) {
   return order;
 }
 
-// The parts the pair still needs measured, given what is known so far.
-std::vector<int> still_needed(const std::vector<Part>& parts, int a, int b,
-                              const PairChecks& checks) {
-  const Part &pa = parts[size_t(a)], &pb = parts[size_t(b)];
-  std::vector<int> need;
-  const std::vector<int> order = measuring_order(parts, a, b);
-  const bool pieces =
-      checks.clearance || pa.mode == Pieces::kDecompose || pb.mode == Pieces::kDecompose;
-  if (pieces) {  // each nonconvex part is decomposed
-    for (int p : order)
-      if (convexity_unmeasured(parts[size_t(p)])) need.push_back(p);
-    return need;
-  }
-  if (pa.refinable() || pb.refinable()) return need;  // decided on the surfaces
-  for (int p : order)
-    if (convexity_unmeasured(parts[size_t(p)])) return {p};
-  return need;
-}
-
-// Measures the parts marked in `which`, each file at each stretch once (its
-// instances share the answer); a part that cannot be measured (its surface
-// lost from the store) counts as nonconvex: the refinement decides its pairs
-// and reports what it cannot read.
-// A file placed as it is by one of its instances is measured with that
-// instance's distances from `solids`, which the refinement then finds built.
-void measure(std::vector<Part>& parts, const std::vector<int>& which, const RunOptions& options,
-             PartSolids& solids) {
-  std::map<std::string, std::vector<int>> by_key;  // ordered: the same order on every run
-  for (int p : which) by_key[convexity_key_of(parts[size_t(p)])].push_back(p);
-  std::vector<const std::vector<int>*> files;
-  for (const auto& [key, instances] : by_key) files.push_back(&instances);
-  // Against the refinement's order (batch/locality.h): the files it asks for
-  // first are measured last, so the distances the cache keeps when the
-  // measures end are the ones it needs first (a budget smaller than every
-  // measured part's distances drops the others). Each file's measure is its
-  // own: the order changes no result.
-  const std::vector<std::uint64_t> code = locality_codes(parts);
-  const auto where = [&](const std::vector<int>* instances) {  // of the instance the cache keeps
-    for (int p : *instances)
-      if (placed_as_file(parts[size_t(p)])) return code[size_t(p)];
-    return code[size_t(instances->front())];
-  };
-  std::stable_sort(files.begin(), files.end(),
-                   [&](const auto* x, const auto* y) { return where(x) > where(y); });
-  // When the budget holds every measured part's distances, none is dropped
-  // whatever the order: then the largest first, so that the threads end
-  // together (a bearing's two rings measured last kept one thread waiting
-  // for the other's 0.3 s while the small parts were done). The size is the
-  // vertices read, which only estimates the faces' count (three a face in an
-  // STL file, about half a face in an indexed one): a low estimate costs only
-  // the order's benefit (distances dropped and built again), never a result.
-  const auto size_of = [&](const std::vector<int>* instances) {
-    return parts[size_t(instances->front())].vertex_count;
-  };
-  size_t all = 0;
-  for (const auto* f : files) all += solid_bytes(size_of(f));
-  if (all <= size_t(std::max(0.0, options.memory_mb)) << 20)
-    std::stable_sort(files.begin(), files.end(),
-                     [&](const auto* x, const auto* y) { return size_of(x) > size_of(y); });
-  Progress progress(files.size(), options.quiet, "convexity measures");
-  parallel_for(files.size(), options.jobs, [&](size_t k) {
-    const std::vector<int>& instances = *files[k];
-    std::optional<StoredConvexity> c;
-    const auto as_file = std::find_if(instances.begin(), instances.end(),
-                                      [&](int p) { return placed_as_file(parts[size_t(p)]); });
-    const auto prepared = [&](const Mesh& file_mesh) -> std::shared_ptr<const PreparedMesh> {
-      if (as_file == instances.end()) return nullptr;
-      const std::shared_ptr<const SolidDistance> d = solids.of(*as_file, file_mesh);
-      return {d, &d->mesh()};  // keeps the distances alive
-    };
-    try {
-      c = measure_file_convexity(parts[size_t(instances.front())], options.cache_dir, prepared);
-    } catch (const std::exception&) {
-    }
-    for (int p : instances) {
-      if (c)
-        set_convexity(parts[size_t(p)], *c);
-      else
-        parts[size_t(p)].convex = false;
-    }
-    // The distances the cache let go go back to the system, not to a
-    // thread's heap that would keep them resident through the refinement
-    // (100M triangles: 0.9 GB of them). The file's mesh stays in the heap
-    // for the next measure.
-    solids.give_back_dropped();
-    progress.tick();
-  });
-  progress.finish();
-}
-
 }  // namespace
 
 bool turns_on_convexity(const PairResult& r, const Part& a, const Part& b) {
   return (a.convexity_on_demand() || b.convexity_on_demand()) && hulls_interfered(r);
 }
 
-void measure_convexity_on_demand(std::vector<Part>& parts,
-                                 const std::vector<std::pair<int, int>>& pairs,
-                                 std::vector<PairResult>& results, const RunOptions& options,
-                                 const std::function<PairChecks(int, int)>& checks,
-                                 PartSolids& solids) {
-  std::vector<size_t> open;
+ConvexityOnDemand::ConvexityOnDemand(std::vector<Part>& parts,
+                                     const std::vector<std::pair<int, int>>& pairs,
+                                     const std::vector<PairResult>& results,
+                                     const std::function<PairChecks(int, int)>& checks,
+                                     const std::string& cache_dir, PartSolids& solids)
+    : parts_(parts),
+      pairs_(pairs),
+      checks_(checks),
+      cache_dir_(cache_dir),
+      solids_(solids),
+      open_(pairs.size(), 0),
+      measured_(parts.size(), 0) {
   for (size_t k = 0; k < pairs.size(); ++k)
-    if (turns_on_convexity(results[k], parts[size_t(pairs[k].first)],
-                           parts[size_t(pairs[k].second)]))
-      open.push_back(k);
-  // At most two rounds: a pair's first part, then its second where the first
-  // was convex.
-  for (;;) {
-    std::vector<char> chosen(parts.size(), 0);
-    for (size_t k : open)
-      for (int p : still_needed(parts, pairs[k].first, pairs[k].second,
-                                checks(pairs[k].first, pairs[k].second)))
-        chosen[size_t(p)] = 1;
-    std::vector<int> which;
-    for (size_t p = 0; p < parts.size(); ++p)
-      if (chosen[p]) which.push_back(static_cast<int>(p));
-    if (which.empty()) break;
-    measure(parts, which, options, solids);
+    open_[k] = turns_on_convexity(results[k], parts[size_t(pairs[k].first)],
+                                  parts[size_t(pairs[k].second)]);
+}
+
+bool ConvexityOnDemand::measured_convex(int p) {
+  const Part& part = parts_[size_t(p)];
+  const std::string key = convexity_key_of(part);
+  std::shared_ptr<std::promise<std::optional<StoredConvexity>>> mine;
+  std::shared_future<std::optional<StoredConvexity>> value;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    measured_[size_t(p)] = 1;
+    auto it = by_file_.find(key);
+    if (it == by_file_.end()) {
+      mine = std::make_shared<std::promise<std::optional<StoredConvexity>>>();
+      value = mine->get_future().share();
+      by_file_.emplace(key, value);
+    } else {
+      value = it->second;
+    }
+  }
+  if (mine) {
+    // A part placed as its file is measured with the distances its pairs
+    // are refined with (built here when not kept); another instance measures
+    // on its own, since its distances are of its placed surface.
+    const auto prepared = [&](const Mesh& file_mesh) -> std::shared_ptr<const PreparedMesh> {
+      if (!placed_as_file(part)) return nullptr;
+      const std::shared_ptr<const SolidDistance> d = solids_.of(p, file_mesh);
+      return {d, &d->mesh()};  // keeps the distances alive
+    };
+    std::optional<StoredConvexity> c;
+    try {
+      c = measure_file_convexity(part, cache_dir_, prepared);
+    } catch (const std::exception&) {  // counts as nonconvex (finish)
+    }
+    mine->set_value(c);
+  }
+  const std::optional<StoredConvexity>& c = value.get();
+  return c && convex_by(part, *c);
+}
+
+PairConvexity ConvexityOnDemand::settle(size_t k) {
+  const auto [a, b] = pairs_[k];
+  const Part &pa = parts_[size_t(a)], &pb = parts_[size_t(b)];
+  PairConvexity known{pa.convex, pb.convex};
+  if (!open_[k]) return known;
+  const auto measure = [&](int p) {
+    const bool convex = measured_convex(p);
+    (p == a ? known.a : known.b) = convex;
+    return convex;
+  };
+  const std::vector<int> order = measuring_order(parts_, a, b);
+  const PairChecks c = checks_(a, b);
+  if (c.clearance || pa.mode == Pieces::kDecompose || pb.mode == Pieces::kDecompose) {
+    for (int p : order)  // each nonconvex part is decomposed
+      if (convexity_unmeasured(parts_[size_t(p)])) measure(p);
+    return known;
+  }
+  if (pa.refinable() || pb.refinable()) return known;  // decided on the surfaces
+  for (int p : order)
+    if (convexity_unmeasured(parts_[size_t(p)]) && !measure(p)) break;
+  return known;
+}
+
+void ConvexityOnDemand::finish(std::vector<PairResult>& results, const RunOptions& options) {
+  for (size_t p = 0; p < parts_.size(); ++p) {
+    if (!measured_[p]) continue;
+    const std::optional<StoredConvexity>& c = by_file_.at(convexity_key_of(parts_[p])).get();
+    if (c)
+      set_convexity(parts_[p], *c);
+    else
+      parts_[p].convex = false;
   }
   // Pairs stopped early for a part that turned out convex, with a convex
   // partner: their hulls decide, so they are solved on them in full.
   std::vector<size_t> again;
-  for (size_t k : open) {
-    const Part &a = parts[size_t(pairs[k].first)], &b = parts[size_t(pairs[k].second)];
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    if (!open_[k]) continue;
+    const Part &a = parts_[size_t(pairs_[k].first)], &b = parts_[size_t(pairs_[k].second)];
     if (!results[k].reused && results[k].stats.stop_reason == StopReason::kAboveTolerance &&
         !a.refinable() && !b.refinable())
       again.push_back(k);
   }
-  if (!again.empty()) solve_pairs(parts, pairs, again, options, checks, results);
-  for (size_t k : open) {
+  if (!again.empty()) solve_pairs(parts_, pairs_, again, options, checks_, results);
+  for (size_t k = 0; k < pairs_.size(); ++k) {
     PairResult& r = results[k];
-    if (r.reused) continue;
-    const Part &a = parts[size_t(pairs[k].first)], &b = parts[size_t(pairs[k].second)];
+    if (!open_[k] || r.reused) continue;
+    const Part &a = parts_[size_t(pairs_[k].first)], &b = parts_[size_t(pairs_[k].second)];
     note_hull_stage(r, a, b);
-    if (options.on_pair && !needs_refinement(r, a, b)) options.on_pair(r, parts);
+    if (options.on_pair && !needs_refinement(r, a, b)) options.on_pair(r, parts_);
   }
 }
 

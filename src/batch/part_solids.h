@@ -40,6 +40,9 @@ class PartSolids {
   /// kept) from `file_mesh`, its file's mesh the caller has read already.
   std::shared_ptr<const SolidDistance> of(int p, const Mesh& file_mesh);
 
+  /// Lets part p's distances go: no later pair asks for them.
+  void let_go(int p) { cache_.erase(p); }
+
   /// Hands what the cache has dropped since the last call back to the
   /// system (malloc_trim), not to a heap that would keep it resident for the
   /// rest of the run; nothing when it dropped nothing (a trim also gives back

@@ -9,6 +9,7 @@
 
 #include "batch/brep_confirm.h"
 #include "batch/contact_band.h"
+#include "batch/convexity_on_demand.h"
 #include "batch/decomposition_cache.h"
 #include "batch/locality.h"
 #include "batch/pair_queue.h"
@@ -28,8 +29,13 @@
 namespace pd {
 
 bool needs_refinement(const PairResult& r, const Part& a, const Part& b) {
+  return needs_refinement(r, a, a.convex, b, b.convex);
+}
+
+bool needs_refinement(const PairResult& r, const Part& a, std::optional<bool> convex_a,
+                      const Part& b, std::optional<bool> convex_b) {
   return r.status == Status::kInterference && !r.motion && !r.duplicate &&
-         (a.refinable() || b.refinable());
+         (a.refinable_as(convex_a) || b.refinable_as(convex_b));
 }
 
 void note_hull_stage(PairResult& r, const Part& a, const Part& b) {
@@ -277,30 +283,6 @@ void decompose_parts(std::vector<Part>& parts, const std::vector<int>& which,
   });
 }
 
-// Step 0 of refine_nonconvex_pairs: the flagged pairs found in the refinement
-// cache, taken out of `flagged`; `keys` gets the key of each pair left in it.
-std::vector<std::pair<size_t, StoredRefinement>> take_cached(
-    const std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
-    const std::vector<PairResult>& results, const RunOptions& options,
-    const std::function<PairChecks(int, int)>& checks, std::vector<size_t>& flagged,
-    std::vector<std::string>& keys) {
-  std::vector<std::pair<size_t, StoredRefinement>> hits;
-  if (options.cache_dir.empty()) return hits;
-  std::vector<size_t> misses;
-  for (size_t k : flagged) {
-    const auto [a, b] = pairs[k];
-    std::string key = refinement_key(parts[a], parts[b], results[k], options, checks(a, b));
-    if (auto hit = read_cached_refinement(options.cache_dir, key)) {
-      hits.emplace_back(k, std::move(*hit));
-    } else {
-      misses.push_back(k);
-      keys.push_back(std::move(key));
-    }
-  }
-  flagged.swap(misses);
-  return hits;
-}
-
 // Step 2 for one pair whose surfaces meet: the overlap thickness, and the
 // deepest point of either surface inside the other (into `v`: a lower bound of
 // any separating move that needs no inside of the surface's own part); its
@@ -394,54 +376,58 @@ std::vector<size_t> by_locality(const std::vector<Part>& parts,
   return order;
 }
 
-// The steps of refine_nonconvex_pairs over its flagged pairs, each a method;
-// the state one step hands to the next is the members below.
+// The steps of refine_nonconvex_pairs over its pairs, each a method; the
+// state one step hands to the next is the members below.
 class Refinement {
  public:
   Refinement(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
              std::vector<PairResult>& results, const RunOptions& options,
-             const std::function<PairChecks(int, int)>& checks, PartSolids& solids)
+             const std::function<PairChecks(int, int)>& checks, PartSolids& solids,
+             ConvexityOnDemand& convexity)
       : parts_(parts),
         pairs_(pairs),
         results_(results),
         options_(options),
         checks_(checks),
-        solids_(solids) {
-    for (size_t k = 0; k < pairs.size(); ++k) {
-      const Part &a = parts[pairs[k].first], &b = parts[pairs[k].second];
-      if (!results[k].reused && needs_refinement(results[k], a, b)) flagged_.push_back(k);
-      // A refined pair taken from an earlier report (--reuse) is final; when
-      // its parts' pieces decided it, they are decomposed all the same (from
-      // the cache), so the report's part fields are a full run's.
-      if (results[k].reused && results[k].depth_source != "hull" &&
-          (a.refinable() || b.refinable()) &&
-          (checks(pairs[k].first, pairs[k].second).clearance || a.mode == Pieces::kDecompose ||
-           b.mode == Pieces::kDecompose))
-        reused_pieces_.push_back(k);
-    }
-  }
-  bool empty() const { return flagged_.empty() && reused_pieces_.empty(); }
-
-  // 0. Pairs refined before with the same parts, placements and settings are
-  // taken from the cache (batch/refine_cache.h): none of the steps below runs
-  // for them. Their parts are still decomposed (from the decomposition cache)
-  // when the pair needed pieces, so the report's part fields are the same.
-  void take_from_cache() {
-    hits_ = take_cached(parts_, pairs_, results_, options_, checks_, flagged_, keys_);
+        solids_(solids),
+        convexity_(convexity) {
+    for (size_t k = 0; k < pairs.size(); ++k)
+      if (convexity.open(k) ||
+          (!results[k].reused &&
+           needs_refinement(results[k], parts[pairs[k].first], parts[pairs[k].second])))
+        candidates_.push_back(k);
   }
 
-  // 1. Per pair, in an order that keeps a part's pairs together: do the
-  // surfaces meet as solids (and how deep is the deepest vertex), and 2. where
-  // they meet, the overlap thickness. Each part's distances come from a cache
-  // bounded by the run's memory budget (RunOptions::memory_mb), built from
-  // its surface in the mesh store when not there.
-  void test_and_measure() {
-    verdicts_.resize(flagged_.size());
-    thickness_.resize(flagged_.size());
-    why_not_.resize(flagged_.size());
-    no_solid_.assign(flagged_.size(), 0);
-    std::vector<char> pieces(flagged_.size(), 0);
-    const std::vector<size_t> order = by_locality(parts_, pairs_, flagged_);
+  // 1. Per pair, in an order that keeps a part's pairs together: measure the
+  // convexities it turns on (batch/convexity_on_demand.h); when it then needs
+  // the refinement, take it from the refinement cache where it was refined
+  // before with the same parts, placements and settings (batch/refine_cache.h:
+  // none of the steps below runs for it), else test whether the surfaces meet
+  // as solids (and how deep the deepest vertex is) and 2. where they meet,
+  // measure the overlap thickness. Each part's distances come from a cache
+  // bounded by the run's memory budget (RunOptions::memory_mb), built once
+  // from its surface in the mesh store, and let go after the part's last pair.
+  void settle_and_test() {
+    const size_t count = candidates_.size();
+    std::vector<char> refine(count, 0);
+    std::vector<std::optional<StoredRefinement>> hit(count);
+    std::vector<std::string> keys(count);
+    verdicts_.assign(count, MeshVerdict{});
+    thickness_.assign(count, std::nullopt);
+    why_not_.assign(count, std::string());
+    no_solid_.assign(count, 0);
+    std::vector<char> pieces(count, 0);
+    const std::vector<size_t> order = by_locality(parts_, pairs_, candidates_);
+    // Per part: its pairs not yet done. After its last, its distances go
+    // (their memory serves the next part's).
+    std::vector<int> left(parts_.size(), 0);
+    for (size_t k : candidates_) ++left[size_t(pairs_[k].first)], ++left[size_t(pairs_[k].second)];
+    std::mutex left_mutex;
+    const auto done = [&](int a, int b) {
+      std::lock_guard<std::mutex> lock(left_mutex);
+      for (int p : {a, b})
+        if (--left[size_t(p)] == 0) solids_.let_go(p);
+    };
     const auto solid_of = [&](int p) -> std::shared_ptr<const SolidDistance> {
       try {  // once per part while it stays in the cache, shared by its pairs and threads
         return solids_.of(p);
@@ -449,37 +435,35 @@ class Refinement {
         return nullptr;
       }
     };
-    Progress progress(flagged_.size(), options_.quiet, "mesh tests");
+    Progress progress(count, options_.quiet, "pairs on their surfaces");
     std::vector<std::pair<int, int>> parts_in_order;
-    for (size_t n : order) parts_in_order.push_back(pairs_[flagged_[n]]);
+    for (size_t n : order) parts_in_order.push_back(pairs_[candidates_[n]]);
     PairQueue queue(std::move(parts_in_order), kPairLookahead);
-    const auto test = [&](size_t k) {
+    const auto item = [&](size_t k) {
       const size_t n = order[k];
-      const auto [a, b] = pairs_[flagged_[n]];
+      const size_t pair = candidates_[n];
+      const auto [a, b] = pairs_[pair];
       std::shared_ptr<const SolidDistance> sa, sb;
       try {
-        sa = solid_of(a), sb = solid_of(b);
+        const PairConvexity known = convexity_.settle(pair);
+        refine[n] = !results_[pair].reused &&
+                    needs_refinement(results_[pair], parts_[a], known.a, parts_[b], known.b);
+        if (refine[n] && !options_.cache_dir.empty()) {
+          // Keyed by the convexity the pair knows: the same in every run of it.
+          keys[n] = refinement_key(parts_[a], known.a, parts_[b], known.b, results_[pair], options_,
+                                   checks_(a, b));
+          hit[n] = read_cached_refinement(options_.cache_dir, keys[n]);
+        }
+        if (refine[n] && !hit[n]) sa = solid_of(a), sb = solid_of(b);
       } catch (...) {
         queue.fetched(k);
+        done(a, b);
         throw;
       }
       queue.fetched(k);
-      no_solid_[n] = !sa || !sb;
-      const bool by_pieces = needs_pieces(n);
-      try {
-        verdicts_[n] =
-            mesh_verdict(sa ? &sa->mesh() : nullptr, sb ? &sb->mesh() : nullptr, by_pieces);
-      } catch (const std::exception&) {
-        verdicts_[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
-      }
-      const PairChecks c = checks_(a, b);
-      if (by_pieces) {
-        pieces[n] = verdicts_[n].intersect || c.clearance;
-      } else if (verdicts_[n].intersect || c.clearance) {
-        thickness_[n] = measure_thickness(
-            *sa, *sb, tolerance(n), c.tolerance ? &*c.tolerance : nullptr,
-            bound_widening(parts_[a], parts_[b]), results_[flagged_[n]], verdicts_[n], why_not_[n]);
-      }
+      if (refine[n] && !hit[n]) test(n, sa.get(), sb.get(), pieces[n]);
+      sa.reset(), sb.reset();
+      done(a, b);
       solids_.give_back_dropped();
       progress.tick();
     };
@@ -490,7 +474,7 @@ class Refinement {
     parallel_for(size_t(threads), threads, [&](size_t) {
       while (const std::optional<size_t> k = queue.take()) {
         try {
-          test(*k);
+          item(*k);
         } catch (...) {
           failed[*k] = std::current_exception();
         }
@@ -499,8 +483,47 @@ class Refinement {
     progress.finish();
     for (const auto& e : failed)
       if (e) std::rethrow_exception(e);
-    for (size_t n = 0; n < flagged_.size(); ++n)
-      if (pieces[n]) solve_.push_back(n);
+    // The pairs refined here, in the pairs' order, and those the cache held.
+    std::vector<MeshVerdict> verdicts;
+    std::vector<std::optional<ThicknessResult>> thickness;
+    std::vector<std::string> why_not;
+    std::vector<char> no_solid;
+    for (size_t n = 0; n < count; ++n) {
+      if (!refine[n]) continue;
+      if (hit[n]) {
+        hits_.emplace_back(candidates_[n], std::move(*hit[n]));
+        continue;
+      }
+      if (pieces[n]) solve_.push_back(flagged_.size());
+      flagged_.push_back(candidates_[n]);
+      if (!options_.cache_dir.empty()) keys_.push_back(std::move(keys[n]));
+      verdicts.push_back(verdicts_[n]);
+      thickness.push_back(std::move(thickness_[n]));
+      why_not.push_back(std::move(why_not_[n]));
+      no_solid.push_back(no_solid_[n]);
+    }
+    verdicts_.swap(verdicts);
+    thickness_.swap(thickness);
+    why_not_.swap(why_not);
+    no_solid_.swap(no_solid);
+  }
+
+  // Whether anything is left for the steps below.
+  bool empty() const { return flagged_.empty() && hits_.empty() && reused_pieces_.empty(); }
+
+  // Once every convexity is set: the reused refined pairs whose parts' pieces
+  // decided. A refined pair taken from an earlier report (--reuse) is final;
+  // when its parts' pieces decided it, they are decomposed all the same (from
+  // the cache), so the report's part fields are a full run's.
+  void note_reused_pieces() {
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+      const Part &a = parts_[pairs_[k].first], &b = parts_[pairs_[k].second];
+      if (results_[k].reused && results_[k].depth_source != "hull" &&
+          (a.refinable() || b.refinable()) &&
+          (checks_(pairs_[k].first, pairs_[k].second).clearance || a.mode == Pieces::kDecompose ||
+           b.mode == Pieces::kDecompose))
+        reused_pieces_.push_back(k);
+    }
   }
 
   // 3. Decompose the refinable parts of the pairs that need pieces, and 4.
@@ -539,10 +562,10 @@ class Refinement {
                             (!pb.decomposition || pb.decomposition->complete);
       PairResult& r = results_[flagged_[n]];
       r = thickness_[n]
-              ? decide_thickness(r, verdicts_[n], *thickness_[n], tolerance(n), pair_size(pa, pb),
-                                 why_not_[n])
+              ? decide_thickness(r, verdicts_[n], *thickness_[n], tolerance_of_pair(flagged_[n]),
+                                 pair_size(pa, pb), why_not_[n])
               : decide_refined(r, verdicts_[n], piece_results_[n] ? &*piece_results_[n] : nullptr,
-                               complete, tolerance(n), pair_size(pa, pb));
+                               complete, tolerance_of_pair(flagged_[n]), pair_size(pa, pb));
       note_pair_tolerance(r, checks_(a, b));
       // Errors (a crashed or timed-out worker) are not stored: a rerun retries.
       if (!keys_.empty() && r.status != Status::kError) {
@@ -563,16 +586,39 @@ class Refinement {
   }
 
  private:
+  // Steps 1 and 2 for candidate n, whose parts' distances are sa and sb (null:
+  // no surface); `pieces`: its pieces decide (steps 3 and 4).
+  void test(size_t n, const SolidDistance* sa, const SolidDistance* sb, char& pieces) {
+    const size_t pair = candidates_[n];
+    const auto [a, b] = pairs_[pair];
+    no_solid_[n] = !sa || !sb;
+    const bool by_pieces = needs_pieces(pair, no_solid_[n]);
+    try {
+      verdicts_[n] =
+          mesh_verdict(sa ? &sa->mesh() : nullptr, sb ? &sb->mesh() : nullptr, by_pieces);
+    } catch (const std::exception&) {
+      verdicts_[n] = MeshVerdict{};  // cannot tell: may meet, pieces decide
+    }
+    const PairChecks c = checks_(a, b);
+    if (by_pieces) {
+      pieces = verdicts_[n].intersect || c.clearance;
+    } else if (verdicts_[n].intersect || c.clearance) {
+      thickness_[n] = measure_thickness(
+          *sa, *sb, tolerance_of_pair(pair), c.tolerance ? &*c.tolerance : nullptr,
+          bound_widening(parts_[a], parts_[b]), results_[pair], verdicts_[n], why_not_[n]);
+    }
+  }
+
   // A clearance check, a part in pieces `decompose` or one without a surface
   // keeps the convex pieces of a whole-part decomposition (steps 3 and 4);
   // every other pair whose surfaces meet gets the overlap thickness (step 2).
-  bool needs_pieces(size_t n) const {
-    const auto [a, b] = pairs_[flagged_[n]];
+  bool needs_pieces(size_t pair, bool no_solid) const {
+    const auto [a, b] = pairs_[pair];
     return checks_(a, b).clearance.has_value() || parts_[a].mode == Pieces::kDecompose ||
-           parts_[b].mode == Pieces::kDecompose || no_solid_[n];
+           parts_[b].mode == Pieces::kDecompose || no_solid;
   }
-  double tolerance(size_t n) const {
-    const auto [a, b] = pairs_[flagged_[n]];
+  double tolerance_of_pair(size_t pair) const {
+    const auto [a, b] = pairs_[pair];
     return pair_tolerance_of(checks_(a, b), options_.tolerance);
   }
 
@@ -581,12 +627,17 @@ class Refinement {
   std::vector<PairResult>& results_;
   const RunOptions& options_;
   const std::function<PairChecks(int, int)>& checks_;
-  std::vector<size_t> flagged_;        ///< indices into pairs_ of the pairs to refine
+  PartSolids& solids_;  ///< each part's distances, steps 1–2
+  ConvexityOnDemand& convexity_;
+  /// Indices into pairs_: the pairs that may need the refinement (their
+  /// verdict turns on a convexity, or needs it), step 1; those that need it
+  /// and are not in the cache, steps 2–5.
+  std::vector<size_t> candidates_, flagged_;
   std::vector<size_t> reused_pieces_;  ///< reused refined pairs whose parts' pieces decided
   std::vector<std::string> keys_;
   std::vector<std::pair<size_t, StoredRefinement>> hits_;
-  PartSolids& solids_;  ///< each part's distances, steps 1–2
-  // Per flagged pair (index n into flagged_):
+  // Per candidate (index n into candidates_) in step 1, then per flagged pair
+  // (index n into flagged_):
   std::vector<MeshVerdict> verdicts_;
   std::vector<char> no_solid_;  ///< a part of the pair has no surface to test
   std::vector<size_t> solve_;   ///< the pairs whose pieces decide
@@ -607,10 +658,12 @@ void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pai
 void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks, PartSolids& solids) {
-  Refinement refinement(parts, pairs, results, options, checks, solids);
+  ConvexityOnDemand convexity(parts, pairs, results, checks, options.cache_dir, solids);
+  Refinement refinement(parts, pairs, results, options, checks, solids, convexity);
+  refinement.settle_and_test();
+  convexity.finish(results, options);
+  refinement.note_reused_pieces();
   if (refinement.empty()) return;
-  refinement.take_from_cache();
-  refinement.test_and_measure();
   refinement.solve_piece_pairs();
   refinement.decide();
 }

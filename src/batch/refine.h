@@ -38,6 +38,9 @@ struct MeshVerdict {
 /// Whether the hull stage's result `r` of parts a, b needs the refinement (a
 /// duplicate, one mesh placed twice, does not: its parts overlap wholly).
 bool needs_refinement(const PairResult& r, const Part& a, const Part& b);
+/// The same, were the parts' convexity `convex_a` and `convex_b`.
+bool needs_refinement(const PairResult& r, const Part& a, std::optional<bool> convex_a,
+                      const Part& b, std::optional<bool> convex_b);
 
 /// At the hull stage: marks a final result of a pair with a part that is or
 /// may be nonconvex as confirmed (the hull depth bounds the parts' depth from
@@ -61,13 +64,16 @@ PairResult decide_thickness(const PairResult& hull, const MeshVerdict& mesh,
                             const ThicknessResult& t, double tolerance, double pair_size,
                             const std::string& why_not);
 
-/// Refines the flagged pairs of `results` in place (same order as `pairs`);
-/// the parts used get their `decomposition`. Seconds spent go to `seconds`.
+/// Measures the on-demand convexities the pairs turn on (batch/convexity_on_demand.h)
+/// and refines the pairs that then need it, in place in `results` (same order
+/// as `pairs`); the parts measured get their convexity, the parts used their
+/// `decomposition`.
 void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks);
-/// The same, each part's distances from `solids` (those the convexity
-/// measures built are not built again).
+/// The same, each part's distances from `solids`: a part's are built once
+/// for its convexity measure and its pairs while the budget holds them, and
+/// let go after its last pair.
 void refine_nonconvex_pairs(std::vector<Part>& parts, const std::vector<std::pair<int, int>>& pairs,
                             std::vector<PairResult>& results, const RunOptions& options,
                             const std::function<PairChecks(int, int)>& checks, PartSolids& solids);

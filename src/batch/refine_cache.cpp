@@ -39,9 +39,9 @@ void add_points(Hasher& h, const Points& p) {
   h.add(std::string_view(reinterpret_cast<const char*>(p.data()), sizeof(double) * p.size()));
 }
 
-void add_part(Hasher& h, const Part& p) {
+void add_part(Hasher& h, const Part& p, std::optional<bool> convex) {
   h.add("part").add(static_cast<double>(static_cast<int>(p.mode)));
-  h.add(p.convex ? (*p.convex ? "convex" : "nonconvex") : "unmeasured");
+  h.add(convex ? (*convex ? "convex" : "nonconvex") : "unmeasured");
   h.add(static_cast<double>(p.pieces.size()));
   for (const Hull& piece : p.pieces) add_points(h, piece.vertices);
   if (p.surface) {
@@ -53,12 +53,13 @@ void add_part(Hasher& h, const Part& p) {
 
 }  // namespace
 
-std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
+std::string refinement_key(const Part& a, std::optional<bool> convex_a, const Part& b,
+                           std::optional<bool> convex_b, const PairResult& hull,
                            const RunOptions& options, const PairChecks& checks) {
   Hasher h;
   h.add(kRefinementCache.format);
-  add_part(h, a);
-  add_part(h, b);
+  add_part(h, a, convex_a);
+  add_part(h, b, convex_b);
   h.add(status_name(hull.status)).add(hull.depth);
   for (int k = 0; k < 3; ++k) h.add(hull.direction[k]);
   h.add(options.tolerance).add(options.pair_timeout);

@@ -23,10 +23,18 @@ struct StoredRefinement {
 
 /// The key of pair (a, b)'s refinement: the geometry of both parts (their hull
 /// vertices; for mesh parts also the file's content hash and placement), their
-/// pieces modes, the hull stage's answer, the tolerance, the solver method and
-/// settings, the pair's checks, the decomposition settings and the format.
-std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
+/// pieces modes and convexity (`convex_a`, `convex_b`: as the pair knows them,
+/// batch/convexity_on_demand.h), the hull stage's answer, the tolerance, the
+/// solver method and settings, the pair's checks, the decomposition settings
+/// and the format.
+std::string refinement_key(const Part& a, std::optional<bool> convex_a, const Part& b,
+                           std::optional<bool> convex_b, const PairResult& hull,
                            const RunOptions& options, const PairChecks& checks);
+/// The same with the parts' own convexity.
+inline std::string refinement_key(const Part& a, const Part& b, const PairResult& hull,
+                                  const RunOptions& options, const PairChecks& checks) {
+  return refinement_key(a, a.convex, b, b.convex, hull, options, checks);
+}
 
 std::optional<StoredRefinement> read_cached_refinement(const std::string& dir,
                                                        const std::string& key);

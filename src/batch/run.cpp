@@ -7,8 +7,6 @@
 
 #include "batch/brep_confirm.h"
 #include "batch/content_hashes.h"
-#include "batch/convexity_on_demand.h"
-#include "batch/part_solids.h"
 #include "batch/progress.h"
 #include "batch/refine.h"
 #include "batch/rule_scope.h"
@@ -217,11 +215,7 @@ RunResult run_scene(const SceneSpec& scene, const RunOptions& options) {
                     pair_checks, out.reuse ? &*out.reuse : nullptr);
   solve_pairs(parts, pairs, to_solve, run_options, pair_checks, out.pairs);
   out.stages.solve = lap(t);
-  {  // the parts' distances, shared by the two, within the memory budget
-    PartSolids solids(out.parts, size_t(std::max(0.0, run_options.memory_mb)) << 20);
-    measure_convexity_on_demand(out.parts, pairs, out.pairs, run_options, pair_checks, solids);
-    refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks, solids);
-  }
+  refine_nonconvex_pairs(out.parts, pairs, out.pairs, run_options, pair_checks);
   out.stages.refine = lap(t);
   run_options.on_pair = on_pair;
   confirm_brep_pairs(out.parts, pairs, out.pairs, run_options, pair_checks, units);

@@ -65,9 +65,13 @@ StoredConvexity measure_file_convexity(
   return c;
 }
 
+bool convex_by(const Part& p, const StoredConvexity& c) {
+  return c.concavity <= stop_above_of(*p.surface);
+}
+
 void set_convexity(Part& p, const StoredConvexity& c) {
   PartSurface& s = *p.surface;
-  p.convex = c.concavity <= stop_above_of(s);
+  p.convex = convex_by(p, c);
   s.concavity = c.concavity * s.stretch;
   s.closed = c.closed;
 }

@@ -34,6 +34,9 @@ StoredConvexity measure_file_convexity(
     const Part& p, const std::string& cache_dir,
     const std::function<std::shared_ptr<const PreparedMesh>(const Mesh&)>& prepared = {});
 
+/// Whether `c`, the part's file measured, makes the part convex (set_convexity's verdict).
+bool convex_by(const Part& p, const StoredConvexity& c);
+
 /// Sets p.convex, p.surface->concavity and ->closed from `c`: convex when the
 /// file's concavity, at this part's stretch, is within its concavity tolerance
 /// or the coordinates' noise (as the parts stage decides it for decompose).

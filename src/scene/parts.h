@@ -96,8 +96,10 @@ struct Part {
   std::optional<PartBrep> brep;  ///< B-rep parts
 
   /// Whether a pair flagged by the hull stage must look past this part's hull.
-  bool refinable() const {
-    return surface && (mode == Pieces::kDecompose || (mode == Pieces::kAuto && convex == false));
+  bool refinable() const { return refinable_as(convex); }
+  /// The same, were its convexity `c`.
+  bool refinable_as(std::optional<bool> c) const {
+    return surface && (mode == Pieces::kDecompose || (mode == Pieces::kAuto && c == false));
   }
 
   /// A pieces auto mesh part: its convexity is measured only where a pair's
