@@ -61,6 +61,11 @@ std::shared_ptr<const SolidDistance> PartSolids::of(int p, const Mesh& file_mesh
   });
 }
 
+void PartSolids::let_go(int p) {
+  cache_.erase(p);
+  malloc_trim(0);
+}
+
 void PartSolids::give_back_dropped() {
   // The distances' freed huge-page blocks stay kept (128 MB at most,
   // geometry/huge_page_allocator.h): the next build takes them without

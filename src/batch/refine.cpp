@@ -21,6 +21,7 @@
 #include "geometry/hull.h"
 #include "geometry/mesh_intersect.h"
 #include "geometry/solid_distance.h"
+#include "geometry/union_find.h"
 #include "parallel_for.h"
 #include "results/certified_decimal.h"
 #include "tolerances.h"
@@ -359,18 +360,40 @@ std::vector<std::optional<Part>> pieces_only_parts(const std::vector<Part>& part
   return out;
 }
 
-// The order in which the flagged pairs are refined: by where their parts sit
+// The order in which the pairs are refined: by where their parts sit
 // (batch/locality.h), so that a part's pairs run close together and its
-// distances, built once, serve them from the cache.
+// distances, built once, serve them from the cache and go after the last.
+// - The parts the pairs join are taken group by group (a bearing and its
+//   housing), each group at its first part's place: a group across a
+//   boundary of the Morton order would otherwise keep its first parts
+//   through the groups between its two halves.
+// - In a group, each pair is placed by its part with fewer pairs, then by the
+//   other: a ball's two pairs (its inner and outer ring) come together, so
+//   only a ball or two is held at a time beside the rings, which stay for
+//   all of theirs.
 std::vector<size_t> by_locality(const std::vector<Part>& parts,
                                 const std::vector<std::pair<int, int>>& pairs,
-                                const std::vector<size_t>& flagged) {
+                                const std::vector<size_t>& which) {
   const std::vector<std::uint64_t> code = locality_codes(parts);
-  std::vector<size_t> order(flagged.size());
+  std::vector<int> count(parts.size(), 0);
+  UnionFind groups(parts.size());
+  for (size_t k : which) {
+    const auto [a, b] = pairs[k];
+    ++count[size_t(a)], ++count[size_t(b)];
+    groups.join(size_t(a), size_t(b));
+  }
+  std::vector<std::uint64_t> group_at(parts.size(), ~std::uint64_t(0));
+  for (size_t p = 0; p < parts.size(); ++p)
+    group_at[groups.find(p)] = std::min(group_at[groups.find(p)], code[p]);
+  std::vector<size_t> order(which.size());
   for (size_t n = 0; n < order.size(); ++n) order[n] = n;
   const auto key = [&](size_t n) {
-    const auto [a, b] = pairs[flagged[n]];
-    return std::make_tuple(std::min(code[a], code[b]), std::max(code[a], code[b]), flagged[n]);
+    auto [a, b] = pairs[which[n]];
+    if (std::make_pair(count[size_t(b)], code[size_t(b)]) <
+        std::make_pair(count[size_t(a)], code[size_t(a)]))
+      std::swap(a, b);
+    const size_t g = groups.find(size_t(a));
+    return std::make_tuple(group_at[g], g, code[size_t(a)], code[size_t(b)], which[n]);
   };
   std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return key(x) < key(y); });
   return order;

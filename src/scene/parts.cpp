@@ -1,5 +1,7 @@
 #include "scene/parts.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -788,7 +790,11 @@ std::vector<Part> build_parts(const SceneSpec& scene, int threads,
     if (on_built && !file_of[u]) on_built(users[u]);
   });
 
-  mesh_files.clear();  // their reduced points are placed in the parts now
+  // Their reduced points are placed in the parts now. The heap would keep
+  // them (the size of every hull again) for the rest of the run: back to the
+  // system (the 15M scene's main process: 166 -> 85 MB).
+  mesh_files.clear();
+  malloc_trim(0);
   // A distinct part's last scene part takes it over: a copy per instance, not
   // one more of every hull (at 10^8 triangles the hulls are most of what
   // the parts stage keeps).
