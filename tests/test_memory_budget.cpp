@@ -270,6 +270,15 @@ TEST(MemoryBudget, TheLargestProcessFollowsTheLargestPairNotTheAssembly) {
   ASSERT_GT(two, 0) << "pdcheck failed on the two copies";
   ASSERT_GT(eight, 0) << "pdcheck failed on the eight copies";
   EXPECT_LT(eight, two * 1.15 + 8) << "two copies: " << two << " MB, eight: " << eight << " MB";
+  // Under the default budget, which would hold every copy's distances, too:
+  // a part's go after its last pair.
+  const std::string roomy_args = " --no-cache --jobs 1";
+  const double two_roomy =
+      peak_process_mb(pd_test::pdcheck_binary_for("") + " " + small + "scene.json" + roomy_args);
+  const double eight_roomy =
+      peak_process_mb(pd_test::pdcheck_binary_for("") + " " + large + "scene.json" + roomy_args);
+  EXPECT_LT(eight_roomy, two_roomy * 1.15 + 8)
+      << "default budget: two copies: " << two_roomy << " MB, eight: " << eight_roomy << " MB";
   // And the results are those of a run with room to keep everything, on two workers.
   const auto tight = pd::test::pdcheck(large + "scene.json" + args);
   const auto roomy = pd::test::pdcheck(large + "scene.json --no-cache --jobs 2 --memory 4G");

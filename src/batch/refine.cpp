@@ -458,7 +458,7 @@ class Refinement {
         return nullptr;
       }
     };
-    Progress progress(count, options_.quiet, "pairs on their surfaces");
+    Progress progress(count, options_.quiet, "mesh tests");
     std::vector<std::pair<int, int>> parts_in_order;
     for (size_t n : order) parts_in_order.push_back(pairs_[candidates_[n]]);
     PairQueue queue(std::move(parts_in_order), kPairLookahead);
