@@ -447,9 +447,13 @@ class Refinement {
     for (size_t k : candidates_) ++left[size_t(pairs_[k].first)], ++left[size_t(pairs_[k].second)];
     std::mutex left_mutex;
     const auto done = [&](int a, int b) {
-      std::lock_guard<std::mutex> lock(left_mutex);
-      for (int p : {a, b})
-        if (--left[size_t(p)] == 0) solids_.let_go(p);
+      std::vector<int> last;
+      {
+        std::lock_guard<std::mutex> lock(left_mutex);
+        for (int p : {a, b})
+          if (--left[size_t(p)] == 0) last.push_back(p);
+      }
+      for (int p : last) solids_.let_go(p);
     };
     const auto solid_of = [&](int p) -> std::shared_ptr<const SolidDistance> {
       try {  // once per part while it stays in the cache, shared by its pairs and threads
@@ -484,7 +488,13 @@ class Refinement {
         throw;
       }
       queue.fetched(k);
-      if (refine[n] && !hit[n]) test(n, sa.get(), sb.get(), pieces[n]);
+      try {
+        if (refine[n] && !hit[n]) test(n, sa.get(), sb.get(), pieces[n]);
+      } catch (...) {
+        sa.reset(), sb.reset();
+        done(a, b);
+        throw;
+      }
       sa.reset(), sb.reset();
       done(a, b);
       solids_.give_back_dropped();
