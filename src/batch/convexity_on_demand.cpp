@@ -107,7 +107,7 @@ bool ConvexityOnDemand::measured_convex(int p) {
 }
 
 PairConvexity ConvexityOnDemand::settle(size_t k) {
-  const auto [a, b] = pairs_[k];
+  const int a = pairs_[k].first, b = pairs_[k].second;
   const Part &pa = parts_[size_t(a)], &pb = parts_[size_t(b)];
   PairConvexity known{pa.convex, pb.convex};
   if (!open_[k]) return known;
