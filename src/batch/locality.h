@@ -1,6 +1,6 @@
 // Where each part sits, as one number: the refinement runs a part's pairs
-// close together, and the convexity measures before it leave in the
-// distances cache the parts it asks for first.
+// close together (batch/refine.cpp's order), so that its distances, built
+// once, serve them all and go after the last.
 #pragma once
 
 #include <cstdint>

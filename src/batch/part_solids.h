@@ -1,8 +1,8 @@
 // Each part's distances (SolidDistance), built once from its surface and kept
-// while the run's memory budget lasts: the convexity measures and the
-// refinement that follows them ask for the same parts (a bearing ring is
-// measured nonconvex, then refined against its balls), and a part's
-// distances cost more to build than most of its pairs' searches.
+// until its last pair is done, while the run's memory budget lasts: a part's
+// convexity measure and its pairs' refinement ask for the same distances (a
+// bearing ring is measured nonconvex, then refined against its balls), and
+// they cost more to build than most of its pairs' searches.
 #pragma once
 
 #include <atomic>

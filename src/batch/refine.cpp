@@ -432,6 +432,7 @@ class Refinement {
   // from its surface in the mesh store, and let go after the part's last pair.
   void settle_and_test() {
     const size_t count = candidates_.size();
+    if (count == 0) return;
     std::vector<char> refine(count, 0);
     std::vector<std::optional<StoredRefinement>> hit(count);
     std::vector<std::string> keys(count);
